@@ -1,0 +1,2 @@
+// Placeholder entry replaced below.
+int main() { return 0; }

@@ -1,0 +1,33 @@
+#pragma once
+// Errors a user can cause (bad input, bad options, unusable device). The CLI prints what() and
+// exits with the code; nothing else of a run is written once one is thrown.
+#include <stdexcept>
+#include <string>
+
+namespace vsgl {
+
+enum class ExitCode : int {
+  kOk = 0,
+  kFailure = 1,         // a check failed (verify), or validation reported errors
+  kUsage = 2,           // bad command line
+  kBadInput = 3,        // missing / corrupt / inconsistent capture or parameter
+  kDevice = 4,          // no usable device, no timestamps, device lost, out of memory
+  kValidation = 5,      // the Khronos validation layer reported errors
+};
+
+class InputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class DeviceError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+}  // namespace vsgl

@@ -1,0 +1,104 @@
+// The timestamp facility of SPEC §9 on a real queue, and its arithmetic without one.
+#include <gtest/gtest.h>
+
+#include "gpu_test.hpp"
+#include "harness/buffer.hpp"
+#include "harness/command_stream.hpp"
+#include "harness/compute_pipeline.hpp"
+#include "harness/error.hpp"
+#include "harness/timestamp_pool.hpp"
+#include "harness/unique_handle.hpp"
+#include "harness/vk_check.hpp"
+
+namespace vsgl {
+namespace {
+
+using test::GpuTest;
+
+struct WorkloadPush {
+  uint32_t count;
+  uint32_t iterations;
+};
+
+TEST(TimestampArithmetic, WrapMaskAndPeriod) {
+  EXPECT_EQ(TimestampPool::mask_for_bits(64), ~uint64_t{0});
+  EXPECT_EQ(TimestampPool::mask_for_bits(36), (uint64_t{1} << 36) - 1);
+  // 100 ticks at 1.5 ns.
+  EXPECT_DOUBLE_EQ(TimestampPool::interval_ns(1000, 1100, TimestampPool::mask_for_bits(64), 1.5), 150.0);
+  // A counter of 36 valid bits that wrapped between the two writes.
+  const uint64_t mask = TimestampPool::mask_for_bits(36);
+  EXPECT_DOUBLE_EQ(TimestampPool::interval_ns(mask - 9, 10, mask, 1.0), 20.0);
+}
+
+TEST(TimestampArithmetic, ZeroAndNegativeIntervalsAreErrors) {
+  const uint64_t mask = TimestampPool::mask_for_bits(64);
+  EXPECT_THROW(TimestampPool::interval_ns(500, 500, mask, 1.0), DeviceError);
+  EXPECT_THROW(TimestampPool::interval_ns(500, 400, mask, 1.0), DeviceError);
+}
+
+class TimestampPoolTest : public GpuTest {};
+
+TEST_F(TimestampPoolTest, DispatchIntervalIsPositiveAndGrowsWithWork) {
+  Device& dev = device();
+  ASSERT_TRUE(dev.info().timestamps());
+  const uint32_t count = 1u << 16;
+  Buffer out(dev, count * sizeof(uint32_t), MemoryUsage::kDeviceLocal, "test.workload.out");
+  ComputePipeline pipeline(dev, {"test_workload.comp", 1, sizeof(WorkloadPush), {{0, 64}}});
+  BindingSet set(dev, pipeline, {out}, "test.workload.set");
+  TimestampPool pool(dev, 3, "test.timestamps");
+
+  dev.submit_and_wait([&](VkCommandBuffer cmd) {
+    CommandStream stream(cmd);
+    pool.reset(cmd);
+    pool.write(cmd);
+    stream.dispatch(pipeline, set, WorkloadPush{count, 16}, div_up(count, 64));
+    pool.write(cmd);
+    stream.dispatch(pipeline, set, WorkloadPush{count, 4096}, div_up(count, 64));
+    pool.write(cmd);
+    EXPECT_EQ(stream.dispatch_count(), 2u);
+  });
+  const auto ticks = pool.read_ticks();
+  ASSERT_EQ(ticks.size(), 3u);
+  const double light = pool.interval_ns(ticks[0], ticks[1]);
+  const double heavy = pool.interval_ns(ticks[1], ticks[2]);
+  EXPECT_GT(light, 0.0);
+  EXPECT_GT(heavy, light) << "256x the work should take longer";
+  // The work really ran: check one value against the same hash on the host.
+  const auto values = download_vector<uint32_t>(dev, out, count);
+  uint32_t h = 7u * 2654435761u + 1u;
+  for (uint32_t k = 0; k < 4096; ++k) h = (h ^ (h >> 15)) * 2246822519u + k;
+  EXPECT_EQ(values[7], h);
+}
+
+TEST_F(TimestampPoolTest, PipelineStatisticsCountTheDispatchedInvocations) {
+  Device& dev = device();
+  if (!dev.pipeline_statistics_enabled()) GTEST_SKIP() << "device has no pipeline statistics queries";
+  const uint32_t count = 1000;  // not a multiple of the group size: the tail group still runs
+  const uint32_t local = 64;
+  Buffer out(dev, count * sizeof(uint32_t), MemoryUsage::kDeviceLocal, "test.stats.out");
+  ComputePipeline pipeline(dev, {"test_workload.comp", 1, sizeof(WorkloadPush), {{0, local}}});
+  BindingSet set(dev, pipeline, {out}, "test.stats.set");
+
+  VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+  info.queryType = VK_QUERY_TYPE_PIPELINE_STATISTICS;
+  info.queryCount = 1;
+  info.pipelineStatistics = VK_QUERY_PIPELINE_STATISTIC_COMPUTE_SHADER_INVOCATIONS_BIT;
+  VkQueryPool raw = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateQueryPool(dev.get(), &info, nullptr, &raw));
+  UniqueHandle<VkQueryPool> stats(dev.get(), raw, vkDestroyQueryPool);
+
+  dev.submit_and_wait([&](VkCommandBuffer cmd) {
+    CommandStream stream(cmd);
+    vkCmdResetQueryPool(cmd, stats.get(), 0, 1);
+    vkCmdBeginQuery(cmd, stats.get(), 0, 0);
+    stream.dispatch(pipeline, set, WorkloadPush{count, 1}, div_up(count, local));
+    vkCmdEndQuery(cmd, stats.get(), 0);
+  });
+  uint64_t invocations = 0;
+  VK_CHECK(vkGetQueryPoolResults(dev.get(), stats.get(), 0, 1, sizeof invocations, &invocations, sizeof invocations,
+                                 VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+  EXPECT_EQ(invocations, uint64_t{div_up(count, local)} * local);
+}
+
+}  // namespace
+}  // namespace vsgl
