@@ -1,0 +1,40 @@
+// `vsgl-bench devices [--json]`: every Vulkan device, its driver, API version and timestamp
+// support, and which one a run would use by default.
+#include <cstdio>
+#include <nlohmann/json.hpp>
+
+#include "bench/cli/commands.hpp"
+#include "harness/device_info.hpp"
+#include "harness/error.hpp"
+#include "harness/instance.hpp"
+
+namespace vsgl::cli {
+
+int run_devices(Args& args) {
+  const bool json = args.flag("--json");
+  args.finish();
+  Instance instance;
+  const auto devices = enumerate_devices(instance.get());
+  int default_index = -1;
+  try {
+    default_index = static_cast<int>(select_device(devices, "").index);
+  } catch (const DeviceError&) {
+    default_index = -1;
+  }
+  if (json) {
+    nlohmann::json out{{"default", default_index}, {"devices", nlohmann::json::array()}};
+    for (const auto& d : devices) out["devices"].push_back(to_json(d));
+    std::printf("%s\n", out.dump(2).c_str());
+  } else {
+    std::printf("%zu Vulkan device(s):\n%s", devices.size(), describe_devices_text(devices).c_str());
+    if (default_index >= 0)
+      std::printf("default device: [%d] (discrete GPU first, then integrated, virtual, CPU); choose another "
+                  "with --device INDEX or --device NAME-SUBSTRING\n",
+                  default_index);
+    else
+      std::printf("no usable device\n");
+  }
+  return default_index >= 0 ? 0 : static_cast<int>(ExitCode::kDevice);
+}
+
+}  // namespace vsgl::cli

@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# Installs the Debian packages vsgl-bench needs, only those that are missing. Idempotent.
+# Usage: bash ci/install-deps.sh        (as root, or as a user with sudo)
+set -euo pipefail
+
+packages=(
+  cmake ninja-build g++ pkg-config        # build
+  libvulkan-dev glslang-tools             # Vulkan loader + headers, GLSL -> SPIR-V compiler
+  mesa-vulkan-drivers                     # lavapipe: the CPU Vulkan device (works without a GPU)
+  vulkan-validationlayers                 # Khronos validation layer (tests, --validate)
+  libbenchmark-dev libgtest-dev           # Google Benchmark, GoogleTest
+  nlohmann-json3-dev libglm-dev           # JSON, vector maths
+  libopenexr-dev                          # EXR captures
+  libstb-dev                              # PNG output of the shading pass
+)
+
+if ! command -v dpkg-query >/dev/null 2>&1 || ! command -v apt-get >/dev/null 2>&1; then
+  echo "ci/install-deps.sh: this is not a Debian-family system (no dpkg/apt-get)." >&2
+  echo "Install the equivalents of: ${packages[*]}" >&2
+  exit 1
+fi
+
+missing=()
+for p in "${packages[@]}"; do
+  status=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)
+  [[ "$status" == "install ok installed" ]] || missing+=("$p")
+done
+if [[ ${#missing[@]} -eq 0 ]]; then
+  echo "ci/install-deps.sh: all ${#packages[@]} packages are installed."
+  exit 0
+fi
+
+echo "ci/install-deps.sh: installing ${missing[*]}"
+if [[ $(id -u) -eq 0 ]]; then
+  sudo=()
+elif command -v sudo >/dev/null 2>&1 && sudo -n true 2>/dev/null; then
+  sudo=(sudo -n)
+else
+  echo "ci/install-deps.sh: need root to install packages, and sudo is not available without a password." >&2
+  echo "Run as root:  apt-get update && apt-get install -y ${missing[*]}" >&2
+  exit 1
+fi
+export DEBIAN_FRONTEND=noninteractive
+"${sudo[@]}" apt-get update -qq
+"${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"

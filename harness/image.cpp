@@ -1,0 +1,54 @@
+#include "harness/image.hpp"
+
+#include "harness/device.hpp"
+#include "harness/error.hpp"
+#include "harness/vk_check.hpp"
+
+namespace vsgl {
+
+Image2D::Image2D(Device& device, uint32_t width, uint32_t height, VkFormat format, VkImageUsageFlags usage,
+                 VkImageAspectFlags aspect, const std::string& name)
+    : format_(format), width_(width), height_(height) {
+  VkDevice dev = device.get();
+  VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+  info.imageType = VK_IMAGE_TYPE_2D;
+  info.format = format;
+  info.extent = {width, height, 1};
+  info.mipLevels = 1;
+  info.arrayLayers = 1;
+  info.samples = VK_SAMPLE_COUNT_1_BIT;
+  info.tiling = VK_IMAGE_TILING_OPTIMAL;
+  info.usage = usage;
+  info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+  info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+  VkImage image = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateImage(dev, &info, nullptr, &image));
+  image_ = UniqueHandle<VkImage>(dev, image, vkDestroyImage);
+  device.set_name(image, VK_OBJECT_TYPE_IMAGE, name);
+
+  VkMemoryRequirements req{};
+  vkGetImageMemoryRequirements(dev, image, &req);
+  VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+  alloc.allocationSize = req.size;
+  alloc.memoryTypeIndex = device.memory_type(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+  VkDeviceMemory memory = VK_NULL_HANDLE;
+  const VkResult r = vkAllocateMemory(dev, &alloc, nullptr, &memory);
+  if (r == VK_ERROR_OUT_OF_DEVICE_MEMORY || r == VK_ERROR_OUT_OF_HOST_MEMORY)
+    throw DeviceError("out of device memory allocating image '" + name + "' (" + std::to_string(width) + "x" +
+                      std::to_string(height) + ")");
+  VK_CHECK(r);
+  memory_ = UniqueHandle<VkDeviceMemory>(dev, memory, vkFreeMemory);
+  VK_CHECK(vkBindImageMemory(dev, image, memory, 0));
+
+  VkImageViewCreateInfo view_info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+  view_info.image = image;
+  view_info.viewType = VK_IMAGE_VIEW_TYPE_2D;
+  view_info.format = format;
+  view_info.subresourceRange = {aspect, 0, 1, 0, 1};
+  VkImageView view = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateImageView(dev, &view_info, nullptr, &view));
+  view_ = UniqueHandle<VkImageView>(dev, view, vkDestroyImageView);
+  device.set_name(view, VK_OBJECT_TYPE_IMAGE_VIEW, name + ".view");
+}
+
+}  // namespace vsgl

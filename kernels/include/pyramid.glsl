@@ -1,0 +1,64 @@
+#ifndef PYRAMID_GLSL
+#define PYRAMID_GLSL
+// Addressing of a mip pyramid over the virtual square (SPEC §4; C++ twin harness/virtual_square.hpp).
+// The includer declares the buffer `pyramid_texels` (vec4) holding PYRAMID_LAYERS layers of
+// `pyramid_total` texels each: layer 0 = (Phi.rgb, w), 1 = (w P, w |P|^2), 2 = (w rbar, q).
+// Call pyramid_init() first in main().
+
+uint pyramid_width;    // W
+uint pyramid_height;   // H
+uint pyramid_size;     // S = next pow2 >= max(W, H)
+uint pyramid_levels;   // L = log2 S
+uint pyramid_total;    // texels of all levels of one layer
+uint pyramid_offset[16];
+
+uint pyramid_level_width(uint l) { return ((pyramid_width - 1u) >> l) + 1u; }
+uint pyramid_level_height(uint l) { return ((pyramid_height - 1u) >> l) + 1u; }
+
+void pyramid_init(uint width, uint height) {
+  pyramid_width = width;
+  pyramid_height = height;
+  uint side = max(width, height);
+  pyramid_size = 1u;
+  pyramid_levels = 0u;
+  while (pyramid_size < side) {
+    pyramid_size <<= 1u;
+    ++pyramid_levels;
+  }
+  uint offset = 0u;
+  for (uint l = 0u; l <= pyramid_levels; ++l) {
+    pyramid_offset[l] = offset;
+    offset += pyramid_level_width(l) * pyramid_level_height(l);
+  }
+  pyramid_total = offset;
+}
+
+// Texel (x, y) of a level; zero outside its in-bounds extent (the rest of the virtual square).
+vec4 pyramid_texel(uint layer, uint level, ivec2 p) {
+  if (p.x < 0 || p.y < 0 || uint(p.x) >= pyramid_level_width(level) || uint(p.y) >= pyramid_level_height(level))
+    return vec4(0.0);
+  return pyramid_texels[layer * pyramid_total + pyramid_offset[level] +
+                        uint(p.y) * pyramid_level_width(level) + uint(p.x)];
+}
+
+// Bilinear within level k at x in [0,1]^2 of the square; taps outside read zero.
+vec4 pyramid_bilinear(uint layer, vec2 x, uint k) {
+  vec2 u = x * float(pyramid_size >> k) - 0.5;
+  vec2 base = floor(u);
+  vec2 f = u - base;
+  ivec2 i0 = ivec2(base);
+  return pyramid_texel(layer, k, i0) * ((1.0 - f.x) * (1.0 - f.y)) +
+         pyramid_texel(layer, k, i0 + ivec2(1, 0)) * (f.x * (1.0 - f.y)) +
+         pyramid_texel(layer, k, i0 + ivec2(0, 1)) * ((1.0 - f.x) * f.y) +
+         pyramid_texel(layer, k, i0 + ivec2(1, 1)) * (f.x * f.y);
+}
+
+// Trilinear at a fractional level (SPEC §4): numerator and denominator of Eq. 5 both go through it.
+vec4 pyramid_trilinear(uint layer, vec2 x, float level) {
+  float l0 = floor(level);
+  uint k0 = uint(l0);
+  uint k1 = min(k0 + 1u, pyramid_levels);
+  return mix(pyramid_bilinear(layer, x, k0), pyramid_bilinear(layer, x, k1), level - l0);
+}
+
+#endif

@@ -1,0 +1,137 @@
+// The FIS generators on the GPU against their CPU reference (SPEC §11): the pyramid built on the
+// device equals the CPU mip chain of the same level 0 bit for bit, the sampler picks the same
+// texels, and every VSGL (level, density, power, moments) agrees to float rounding.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "gpu_test.hpp"
+#include "harness/capture_recorder.hpp"
+#include "harness/command_stream.hpp"
+#include "harness/device_view.hpp"
+#include "harness/error.hpp"
+#include "harness/fis_generator.hpp"
+#include "harness/fis_reference.hpp"
+#include "harness/scene.hpp"
+
+namespace vsgl {
+namespace {
+
+class FisGeneratorTest : public test::GpuTest {
+ protected:
+  // The tiny scene; the light view gets a stand-in PDF (its flux) until the BRSM PDF exists.
+  Capture tiny_capture() {
+    CaptureRecorder recorder(device());
+    Capture c = recorder.record(make_scene("tiny"), RecordSizes{96, 64, 64}, 0, 1);
+    ViewImage& rsm = c.rsm;
+    for (std::size_t i = 0; i < rsm.texels(); ++i)
+      rsm.planes[kPdf][i] = rsm.planes[kDR][i] + rsm.planes[kDG][i] + rsm.planes[kDB][i];
+    rsm.has_pdf = true;
+    return c;
+  }
+
+  void run(FisGenerator& gen) {
+    device().submit_and_wait([&](VkCommandBuffer cmd) {
+      CommandStream stream(cmd);
+      gen.record(stream, [&](VkCommandBuffer) { stream.full_barrier(); });
+    });
+  }
+
+  std::array<MipPyramid, 3> download_pyramids(const FisGenerator& gen, const VirtualSquare& sq) {
+    const auto all = download_vector<glm::vec4>(device(), gen.pyramid(), 3 * sq.total_texels());
+    std::array<MipPyramid, 3> out;
+    for (uint32_t layer = 0; layer < 3; ++layer) {
+      out[layer].square = sq;
+      out[layer].texels.assign(all.begin() + layer * sq.total_texels(), all.begin() + (layer + 1) * sq.total_texels());
+    }
+    return out;
+  }
+
+  static std::vector<glm::vec4> level0(const MipPyramid& p) {
+    return {p.texels.begin(), p.texels.begin() + p.square.level_texels(0)};
+  }
+
+  void check_view(const Capture& capture, ViewKind kind, FisVariant variant, uint32_t N) {
+    SCOPED_TRACE(std::string(view_name(kind)) + " " + fis_variant_name(variant));
+    const DeviceView view = upload_view(device(), capture, kind);
+    FisParams params;
+    params.vsgl_count = N;
+    FisGenerator gen(device(), view, variant, params);
+    run(gen);
+    const VirtualSquare& sq = view.square;
+    const auto gpu = download_pyramids(gen, sq);
+
+    // "additional": level 0 against the CPU moments (transcendental maths: float tolerance).
+    const auto cpu_moments = reference_moments(capture.view(kind), view.source_position);
+    for (uint32_t layer = 0; layer < 3; ++layer)
+      for (uint32_t i = 0; i < sq.level_texels(0); ++i)
+        for (int c = 0; c < 4; ++c) {
+          const float a = gpu[layer].texels[i][c], b = cpu_moments[layer][i][c];
+          ASSERT_NEAR(a, b, 1e-5f * std::max(1.0f, std::abs(b))) << "layer " << layer << " texel " << i;
+        }
+    // "mipmapping": bit-exact against the CPU chain of the same level 0.
+    std::array<MipPyramid, 3> cpu;
+    for (uint32_t layer = 0; layer < 3; ++layer) {
+      cpu[layer] = MipPyramid::build(level0(gpu[layer]), sq.width, sq.height);
+      ASSERT_EQ(cpu[layer].texels.size(), gpu[layer].texels.size());
+      for (std::size_t i = 0; i < cpu[layer].texels.size(); ++i)
+        ASSERT_EQ(cpu[layer].texels[i], gpu[layer].texels[i]) << "layer " << layer << " element " << i;
+    }
+    // "filtered_sampling": same kernel centres, levels, densities and VSGLs.
+    const auto expected = reference_fis(cpu, variant, params);
+    const auto got = download_vector<VsglRecord>(device(), gen.vsgls(), N);
+    const auto samples = reference_samples(cpu[2], N, 0);
+    for (uint32_t i = 0; i < N; ++i) {
+      SCOPED_TRACE("VSGL " + std::to_string(i));
+      const glm::vec2 x(got[i].center_pdf);
+      ASSERT_EQ(glm::uvec2(x * static_cast<float>(sq.size)), samples[i].texel);
+      ASSERT_NEAR(x.x, samples[i].x.x, 1e-7f);
+      ASSERT_NEAR(x.y, samples[i].x.y, 1e-7f);
+      EXPECT_NEAR(got[i].axis_level.w, expected[i].axis_level.w, 1e-3f) << "level";
+      EXPECT_NEAR(got[i].center_pdf.z, expected[i].center_pdf.z, 1e-4f * expected[i].center_pdf.z) << "density";
+      for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(got[i].power_sharpness[c], expected[i].power_sharpness[c],
+                    2e-3f * std::abs(expected[i].power_sharpness[c]) + 1e-9f)
+            << "power channel " << c;
+      for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(got[i].position_variance[c], expected[i].position_variance[c], 1e-3f) << "mu";
+    }
+  }
+};
+
+TEST_F(FisGeneratorTest, MatchesTheCpuReferenceOnBothViews) {
+  const Capture capture = tiny_capture();
+  for (FisVariant variant : {FisVariant::kTok15, FisVariant::kModified}) {
+    check_view(capture, ViewKind::kCamera, variant, 256);
+    check_view(capture, ViewKind::kLight, variant, 128);
+  }
+}
+
+TEST_F(FisGeneratorTest, RejectsBadParameters) {
+  const Capture capture = tiny_capture();
+  const DeviceView view = upload_view(device(), capture, ViewKind::kCamera);
+  FisParams p;
+  p.vsgl_count = 0;
+  EXPECT_THROW(FisGenerator(device(), view, FisVariant::kModified, p), InputError);
+  p.vsgl_count = view.samplable_texels + 1;
+  EXPECT_THROW(FisGenerator(device(), view, FisVariant::kModified, p), InputError);
+  p.vsgl_count = 16;
+  p.K = 0.0f;
+  EXPECT_THROW(FisGenerator(device(), view, FisVariant::kTok15, p), InputError);
+  p.K = -1.0f;
+  EXPECT_THROW(FisGenerator(device(), view, FisVariant::kTok15, p), InputError);
+}
+
+TEST_F(FisGeneratorTest, AllZeroPdfIsAClearError) {
+  Capture capture = tiny_capture();
+  std::fill(capture.gbuffer.planes[kPdf].begin(), capture.gbuffer.planes[kPdf].end(), 0.0f);
+  try {
+    upload_view(device(), capture, ViewKind::kCamera);
+    FAIL() << "an all-zero PDF was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("all-zero PDF"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace vsgl
