@@ -23,7 +23,8 @@ class TimestampPool {
 
   // Resets all queries (record before the first write(), outside any render pass).
   void reset(VkCommandBuffer cmd);
-  // Full barrier, then a timestamp once all earlier work has completed. Returns the query index.
+  // Full barrier, timestamp, full barrier: the clock is read after all earlier work and before any
+  // later work (on every driver, including lazy ones). Returns the query index.
   uint32_t write(VkCommandBuffer cmd);
   uint32_t written() const { return written_; }
 
