@@ -19,7 +19,7 @@ usage: vsgl-bench <command> [options]
 commands:
   devices [--json]            list Vulkan devices: type, driver, API version, timestamp support,
                               and the default (first discrete GPU, else integrated, virtual, CPU)
-  record  [options]           rasterize a procedural scene into a capture (EXR + JSON sidecar)
+  record  [options]           rasterize a procedural scene into a capture (EXR + JSON sidecar), with its BRSM PDF
       --scene NAME[,NAME]     atrium (Table 1), conference (Table 2), tiny (tests)   [atrium]
       --out DIR               capture directory                              [captures/NAME]
       --gbuffer WxH           G-buffer size                                   [1920x1088]

@@ -6,6 +6,7 @@
 
 #include "bench/cli/commands.hpp"
 #include "bench/cli/gpu_session.hpp"
+#include "harness/brsm_pdf.hpp"
 #include "harness/capture_recorder.hpp"
 #include "harness/error.hpp"
 #include "harness/scene.hpp"
@@ -54,14 +55,16 @@ int run_record(Args& args) {
       const auto t0 = std::chrono::steady_clock::now();
       const Scene scene = make_scene(name, f, frames);
       Capture capture = recorder.record(scene, sizes, f, frames);
+      const BrsmBuild brsm = build_brsm_pdf(session.device(), capture);  // SPEC §8: once per capture
       const auto t1 = std::chrono::steady_clock::now();
       write_capture(capture, dir);
       const auto t2 = std::chrono::steady_clock::now();
       const auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
-      std::printf("recorded %s frame %u/%u -> %s  (G-buffer %ux%u, RSM %u^2; render %.0f ms, write %.0f ms, "
-                  "%.1f MiB on disk)\n",
+      std::printf("recorded %s frame %u/%u -> %s  (G-buffer %ux%u, RSM %u^2; render + BRSM PDF %.0f ms, of which "
+                  "BRSM PDF %.1f ms GPU from %u camera VSGLs; write %.0f ms; %.1f MiB on disk)\n",
                   name.c_str(), f + 1, frames, dir.string().c_str(), sizes.gbuffer_width, sizes.gbuffer_height,
-                  sizes.rsm_size, ms(t0, t1), ms(t1, t2), static_cast<double>(directory_bytes(dir)) / (1 << 20));
+                  sizes.rsm_size, ms(t0, t1), brsm.gpu_ms, brsm.camera_vsgls, ms(t1, t2),
+                  static_cast<double>(directory_bytes(dir)) / (1 << 20));
     }
   }
   return session.finish(0);

@@ -1,0 +1,47 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// The BRSM PDF (SPEC §8): for every RSM texel, its power times the importance it receives from
+// the camera-view VSGLs (made by fis_modified on the G-buffer). One thread per texel; the camera
+// VSGLs stream through shared memory in tiles so each is read once per workgroup.
+#include "vsgl_math.glsl"
+#include "brsm_importance.glsl"
+
+layout(local_size_x = 16, local_size_y = 16) in;
+const uint TILE = 256u;  // = threads per group: each thread loads one VSGL of a tile
+
+layout(std430, binding = 0) readonly buffer View { vec4 view_texels[]; };  // the RSM, DeviceView layout
+layout(std430, binding = 1) readonly buffer CameraVsgls { Vsgl camera_vsgls[]; };
+layout(std430, binding = 2) writeonly buffer Pdf { float pdf[]; };
+layout(push_constant) uniform Push {
+  uint width;
+  uint height;
+  uint camera_count;
+  uint pad;
+  vec4 light_position;
+} pc;
+
+shared Vsgl tile[TILE];
+
+void main() {
+  uvec2 p = gl_GlobalInvocationID.xy;
+  bool inside = p.x < pc.width && p.y < pc.height;
+  uint n = pc.width * pc.height;
+  uint i = inside ? p.y * pc.width + p.x : 0u;
+  vec4 t0 = view_texels[i];
+  vec4 t1 = view_texels[n + i];
+  vec4 t2 = view_texels[2u * n + i];
+  vec4 t3 = view_texels[3u * n + i];
+  VplLobe lobe = vpl_lobe(t0.xyz, t1.xyz, t2.rgb, t3.rgb, t2.w, pc.light_position.xyz);
+  bool lit = inside && t0.w > 0.5 && lobe.power > 0.0;
+  float importance = 0.0;
+  for (uint base = 0u; base < pc.camera_count; base += TILE) {
+    uint c = base + gl_LocalInvocationIndex;
+    if (c < pc.camera_count) tile[gl_LocalInvocationIndex] = camera_vsgls[c];
+    barrier();
+    uint count = min(TILE, pc.camera_count - base);
+    if (lit)
+      for (uint k = 0u; k < count; ++k) importance += camera_importance(tile[k], t0.xyz, t1.xyz, lobe);
+    barrier();
+  }
+  if (inside) pdf[i] = lit ? lobe.power * importance : 0.0;
+}
