@@ -26,6 +26,19 @@ commands:
       --rsm N                 RSM size N x N                                  [512]
       --frames F              animated sequence of F frames (DIR/frame_0000 ...)  [1]
 
+  verify  --capture DIR        check every FIS pass against its CPU reference on this device
+                              (SPEC §11): one line per check, measured error <= tolerance
+      --json FILE             also write the checks as JSON
+      --camera-vsgls N, --light-vsgls N, --K K    [2048, 1024, 1]
+
+  shade   --capture DIR       render the camera view lit by the light-view VSGLs of each generator,
+                              without visibility (indirect light only), as OUT/shade_<scene>_<gen>.png
+      --generators G[,G]      fis_tok15, fis_modified                 [fis_tok15,fis_modified]
+      --vsgls N               light-view VSGLs per generator          [1024]
+      --stride K              shade every K-th G-buffer pixel (K > 1: a quick preview)  [1]
+      --exposure E            linear scale before the sRGB curve   [auto: 99th pct. -> 0.8]
+      --out DIR               output directory                        [.]
+
 options of every GPU command:
   --device D                  device index or case-insensitive name substring (see `devices`)
   --validate                  enable the Khronos validation layer with synchronization
@@ -54,6 +67,8 @@ int dispatch(int argc, char** argv) {
   }
   if (command == "devices") return vsgl::cli::run_devices(args);
   if (command == "record") return vsgl::cli::run_record(args);
+  if (command == "verify") return vsgl::cli::run_verify(args);
+  if (command == "shade") return vsgl::cli::run_shade(args);
   throw vsgl::UsageError("unknown command '" + command + "'");
 }
 

@@ -1,0 +1,24 @@
+#pragma once
+// One correctness check of `vsgl-bench verify`: what was measured against what is allowed.
+#include <string>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+namespace vsgl {
+
+struct CheckResult {
+  std::string view;       // "camera_view" | "light_view" | "" (device-wide)
+  std::string generator;  // "fis_tok15" | ...
+  std::string check;      // e.g. "pyramid", "eq3_residual"
+  double measured = 0;    // the error (or ratio deviation, or violation count)
+  double tolerance = 0;   // passes when measured <= tolerance
+  std::string detail;     // what `measured` is, in words, with context numbers
+  bool passed() const { return measured <= tolerance; }
+};
+
+std::string format_check(const CheckResult& r);  // one aligned line: PASS/FAIL, names, numbers
+nlohmann::json to_json(const CheckResult& r);
+bool all_passed(const std::vector<CheckResult>& results);
+
+}  // namespace vsgl
