@@ -1,0 +1,56 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// The shading pass (SPEC §8 (a)): the camera view lit by N VSGLs, without visibility. One thread
+// per output pixel; output pixel (i, j) shades G-buffer texel (i * stride, j * stride), so a stride
+// k > 1 gives a ceil(W / k) x ceil(H / k) preview. Radiance toward the camera is the sum over the
+// VSGLs of vsgl_radiance_surface() in index order (the CPU twin, harness/shading_pass.cpp, sums in
+// the same order). The VSGLs stream through shared memory in tiles, one VSGL per thread per tile.
+// Output: linear radiance (rgb, 1) per valid pixel, (0, 0, 0, 0) where the G-buffer has no surface.
+#include "vsgl_math.glsl"
+#include "sg_eval.glsl"
+
+layout(local_size_x = 16, local_size_y = 16) in;
+const uint TILE = 256u;  // = threads per group
+
+layout(std430, binding = 0) readonly buffer View { vec4 view_texels[]; };  // the G-buffer, DeviceView layout
+layout(std430, binding = 1) readonly buffer Lights { Vsgl vsgls[]; };
+layout(std430, binding = 2) writeonly buffer Radiance { vec4 radiance[]; };
+layout(push_constant) uniform Push {
+  uint width;       // G-buffer W x H
+  uint height;
+  uint out_width;   // ceil(W / stride) x ceil(H / stride)
+  uint out_height;
+  uint stride;
+  uint vsgl_count;
+  uint pad0;
+  uint pad1;
+  vec4 camera_position;
+} pc;
+
+shared Vsgl tile[TILE];
+
+void main() {
+  uvec2 o = gl_GlobalInvocationID.xy;
+  bool inside = o.x < pc.out_width && o.y < pc.out_height;
+  uint n = pc.width * pc.height;
+  uint i = inside ? (o.y * pc.stride) * pc.width + o.x * pc.stride : 0u;
+  vec4 t0 = view_texels[i];           // P, valid
+  vec4 t1 = view_texels[n + i];       // N, pdf
+  vec4 t2 = view_texels[2u * n + i];  // diffuse albedo, roughness
+  vec4 t3 = view_texels[3u * n + i];  // specular albedo, 0
+  bool valid = inside && t0.w > 0.5;
+  vec3 wo = normalize(pc.camera_position.xyz - t0.xyz);
+  vec3 sum = vec3(0.0);
+  // Every thread of the group takes part in the loads and barriers, inside the image or not.
+  for (uint base = 0u; base < pc.vsgl_count; base += TILE) {
+    uint c = base + gl_LocalInvocationIndex;
+    if (c < pc.vsgl_count) tile[gl_LocalInvocationIndex] = vsgls[c];
+    barrier();
+    uint count = min(TILE, pc.vsgl_count - base);
+    if (valid)
+      for (uint k = 0u; k < count; ++k)
+        sum += vsgl_radiance_surface(tile[k], t0.xyz, t1.xyz, wo, t2.rgb, t3.rgb, t2.w);
+    barrier();
+  }
+  if (inside) radiance[o.y * pc.out_width + o.x] = valid ? vec4(sum, 1.0) : vec4(0.0);
+}
