@@ -7,7 +7,7 @@
 
 #include "harness/buffer.hpp"
 #include "harness/compute_pipeline.hpp"
-#include "harness/fis_reference.hpp"
+#include "harness/fis_params.hpp"
 #include "harness/vsgl_generator.hpp"
 
 namespace vsgl {

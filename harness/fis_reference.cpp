@@ -183,9 +183,6 @@ glm::vec4 fetch(const MipPyramid& layer, glm::vec2 x, float level) {
 
 // ---- level choice and power (SPEC §6.1) ----------------------------------------------------
 
-const char* fis_variant_name(FisVariant variant) {
-  return variant == FisVariant::kTok15 ? "fis_tok15" : "fis_modified";
-}
 
 float tok15_level(float pdf, uint32_t N, float K, const VirtualSquare& square) {
   const auto M = static_cast<float>(square.square_texels());

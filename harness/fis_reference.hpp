@@ -14,6 +14,7 @@
 #include <glm/glm.hpp>
 
 #include "harness/capture.hpp"
+#include "harness/fis_params.hpp"
 #include "harness/virtual_square.hpp"
 #include "harness/vsgl_math.hpp"
 
@@ -65,15 +66,6 @@ std::vector<SamplePoint> reference_samples(const MipPyramid& pdf_pyramid, uint32
 glm::vec4 bilinear(const MipPyramid& layer, glm::vec2 x, uint32_t level);
 glm::vec4 fetch(const MipPyramid& layer, glm::vec2 x, float level);
 
-enum class FisVariant { kTok15, kModified };
-const char* fis_variant_name(FisVariant variant);  // "fis_tok15" | "fis_modified"
-
-struct FisParams {
-  uint32_t vsgl_count = 0;  // N
-  float K = 1.0f;           // kernel size parameter (the paper's setting is 1)
-  uint32_t bisection_iterations = 12;
-  uint32_t offset_bits = 0;  // Fibonacci offset o (SPEC §5), as 32-bit fixed point
-};
 
 // Eq. 1 of the 2016 paper: l = clamp(0.5 log2(K M / (N p)), 0, L).
 float tok15_level(float pdf, uint32_t N, float K, const VirtualSquare& square);

@@ -1,0 +1,84 @@
+// The CLI as a user meets it: device listing, recording, and the exit codes of bad invocations.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.hpp"
+#include "harness/capture.hpp"
+
+namespace vsgl {
+namespace {
+
+using test::run_cli;
+
+TEST(Cli, DevicesListsLavapipeWithTimestamps) {
+  const auto text = run_cli("devices");
+  EXPECT_EQ(text.exit_code, 0) << text.output;
+  EXPECT_NE(text.output.find("llvmpipe"), std::string::npos) << text.output;
+  EXPECT_NE(text.output.find("default device"), std::string::npos);
+
+  const auto json = run_cli("devices --json");
+  ASSERT_EQ(json.exit_code, 0) << json.output;
+  const auto parsed = nlohmann::json::parse(json.output);
+  bool found = false;
+  for (const auto& d : parsed.at("devices"))
+    if (d.at("name").get<std::string>().find("llvmpipe") != std::string::npos) {
+      found = true;
+      EXPECT_EQ(d.at("type"), "cpu");
+      EXPECT_TRUE(d.at("timestamps").get<bool>());
+      EXPECT_GT(d.at("timestamp_valid_bits").get<int>(), 0);
+      EXPECT_TRUE(d.at("usable").get<bool>());
+    }
+  EXPECT_TRUE(found) << json.output;
+  EXPECT_GE(parsed.at("default").get<int>(), 0);
+}
+
+TEST(Cli, RecordWritesALoadableCaptureWithItsBrsmPdf) {
+  const auto dir = std::filesystem::temp_directory_path() / "vsgl_cli_record_test";
+  std::filesystem::remove_all(dir);
+  const auto r = run_cli("record --scene tiny --gbuffer 96x64 --rsm 32 --validate --out " + dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("validation on"), std::string::npos) << r.output;
+  const Capture c = load_capture(dir);
+  EXPECT_EQ(c.meta.scene, "tiny");
+  EXPECT_EQ(c.gbuffer.width, 96u);
+  EXPECT_EQ(c.rsm.width, 32u);
+  EXPECT_TRUE(c.rsm.has_pdf);
+  EXPECT_GT(c.meta.brsm_build_ms, 0.0);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Cli, RecordAnimatedSequenceWritesOneCapturePerFrame) {
+  const auto dir = std::filesystem::temp_directory_path() / "vsgl_cli_frames_test";
+  std::filesystem::remove_all(dir);
+  const auto r = run_cli("record --scene tiny --gbuffer 48x32 --rsm 16 --frames 3 --out " + dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const Capture f0 = load_capture(dir / "frame_0000");
+  const Capture f2 = load_capture(dir / "frame_0002");
+  EXPECT_EQ(f2.meta.frame, 2u);
+  EXPECT_EQ(f2.meta.frames, 3u);
+  EXPECT_NE(f0.meta.light.position, f2.meta.light.position);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Cli, BadInvocationsExitWithTheDocumentedCodes) {
+  auto r = run_cli("record --scene nowhere --out /tmp/vsgl_never_written");
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_NE(r.output.find("atrium"), std::string::npos) << "the message should list the scenes: " << r.output;
+  EXPECT_FALSE(std::filesystem::exists("/tmp/vsgl_never_written"));
+  r = run_cli("record --gbuffer 0x5");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  r = run_cli("record --rsm many");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  r = run_cli("frobnicate");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  r = run_cli("");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  r = run_cli("--help");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("exit codes"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace vsgl
