@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <sstream>
 
 #include "harness/error.hpp"
 
@@ -38,6 +39,15 @@ std::optional<std::string> Args::value(const std::string& name) {
 
 std::string Args::string(const std::string& name, const std::string& fallback) {
   return value(name).value_or(fallback);
+}
+
+std::vector<std::string> Args::list(const std::string& name, const std::string& fallback) {
+  std::vector<std::string> out;
+  std::stringstream ss(string(name, fallback));
+  std::string item;
+  while (std::getline(ss, item, ','))
+    if (!item.empty()) out.push_back(item);
+  return out;
 }
 
 namespace {

@@ -16,6 +16,8 @@ class Args {
   bool flag(const std::string& name);
   std::optional<std::string> value(const std::string& name);
   std::string string(const std::string& name, const std::string& fallback);
+  // "a,b,c" -> {"a", "b", "c"} (empty items dropped).
+  std::vector<std::string> list(const std::string& name, const std::string& fallback);
   uint32_t u32(const std::string& name, uint32_t fallback, uint32_t min_value = 0);
   float positive_float(const std::string& name, float fallback);
   // "WxH" -> {W, H}

@@ -1,27 +1,14 @@
 // `vsgl-bench record`: rasterize a procedural scene into a capture (SPEC §3) and write it.
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <sstream>
 
 #include "bench/cli/commands.hpp"
 #include "bench/cli/gpu_session.hpp"
-#include "harness/brsm_pdf.hpp"
-#include "harness/capture_recorder.hpp"
+#include "harness/capture_provisioning.hpp"
 #include "harness/error.hpp"
-#include "harness/scene.hpp"
 
 namespace vsgl::cli {
 namespace {
-
-std::vector<std::string> split_commas(const std::string& s) {
-  std::vector<std::string> out;
-  std::stringstream ss(s);
-  std::string item;
-  while (std::getline(ss, item, ','))
-    if (!item.empty()) out.push_back(item);
-  return out;
-}
 
 std::uintmax_t directory_bytes(const std::filesystem::path& dir) {
   std::uintmax_t total = 0;
@@ -33,7 +20,7 @@ std::uintmax_t directory_bytes(const std::filesystem::path& dir) {
 }  // namespace
 
 int run_record(Args& args) {
-  const auto scenes = split_commas(args.string("--scene", "atrium"));
+  const auto scenes = args.list("--scene", "atrium");
   const auto out_arg = args.value("--out");
   const auto gbuffer = args.size("--gbuffer", {1920, 1088});
   const uint32_t rsm = args.u32("--rsm", 512, 1);
@@ -44,7 +31,6 @@ int run_record(Args& args) {
   if (scenes.size() > 1 && out_arg)
     throw UsageError("with several scenes, --out names a parent directory: use --out-root instead");
 
-  CaptureRecorder recorder(session.device());
   const RecordSizes sizes{gbuffer.first, gbuffer.second, rsm};
   for (const auto& name : scenes) {
     const std::filesystem::path base = out_arg ? std::filesystem::path(*out_arg) : std::filesystem::path("captures") / name;
@@ -52,18 +38,12 @@ int run_record(Args& args) {
       char frame_dir[32];
       std::snprintf(frame_dir, sizeof frame_dir, "frame_%04u", f);
       const auto dir = frames == 1 ? base : base / frame_dir;
-      const auto t0 = std::chrono::steady_clock::now();
-      const Scene scene = make_scene(name, f, frames);
-      Capture capture = recorder.record(scene, sizes, f, frames);
-      const BrsmBuild brsm = build_brsm_pdf(session.device(), capture);  // SPEC §8: once per capture
-      const auto t1 = std::chrono::steady_clock::now();
-      write_capture(capture, dir);
-      const auto t2 = std::chrono::steady_clock::now();
-      const auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
+      // The one recording path, shared with `tables` (harness/capture_provisioning.hpp).
+      const RecordedCapture r = record_scene_capture(session.device(), name, sizes, f, frames, dir);
       std::printf("recorded %s frame %u/%u -> %s  (G-buffer %ux%u, RSM %u^2; render + BRSM PDF %.0f ms, of which "
                   "BRSM PDF %.1f ms GPU from %u camera VSGLs; write %.0f ms; %.1f MiB on disk)\n",
                   name.c_str(), f + 1, frames, dir.string().c_str(), sizes.gbuffer_width, sizes.gbuffer_height,
-                  sizes.rsm_size, ms(t0, t1), brsm.gpu_ms, brsm.camera_vsgls, ms(t1, t2),
+                  sizes.rsm_size, r.render_and_brsm_ms, r.brsm_gpu_ms, r.brsm_camera_vsgls, r.write_ms,
                   static_cast<double>(directory_bytes(dir)) / (1 << 20));
     }
   }

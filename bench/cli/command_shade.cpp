@@ -6,7 +6,6 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -56,15 +55,6 @@ const LightGenerator& find_generator(const std::string& name) {
   throw UsageError("--generators: unknown generator '" + name + "' (known: " + known + ")");
 }
 
-std::vector<std::string> split_commas(const std::string& s) {
-  std::vector<std::string> out;
-  std::stringstream ss(s);
-  std::string item;
-  while (std::getline(ss, item, ','))
-    if (!item.empty()) out.push_back(item);
-  return out;
-}
-
 void run_generator(Device& device, VsglGenerator& generator) {
   device.submit_and_wait(
       [&](VkCommandBuffer cmd) {
@@ -78,7 +68,7 @@ void run_generator(Device& device, VsglGenerator& generator) {
 
 int run_shade(Args& args) {
   const auto capture_arg = args.value("--capture");
-  const auto names = split_commas(args.string("--generators", "fis_tok15,fis_modified"));
+  const auto names = args.list("--generators", "fis_tok15,fis_modified");
   const uint32_t stride = args.u32("--stride", 1, 1);
   const uint32_t vsgl_count = args.u32("--vsgls", kLightViewVsgls, 1);
   const std::filesystem::path out_dir = args.string("--out", ".");
