@@ -106,6 +106,18 @@ glm::vec2 fibonacci_point(uint32_t i, uint32_t N, uint32_t offset_bits) {
   return {(static_cast<float>(i) + 0.5f) / static_cast<float>(N), static_cast<float>(y_bits >> 8) * 0x1p-24f};
 }
 
+// One binary decision of the hierarchical warp (SPEC §5): the first child with probability
+// first / (first + second); u is rescaled into the chosen part so it can be reused below.
+// `margin` keeps the smallest |u - split| seen (a near tie a GPU's division may decide otherwise).
+bool warp_choose_first(float& u, float first, float second, float& margin) {
+  const float p = first / (first + second);
+  margin = std::min(margin, std::abs(u - p));
+  const bool take_first = u < p;
+  u = take_first ? u / p : (u - p) / (1.0f - p);
+  u = std::clamp(u, 0.0f, kOneMinusUlp);
+  return take_first;
+}
+
 std::vector<SamplePoint> reference_samples(const MipPyramid& pdf_pyramid, uint32_t N, uint32_t offset_bits) {
   if (N == 0) throw InputError("the number of VSGLs N must be positive");
   const float qL = pdf_total(pdf_pyramid);
@@ -120,32 +132,13 @@ std::vector<SamplePoint> reference_samples(const MipPyramid& pdf_pyramid, uint32
       const uint32_t c = k - 1;
       const int32_t ci = 2 * i;
       const int32_t cj = 2 * j;
-      // Column first: the sums of the 2x2 children's columns.
+      // Column first, by the sums of the 2x2 children's columns; then the row within it.
       const float left = pdf_weight(q, c, ci, cj) + pdf_weight(q, c, ci, cj + 1);
       const float right = pdf_weight(q, c, ci + 1, cj) + pdf_weight(q, c, ci + 1, cj + 1);
-      const float pl = left / (left + right);
-      margin = std::min(margin, std::abs(u.x - pl));
-      int32_t col = ci;
-      if (u.x < pl) {
-        u.x = u.x / pl;
-      } else {
-        col = ci + 1;
-        u.x = (u.x - pl) / (1.0f - pl);
-      }
-      u.x = std::clamp(u.x, 0.0f, kOneMinusUlp);
-      // Then the row within the chosen column.
+      const int32_t col = warp_choose_first(u.x, left, right, margin) ? ci : ci + 1;
       const float top = pdf_weight(q, c, col, cj);
       const float bottom = pdf_weight(q, c, col, cj + 1);
-      const float pt = top / (top + bottom);
-      margin = std::min(margin, std::abs(u.y - pt));
-      int32_t row = cj;
-      if (u.y < pt) {
-        u.y = u.y / pt;
-      } else {
-        row = cj + 1;
-        u.y = (u.y - pt) / (1.0f - pt);
-      }
-      u.y = std::clamp(u.y, 0.0f, kOneMinusUlp);
+      const int32_t row = warp_choose_first(u.y, top, bottom, margin) ? cj : cj + 1;
       i = col;
       j = row;
     }

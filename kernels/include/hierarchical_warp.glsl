@@ -23,6 +23,16 @@ const float ONE_MINUS_ULP = 0.99999994;  // largest float below 1
 
 float pdf_weight(uint level, ivec2 p) { return pyramid_texel(PDF_LAYER, level, p).w; }
 
+// One binary decision: the first child with probability first / (first + second), u rescaled into
+// the chosen part so it can be reused below. `precise` keeps the CPU twin's rounding.
+bool warp_choose_first(inout float u, float first, float second) {
+  precise float p = first / (first + second);
+  bool take_first = u < p;
+  precise float rescaled = take_first ? u / p : (u - p) / (1.0 - p);
+  u = clamp(rescaled, 0.0, ONE_MINUS_ULP);
+  return take_first;
+}
+
 // Hierarchical sample warping: from the 1x1 level down, pick the column by the sums of the 2x2
 // children, rescale u.x into it, then the child within the column, rescale u.y. The same u is
 // reused all the way down, which keeps the lattice's stratification. Zero-mass children are
@@ -32,30 +42,12 @@ WarpedSample warp_sample(vec2 u) {
   for (int k = int(pyramid_levels); k >= 1; --k) {
     uint child = uint(k - 1);
     ivec2 c = cur * 2;
-    precise float left = pdf_weight(child, c) + pdf_weight(child, c + ivec2(0, 1));
-    precise float right = pdf_weight(child, c + ivec2(1, 0)) + pdf_weight(child, c + ivec2(1, 1));
-    precise float pl = left / (left + right);
-    int col;
-    if (u.x < pl) {
-      col = c.x;
-      u.x = u.x / pl;
-    } else {
-      col = c.x + 1;
-      u.x = (u.x - pl) / (1.0 - pl);
-    }
-    u.x = clamp(u.x, 0.0, ONE_MINUS_ULP);
-    precise float top = pdf_weight(child, ivec2(col, c.y));
-    precise float bottom = pdf_weight(child, ivec2(col, c.y + 1));
-    precise float pt = top / (top + bottom);
-    int row;
-    if (u.y < pt) {
-      row = c.y;
-      u.y = u.y / pt;
-    } else {
-      row = c.y + 1;
-      u.y = (u.y - pt) / (1.0 - pt);
-    }
-    u.y = clamp(u.y, 0.0, ONE_MINUS_ULP);
+    float left = pdf_weight(child, c) + pdf_weight(child, c + ivec2(0, 1));
+    float right = pdf_weight(child, c + ivec2(1, 0)) + pdf_weight(child, c + ivec2(1, 1));
+    int col = warp_choose_first(u.x, left, right) ? c.x : c.x + 1;
+    float top = pdf_weight(child, ivec2(col, c.y));
+    float bottom = pdf_weight(child, ivec2(col, c.y + 1));
+    int row = warp_choose_first(u.y, top, bottom) ? c.y : c.y + 1;
     cur = ivec2(col, row);
   }
   WarpedSample s;
