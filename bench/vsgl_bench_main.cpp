@@ -26,6 +26,28 @@ commands:
       --rsm N                 RSM size N x N                                  [512]
       --frames F              animated sequence of F frames (DIR/frame_0000 ...)  [1]
 
+  tables  [options]           time every generator on the paper's inputs: Tables 1 and 2 (+ Table 3
+                              analog) as OUT/tableN.json + OUT/tableN.md, beside the paper's numbers
+      --tables 1,2            which tables (1: captures/atrium, 2: captures/conference)  [1,2]
+      --captures DIR          capture root; missing captures are recorded first   [captures]
+      --gbuffer WxH, --rsm N  sizes of captures recorded because missing      [1920x1088, 512]
+      --generators G[,G]      fis_tok15, fis_modified, kmeans_2d, kmeans_3d, kmeans_2d_segsum,
+                              kmeans_3d_segsum                                     [all]
+      --out DIR               output directory                   [results/<device slug>]
+      --warmup W              discarded warm-up runs (>= 2)                        [2]
+      --repetitions R         minimum repetitions                                  [10]
+      --noise-target X        stop once every total has IQR/median <= X            [0.02]
+      --time-cap S            ... or after S s of timing   [60; 20 on a CPU device such as lavapipe]
+      --max-repetitions M     ... or after M repetitions                           [1000]
+      --quick                 3 repetitions, no noise target (CI smoke runs; marked in the JSON)
+      --cold                  overwrite a 256 MiB buffer before every sample (cold caches)
+      --camera-vsgls N, --light-vsgls N, --K K, --iterations I   [2048, 1024, 1, 12]
+      --kmeans-iterations I   Lloyd iterations of the k-means generators            [4]
+      --json-only             write no markdown file (the console still shows the tables)
+      --clocks-locked         record that you locked the GPU clocks (Vulkan cannot)
+      --paper FILE, --schema FILE   [results/paper/paper_tables.json, results/schema/table.schema.json]
+      --no-progress           no progress line (it is off anyway when stderr is not a terminal)
+
   verify  --capture DIR        check every FIS pass against its CPU reference on this device
                               (SPEC §11): one line per check, measured error <= tolerance
       --json FILE             also write the checks as JSON
@@ -67,6 +89,7 @@ int dispatch(int argc, char** argv) {
   }
   if (command == "devices") return vsgl::cli::run_devices(args);
   if (command == "record") return vsgl::cli::run_record(args);
+  if (command == "tables") return vsgl::cli::run_tables(args);
   if (command == "verify") return vsgl::cli::run_verify(args);
   if (command == "shade") return vsgl::cli::run_shade(args);
   throw vsgl::UsageError("unknown command '" + command + "'");

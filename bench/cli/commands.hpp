@@ -6,6 +6,7 @@ namespace vsgl::cli {
 
 int run_devices(Args& args);
 int run_record(Args& args);
+int run_tables(Args& args);
 int run_verify(Args& args);
 int run_shade(Args& args);
 

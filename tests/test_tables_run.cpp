@@ -1,0 +1,211 @@
+// `tables` end to end on tiny captures (harness/tables_run.hpp): missing captures are recorded,
+// every generator is timed on both views, and the JSON is complete, finite and conforms to
+// results/schema/table.schema.json; a capture whose hash does not match its sidecar is refused.
+// Also the schema validator itself and the line counter on hand-made inputs.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <regex>
+
+#include "gpu_test.hpp"
+#include "harness/error.hpp"
+#include "harness/generator_registry.hpp"
+#include "harness/json_schema_subset.hpp"
+#include "harness/source_lines.hpp"
+#include "harness/tables_run.hpp"
+
+namespace vsgl {
+namespace {
+
+namespace fs = std::filesystem;
+
+nlohmann::json read_json(const fs::path& p) {
+  std::ifstream in(p);
+  EXPECT_TRUE(in.good()) << p;
+  return nlohmann::json::parse(in);
+}
+
+const fs::path kSchema = fs::path(VSGL_SOURCE_DIR) / "results/schema/table.schema.json";
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("vsgl_tables_test_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  return dir;
+}
+
+TablesOptions tiny_options(const fs::path& root) {
+  TablesOptions o;
+  o.captures_dir = root / "captures";
+  o.out_dir = root / "out";
+  o.record_sizes = RecordSizes{96, 64, 64};
+  o.camera_vsgls = 48;
+  o.light_vsgls = 24;
+  o.generators = {"fis_tok15", "fis_modified", "kmeans_2d", "kmeans_3d"};
+  o.quick = true;
+  o.timing.min_repetitions = 3;
+  o.timing.max_repetitions = 3;
+  return o;
+}
+
+class TablesRunTest : public test::GpuTest {};
+
+TEST_F(TablesRunTest, TinyRunProducesCompleteFiniteTablesThatMatchTheSchema) {
+  const fs::path root = fresh_dir("complete");
+  const TablesOptions o = tiny_options(root);
+  std::vector<std::string> messages;
+  const TablesOutcome out = run_tables(device(), o, [&](const TablesEvent& e) {
+    if (e.progress == nullptr) messages.push_back(e.message);
+  });
+  ASSERT_EQ(out.documents.size(), 2u);
+  EXPECT_TRUE(fs::exists(root / "captures/atrium/capture.json"));  // recorded because missing
+  EXPECT_TRUE(fs::exists(root / "captures/conference/capture.json"));
+  const nlohmann::json schema = read_json(kSchema);
+  for (int table : {1, 2}) {
+    SCOPED_TRACE("table " + std::to_string(table));
+    const fs::path json_path = root / "out" / ("table" + std::to_string(table) + ".json");
+    ASSERT_TRUE(fs::exists(json_path));
+    ASSERT_TRUE(fs::exists(root / "out" / ("table" + std::to_string(table) + ".md")));
+    const std::string text = [&] {
+      std::ifstream in(json_path);
+      return std::string(std::istreambuf_iterator<char>(in), {});
+    }();
+    EXPECT_EQ(text.find("NaN"), std::string::npos);
+    const nlohmann::json doc = nlohmann::json::parse(text);
+    const auto problems = validate_against_schema(doc, schema);
+    EXPECT_TRUE(problems.empty()) << problems.front();
+    EXPECT_EQ(doc["table"], table);
+    EXPECT_EQ(doc["timing"]["repetitions"], 3);
+    for (const auto& g : o.generators) {
+      SCOPED_TRACE(g);
+      ASSERT_TRUE(doc["generators"].contains(g));
+      for (const char* view : {"camera_view", "light_view"}) {
+        const auto& v = doc["generators"][g]["views"][view];
+        EXPECT_EQ(v["phases"].size(), 3u);
+        for (const auto& [phase, st] : v["phases"].items()) {
+          EXPECT_EQ(st["samples_ms"].size(), 3u) << phase;
+          EXPECT_LE(st["min_ms"].get<double>(), st["median_ms"].get<double>());
+          EXPECT_LE(st["median_ms"].get<double>(), st["max_ms"].get<double>());
+          EXPECT_TRUE(st["paper_ms"].is_number()) << "the paper's value beside " << g << " " << view << " " << phase;
+        }
+        EXPECT_EQ(v["dispatch_calls"], doc["table3"][g]["dispatch_calls"][view]);
+      }
+      EXPECT_TRUE(doc["generators"][g]["total"]["paper_ms"].is_number());
+      EXPECT_GT(doc["table3"][g]["lines_of_code"]["measured"].get<int>(), 0);
+    }
+    // Both tables ran: every ratio the paper argues with is present.
+    EXPECT_TRUE(doc["ratios"].contains("modified_minus_tok15_us"));
+    EXPECT_TRUE(doc["ratios"]["kmeans_over_modified"].contains("kmeans_3d"));
+    EXPECT_TRUE(doc["ratios"]["table1_to_table2"].contains("fis_modified"));
+    EXPECT_EQ(doc["claims"].size(), 6u);
+    EXPECT_TRUE(doc["claims"][0]["holds"].is_boolean());
+    EXPECT_EQ(doc["capture"]["hashes"]["gbuffer"].size(), 15u);
+  }
+  EXPECT_NE(out.markdown[0].find("Filtered sampling"), std::string::npos);
+  EXPECT_NE(out.markdown[0].find("| 0.816 |"), std::string::npos);  // the paper's column
+
+  // A second run loads the captures (no recording) and finds them identical.
+  const TablesOutcome again = run_tables(device(), [&] {
+    TablesOptions o2 = o;
+    o2.tables = {1};
+    o2.generators = {"fis_modified"};
+    return o2;
+  }());
+  EXPECT_EQ(again.documents[0]["capture"]["recorded_now"], false);
+  EXPECT_EQ(again.documents[0]["capture"]["hashes"], out.documents[0]["capture"]["hashes"]);
+  EXPECT_FALSE(again.documents[0]["ratios"].contains("table1_to_table2"));  // one table: no change
+  fs::remove_all(root);
+}
+
+TEST_F(TablesRunTest, CaptureHashMismatchIsRefusedAndNothingIsWritten) {
+  const fs::path root = fresh_dir("hash");
+  TablesOptions o = tiny_options(root);
+  o.tables = {1};
+  o.generators = {"fis_tok15"};
+  run_tables(device(), o);
+  fs::remove_all(o.out_dir);
+  // Alter one recorded hash in the sidecar.
+  const fs::path sidecar = root / "captures/atrium/capture.json";
+  std::string text;
+  {
+    std::ifstream in(sidecar);
+    text.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  const std::regex first_hash("fnv1a64:[0-9a-f]{16}");
+  text = std::regex_replace(text, first_hash, "fnv1a64:0123456789abcdef", std::regex_constants::format_first_only);
+  std::ofstream(sidecar) << text;
+  try {
+    run_tables(device(), o);
+    FAIL() << "a capture with a wrong hash was timed";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("hash mismatch"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(fs::exists(o.out_dir / "table1.json"));
+  fs::remove_all(root);
+}
+
+TEST_F(TablesRunTest, BadOptionsAreRefusedBeforeAnyWork) {
+  const fs::path root = fresh_dir("options");
+  const auto with = [&](auto change) {
+    TablesOptions o = tiny_options(root);
+    change(o);
+    return o;
+  };
+  EXPECT_THROW(run_tables(device(), with([](TablesOptions& o) { o.tables = {3}; })), UsageError);
+  EXPECT_THROW(run_tables(device(), with([](TablesOptions& o) { o.generators = {"kmeans_4d"}; })), InputError);
+  EXPECT_THROW(run_tables(device(), with([](TablesOptions& o) { o.out_dir.clear(); })), UsageError);
+  EXPECT_THROW(run_tables(device(), with([](TablesOptions& o) { o.timing.warmup = 1; })), UsageError);
+  EXPECT_THROW(run_tables(device(), with([](TablesOptions& o) { o.light_vsgls = 0; })), InputError);
+  EXPECT_FALSE(fs::exists(root / "captures"));  // nothing recorded for a bad command line
+}
+
+TEST(TableSchema, ValidatorReportsViolations) {
+  const nlohmann::json schema = nlohmann::json::parse(R"({
+    "type": "object", "required": ["a", "b"], "additionalProperties": false,
+    "properties": {"a": {"$ref": "#/$defs/pos"}, "b": {"type": "array", "minItems": 2, "items": {"enum": ["x", "y"]}},
+                   "c": {"type": ["number", "null"]}},
+    "$defs": {"pos": {"type": "number", "exclusiveMinimum": 0}}})");
+  EXPECT_TRUE(validate_against_schema(nlohmann::json::parse(R"({"a": 1, "b": ["x", "y"], "c": null})"), schema).empty());
+  const auto errors = validate_against_schema(nlohmann::json::parse(R"({"a": 0, "b": ["z"], "d": 1})"), schema);
+  ASSERT_EQ(errors.size(), 4u);  // a not > 0, b too short, b/0 not in enum, d not allowed
+  EXPECT_NE(errors[0].find("/a"), std::string::npos);
+  EXPECT_FALSE(validate_against_schema(nlohmann::json::parse(R"({"a": "1"})"), schema).empty());
+  EXPECT_THROW(validate_against_schema(nlohmann::json(1), nlohmann::json::parse(R"({"pattern": "x"})")),
+               std::invalid_argument);  // an unsupported keyword is not silently ignored
+  nlohmann::ordered_json with_nan{{"x", {{"y", std::numeric_limits<double>::quiet_NaN()}}}};
+  try {
+    require_finite_numbers(with_nan);
+    FAIL() << "NaN accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("/x/y"), std::string::npos);
+  }
+  // The real schema only uses what the validator supports.
+  EXPECT_NO_THROW(validate_against_schema(nlohmann::json::object(), read_json(kSchema)));
+}
+
+TEST(SourceLines, CountsCodeNotCommentsOrBlanks) {
+  EXPECT_EQ(count_code_lines(""), 0u);
+  EXPECT_EQ(count_code_lines("int a;\n\n   \n// only a comment\nint b; // trailing\n"), 2u);
+  EXPECT_EQ(count_code_lines("/* one\n two\n three */\nx = 1; /* a */ y = 2;\n/* a */ z();\n"), 2u);
+  EXPECT_EQ(count_code_lines("s = \"// not a comment\";\n"), 1u);
+  EXPECT_EQ(count_code_lines("a /* open\n still comment */ b\n"), 2u);  // code on both lines
+  EXPECT_EQ(count_code_lines("#include \"x.glsl\"\nlast line without newline"), 2u);
+
+  const fs::path root = fresh_dir("lines");
+  fs::create_directories(root / "kernels/include");
+  std::ofstream(root / "host.cpp") << "// header comment\nint f() {\n  return 1;\n}\n";
+  std::ofstream(root / "kernels/k.comp") << "#version 450\n#include \"a.glsl\"\nvoid main() {}\n";
+  std::ofstream(root / "kernels/include/a.glsl") << "#include \"b.glsl\"\nfloat a;\n";
+  std::ofstream(root / "kernels/include/b.glsl") << "/* b */\nfloat b;\n";
+  const GeneratorLines lines = count_generator_lines(GeneratorSources{{"host.cpp"}, {"kernels/k.comp"}}, root);
+  EXPECT_EQ(lines.total, 3u + 3u + 2u + 1u);
+  ASSERT_EQ(lines.files.size(), 4u);  // transitive include closure
+  EXPECT_THROW(count_generator_lines(GeneratorSources{{"missing.cpp"}, {}}, root), InputError);
+  fs::remove_all(root);
+  for (const auto& g : generator_names())
+    EXPECT_GT(count_generator_lines(generator_sources(g), VSGL_SOURCE_DIR).total, 100u) << g;
+}
+
+}  // namespace
+}  // namespace vsgl

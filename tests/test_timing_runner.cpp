@@ -1,0 +1,199 @@
+// The timing harness (harness/timing_runner.hpp): it refuses a device without timestamps and a
+// zero interval, replays a once-recorded command buffer with a timestamp at every phase boundary,
+// runs the round-robin schedule and the stop rule, and its dispatch counts (Table 3) equal the
+// vkCmdDispatch calls actually recorded, counted here independently by wrapping the Vulkan entry
+// points, as the number of kernels per generator equals the distinct pipelines bound.
+#include <dlfcn.h>
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <set>
+
+#include "gpu_test.hpp"
+#include "harness/capture_recorder.hpp"
+#include "harness/device_view.hpp"
+#include "harness/error.hpp"
+#include "harness/generator_registry.hpp"
+#include "harness/scene.hpp"
+#include "harness/timestamp_pool.hpp"
+#include "harness/timing_runner.hpp"
+
+// ---- independent counting: these definitions take precedence over libvulkan's for every call
+// the harness makes from this executable, and forward to the loader's (RTLD_NEXT). ----
+namespace {
+std::atomic<bool> g_counting{false};
+std::atomic<uint32_t> g_dispatches{0};
+std::set<VkPipeline>* g_pipelines = nullptr;
+}  // namespace
+
+extern "C" VKAPI_ATTR void VKAPI_CALL vkCmdDispatch(VkCommandBuffer cmd, uint32_t x, uint32_t y, uint32_t z) {
+  static const auto next = reinterpret_cast<PFN_vkCmdDispatch>(dlsym(RTLD_NEXT, "vkCmdDispatch"));
+  if (g_counting) ++g_dispatches;
+  next(cmd, x, y, z);
+}
+
+extern "C" VKAPI_ATTR void VKAPI_CALL vkCmdBindPipeline(VkCommandBuffer cmd, VkPipelineBindPoint point,
+                                                        VkPipeline pipeline) {
+  static const auto next = reinterpret_cast<PFN_vkCmdBindPipeline>(dlsym(RTLD_NEXT, "vkCmdBindPipeline"));
+  if (g_counting && g_pipelines != nullptr && point == VK_PIPELINE_BIND_POINT_COMPUTE) g_pipelines->insert(pipeline);
+  next(cmd, point, pipeline);
+}
+
+namespace vsgl {
+namespace {
+
+TEST(TimingChecks, DeviceWithoutTimestampsIsRefused) {
+  DeviceInfo info;
+  info.name = "fake device";
+  info.timestamp_valid_bits = 0;
+  info.timestamp_period_ns = 1.0f;
+  try {
+    require_timestamps(info);
+    FAIL() << "a device without timestamp bits was accepted";
+  } catch (const DeviceError& e) {
+    EXPECT_NE(std::string(e.what()).find("timestampValidBits = 0"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("fake device"), std::string::npos) << e.what();
+  }
+  info.timestamp_valid_bits = 64;
+  info.timestamp_period_ns = 0.0f;
+  EXPECT_THROW(require_timestamps(info), DeviceError);
+  info.timestamp_period_ns = 1.0f;
+  EXPECT_NO_THROW(require_timestamps(info));
+}
+
+TEST(TimingChecks, ZeroIntervalIsAnErrorNotANumber) {
+  const uint64_t mask = TimestampPool::mask_for_bits(36);
+  EXPECT_THROW(TimestampPool::interval_ns(1000, 1000, mask, 1.0), DeviceError);
+  EXPECT_THROW(TimestampPool::interval_ns(1000, 999, mask, 1.0), DeviceError);  // negative, seen through the wrap
+  // mask-1 -> mask -> 0 -> 1 -> 2 -> 3: 5 ticks through the wrap, 2 ns each.
+  EXPECT_DOUBLE_EQ(TimestampPool::interval_ns(mask - 1, 3, mask, 2.0), 10.0);
+}
+
+TEST(TimingChecks, OptionsBelowTheProtocolAreUsageErrors) {
+  TimingOptions o;
+  EXPECT_NO_THROW(o.check());
+  o.warmup = 1;
+  EXPECT_THROW(o.check(), UsageError);
+  o = TimingOptions{};
+  o.min_repetitions = 1;
+  EXPECT_THROW(o.check(), UsageError);
+  o = TimingOptions{};
+  o.max_repetitions = 5;  // < min 10
+  EXPECT_THROW(o.check(), UsageError);
+  o = TimingOptions{};
+  o.noise_target = 0.0;
+  EXPECT_THROW(o.check(), UsageError);
+  DeviceInfo cpu;
+  cpu.type = VK_PHYSICAL_DEVICE_TYPE_CPU;
+  DeviceInfo gpu;
+  gpu.type = VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU;
+  EXPECT_LT(TimingOptions::defaults_for(cpu).time_cap_s, TimingOptions::defaults_for(gpu).time_cap_s);
+  EXPECT_EQ(TimingOptions::defaults_for(gpu).warmup, 2u);
+  EXPECT_EQ(TimingOptions::defaults_for(gpu).min_repetitions, 10u);
+}
+
+class TimingRunnerTest : public test::GpuTest {
+ protected:
+  Capture tiny_capture() {
+    CaptureRecorder recorder(device());
+    Capture c = recorder.record(make_scene("tiny"), RecordSizes{96, 64, 64}, 0, 1);
+    for (std::size_t i = 0; i < c.rsm.texels(); ++i)  // a stand-in light-view PDF: the flux
+      c.rsm.planes[kPdf][i] = c.rsm.planes[kDR][i] + c.rsm.planes[kDG][i] + c.rsm.planes[kDB][i];
+    c.rsm.has_pdf = true;
+    return c;
+  }
+};
+
+TEST_F(TimingRunnerTest, RoundRobinSamplesEveryPhaseAndCountsDispatchesTruly) {
+  const Capture capture = tiny_capture();
+  const DeviceView camera = upload_view(device(), capture, ViewKind::kCamera);
+  const DeviceView light = upload_view(device(), capture, ViewKind::kLight);
+  GeneratorConfig cfg;
+  cfg.vsgl_count = 32;
+  std::vector<std::unique_ptr<VsglGenerator>> gens;
+  TimingOptions options;
+  options.min_repetitions = 4;
+  options.max_repetitions = 4;
+  TimingRunner runner(device(), options);
+  std::vector<uint32_t> counted_dispatches;
+  std::vector<std::size_t> counted_pipelines;
+  std::vector<std::string> names;
+  for (const char* name : {"fis_tok15", "fis_modified", "kmeans_2d"})
+    for (const DeviceView* view : {&camera, &light}) {
+      gens.push_back(make_generator(name, device(), *view, cfg));
+      std::set<VkPipeline> pipelines;
+      g_pipelines = &pipelines;
+      g_dispatches = 0;
+      g_counting = true;
+      runner.add(TimingCase{name, view_name(view->kind), gens.back().get()});
+      g_counting = false;
+      g_pipelines = nullptr;
+      counted_dispatches.push_back(g_dispatches);
+      counted_pipelines.push_back(pipelines.size());
+      names.push_back(name);
+    }
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    SCOPED_TRACE(names[i]);
+    EXPECT_GT(counted_dispatches[i], 0u);
+    EXPECT_EQ(runner.dispatch_count(i), counted_dispatches[i]);
+    // Table 3 "compute shaders" = the generator's kernels (generator_sources). FIS binds all of
+    // them on any view; k-means skips its scan_add kernel when a scan fits one workgroup, as on
+    // this tiny view, so there it binds one fewer, never more.
+    const std::size_t kernels = generator_sources(names[i]).kernels.size();
+    if (names[i].rfind("fis", 0) == 0) EXPECT_EQ(kernels, counted_pipelines[i]);
+    else EXPECT_TRUE(counted_pipelines[i] == kernels || counted_pipelines[i] + 1 == kernels) << counted_pipelines[i];
+  }
+
+  const TimingResult r = runner.run();
+  EXPECT_EQ(r.repetitions, 4u);
+  EXPECT_FALSE(r.stop_reason.empty());
+  ASSERT_EQ(r.cases.size(), names.size());
+  for (std::size_t i = 0; i < r.cases.size(); ++i) {
+    const CaseTiming& c = r.cases[i];
+    EXPECT_EQ(c.generator, names[i]);
+    EXPECT_EQ(c.dispatch_count, counted_dispatches[i]);
+    ASSERT_EQ(c.phase_ms.size(), 3u);
+    ASSERT_EQ(c.total_ms.size(), 4u);
+    for (std::size_t rep = 0; rep < 4; ++rep) {
+      double sum = 0;
+      for (const auto& phase : c.phase_ms) {
+        ASSERT_EQ(phase.size(), 4u);
+        EXPECT_GT(phase[rep], 0.0);
+        EXPECT_TRUE(std::isfinite(phase[rep]));
+        sum += phase[rep];
+      }
+      EXPECT_DOUBLE_EQ(c.total_ms[rep], sum);
+    }
+  }
+}
+
+TEST_F(TimingRunnerTest, StopsAtTheNoiseTargetOrTheCapButNeverBeforeTheMinimum) {
+  const Capture capture = tiny_capture();
+  const DeviceView light = upload_view(device(), capture, ViewKind::kLight);
+  GeneratorConfig cfg;
+  cfg.vsgl_count = 16;
+  auto gen = make_generator("fis_modified", device(), light, cfg);
+  TimingOptions loose;
+  loose.min_repetitions = 3;
+  loose.noise_target = 1e9;  // any noise passes: stop exactly at the minimum
+  TimingRunner a(device(), loose);
+  a.add(TimingCase{"fis_modified", "light_view", gen.get()});
+  uint32_t calls = 0;
+  const TimingResult ra = a.run([&](const TimingProgress&) { ++calls; });
+  EXPECT_EQ(ra.repetitions, 3u);
+  EXPECT_EQ(ra.stop_reason, "noise_target");
+  EXPECT_EQ(calls, loose.warmup + 3u);
+
+  TimingOptions capped;
+  capped.min_repetitions = 3;
+  capped.noise_target = 1e-12;  // unreachable
+  capped.time_cap_s = 0.0;      // ... so the cap stops it, after the minimum
+  TimingRunner b(device(), capped);
+  b.add(TimingCase{"fis_modified", "light_view", gen.get()});
+  const TimingResult rb = b.run();
+  EXPECT_EQ(rb.repetitions, 3u);
+  EXPECT_EQ(rb.stop_reason, "time_cap");
+}
+
+}  // namespace
+}  // namespace vsgl
