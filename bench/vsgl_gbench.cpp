@@ -5,6 +5,7 @@
 //
 //   vsgl-gbench [google benchmark flags] [--vsgl_captures=DIR] [--vsgl_device=D] [--vsgl_tables=1,2]
 //               [--vsgl_generators=G,G] [--vsgl_camera_vsgls=N] [--vsgl_light_vsgls=N] [--vsgl_validate]
+//               [--vsgl_iterations=N]   (replays per benchmark, default 30)
 //   e.g. vsgl-gbench --benchmark_format=json --benchmark_out=gbench.json
 //
 // Differences from `vsgl-bench tables`: Google Benchmark chooses the iteration counts, and the
@@ -38,6 +39,10 @@ struct Options {
   std::string device;
   std::vector<int> tables{1, 2};
   std::vector<std::string> generators = generator_names();
+  // Replays per benchmark. Fixed, because each iteration replays the whole case while reporting
+  // one phase's manual time: letting Google Benchmark accumulate its min_time of a 20 us phase
+  // would replay a millisecond-long k-means case tens of thousands of times.
+  uint32_t iterations = 30;
   uint32_t camera_vsgls = 2048;
   uint32_t light_vsgls = 1024;
   bool validate = false;
@@ -79,6 +84,7 @@ Options parse(int argc, char** argv) {
     } else if (auto g = value("--vsgl_generators")) o.generators = split(*g);
     else if (auto c = value("--vsgl_camera_vsgls")) o.camera_vsgls = parse_count("--vsgl_camera_vsgls", *c);
     else if (auto l = value("--vsgl_light_vsgls")) o.light_vsgls = parse_count("--vsgl_light_vsgls", *l);
+    else if (auto n = value("--vsgl_iterations")) o.iterations = parse_count("--vsgl_iterations", *n);
     else if (a == "--vsgl_validate") o.validate = true;
     else throw UsageError("unknown argument '" + a + "'");
   }
@@ -157,6 +163,7 @@ int run(int argc, char** argv) {
                                          }
                                        })
               ->UseManualTime()
+              ->Iterations(o.iterations)
               ->Unit(benchmark::kMillisecond);
         }
       }

@@ -129,9 +129,11 @@ class KmeansGeneratorTest : public test::GpuTest {
   void check_against_reference(const ViewImage& image, KmeansSpace space, const KmeansParams& params,
                                const DeviceView& view, const GpuResult& gpu) {
     check_consistency(image, view, space, gpu);
+    // The whole run equals the CPU's only where division is correctly rounded (lavapipe): a seed
+    // one ulp off elsewhere may flip an equidistant texel, after which both Lloyd runs are right
+    // but differ. check_consistency() above holds on every device.
+    if (!test::division_is_correctly_rounded()) return;
     const KmeansResult ref = reference_kmeans(image, view.source_position, space, params);
-    // On lavapipe (correctly rounded division) the centres match bit for bit; on other devices
-    // allow float rounding of the division.
     for (uint32_t k = 0; k < params.vsgl_count; ++k)
       for (int c = 0; c < 3; ++c)
         ASSERT_NEAR(gpu.centres[k][c], ref.centres[k][c], 1e-6f * std::max(1.0f, std::abs(ref.centres[k][c])))
@@ -163,7 +165,14 @@ TEST_F(KmeansGeneratorTest, SeedsAreTheKernelCentresOfSpec5) {
     params.iterations = 0;
     const GpuResult gpu = run(view, space, params);
     const auto seeds = kmeans_seeds(tiny().gbuffer, view.source_position, space, params.vsgl_count, 0);
-    ASSERT_EQ(gpu.centres, seeds);
+    if (test::division_is_correctly_rounded()) {
+      ASSERT_EQ(gpu.centres, seeds);
+    } else {  // the sampler's rescaling divides: allow its rounding, not another texel
+      ASSERT_EQ(gpu.centres.size(), seeds.size());
+      for (std::size_t k = 0; k < seeds.size(); ++k)
+        for (int c = 0; c < 3; ++c)
+          ASSERT_NEAR(gpu.centres[k][c], seeds[k][c], 1e-5f * std::max(1.0f, std::abs(seeds[k][c]))) << "seed " << k;
+    }
     check_consistency(tiny().gbuffer, view, space, gpu);
   }
 }

@@ -50,14 +50,14 @@ TEST_F(TimestampPoolTest, EachIntervalTimesItsOwnPhase) {
   BindingSet set(dev, pipeline, {out}, "test.workload.set");
   TimestampPool pool(dev, 4, "test.timestamps");
 
-  auto run = [&] {
+  auto run = [&](uint32_t heavy_iterations) {
     dev.submit_and_wait([&](VkCommandBuffer cmd) {
       CommandStream stream(cmd);
       pool.reset(cmd);
       pool.write(cmd);
       stream.dispatch(pipeline, set, WorkloadPush{count, 8}, div_up(count, 64));
       pool.write(cmd);
-      stream.dispatch(pipeline, set, WorkloadPush{count, 2048}, div_up(count, 64));
+      stream.dispatch(pipeline, set, WorkloadPush{count, heavy_iterations}, div_up(count, 64));
       pool.write(cmd);
       stream.dispatch(pipeline, set, WorkloadPush{count, 8}, div_up(count, 64));
       pool.write(cmd);
@@ -65,8 +65,15 @@ TEST_F(TimestampPoolTest, EachIntervalTimesItsOwnPhase) {
     });
     return pool.read_ticks();
   };
-  run();  // warm-up: the first dispatch pays the driver's shader compilation (SPEC §9)
-  const auto ticks = run();
+  run(8);  // warm-up: the first dispatch pays the driver's shader compilation (SPEC §9)
+  // Grow the heavy phase until it takes at least 1 ms on this device, so that it dwarfs the
+  // fixed cost of a dispatch and a barrier on a GPU as on a CPU driver.
+  uint32_t heavy_iterations = 256;
+  std::vector<uint64_t> ticks = run(heavy_iterations);
+  while (pool.interval_ns(ticks[1], ticks[2]) < 1e6 && heavy_iterations < (1u << 24)) {
+    heavy_iterations *= 4;
+    ticks = run(heavy_iterations);
+  }
   ASSERT_EQ(ticks.size(), 4u);
   const double light_before = pool.interval_ns(ticks[0], ticks[1]);
   const double heavy = pool.interval_ns(ticks[1], ticks[2]);

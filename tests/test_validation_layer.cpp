@@ -2,6 +2,7 @@
 // counted as an error, so "zero errors" in every other test means something.
 #include <gtest/gtest.h>
 
+#include "gpu_test.hpp"
 #include "harness/device.hpp"
 #include "harness/vk_check.hpp"
 
@@ -35,6 +36,20 @@ TEST(ValidationLayer, ErrorsNameTheFailingCall) {
     EXPECT_NE(std::string(e.what()).find("VK_ERROR_DEVICE_LOST"), std::string::npos);
     EXPECT_NE(std::string(e.what()).find("device was lost"), std::string::npos);
   }
+}
+
+}  // namespace
+}  // namespace vsgl
+
+namespace vsgl {
+namespace {
+
+// The strict bit-for-bit GPU/CPU checks run where division is correctly rounded. CI runs on
+// lavapipe, so there they must run: if this probe ever said otherwise they would silently relax.
+TEST(DeviceProbe, LavapipeDividesExactlySoStrictChecksRunInCi) {
+  const auto& info = test::shared_context().device().info();
+  if (info.driver_name.find("llvmpipe") == std::string::npos) GTEST_SKIP() << "not lavapipe: " << info.name;
+  EXPECT_TRUE(test::division_is_correctly_rounded());
 }
 
 }  // namespace
