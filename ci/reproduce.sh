@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# The README's main command: install what is missing, build, record the paper's two captures
-# (atrium = Table 1, conference = Table 2) if they are not there yet, and show the devices.
-# Extra arguments go to `vsgl-bench record` (e.g. --device NAME).
+# The README's main command: install what is missing, build, then reproduce Tables 1 and 2 on the
+# default device (a real GPU when present, lavapipe otherwise). `vsgl-bench tables` records the
+# paper's captures first if they are missing (atrium = Table 1, conference = Table 2), prints the
+# tables beside the paper's numbers and writes them to results/<device>/.
+# Extra arguments go to `vsgl-bench tables` (e.g. --device NAME, --repetitions 30).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash ci/install-deps.sh
@@ -9,10 +11,4 @@ cmake --preset release
 cmake --build --preset release
 bin=build/release/bench/vsgl-bench
 "$bin" devices
-for scene in atrium conference; do
-  if [[ -f "captures/$scene/capture.json" ]]; then
-    echo "captures/$scene exists (delete it to record again)"
-  else
-    "$bin" record --scene "$scene" --out "captures/$scene" "$@"
-  fi
-done
+"$bin" tables "$@"
