@@ -4,6 +4,7 @@
 #include <cstring>
 #include <exception>
 #include <string>
+#include <vector>
 
 #include "bench/cli/commands.hpp"
 #include "harness/error.hpp"
@@ -47,6 +48,7 @@ commands:
       --clocks-locked         record that you locked the GPU clocks (Vulkan cannot)
       --paper FILE, --schema FILE   [results/paper/paper_tables.json, results/schema/table.schema.json]
       --no-progress           no progress line (it is off anyway when stderr is not a terminal)
+      --debug-slow G[,G]      TEST-ONLY: extra work in G's last phase (to test `compare`; marked in the JSON)
 
   verify  --capture DIR        check every FIS pass against its CPU reference on this device
                               (SPEC §11): one line per check, measured error <= tolerance
@@ -60,6 +62,39 @@ commands:
       --stride K              shade every K-th G-buffer pixel (K > 1: a quick preview)  [1]
       --exposure E            linear scale before the sRGB curve   [auto: 99th pct. -> 0.8]
       --out DIR               output directory                        [.]
+
+  quality --capture DIR       the paper's quality claims as numbers (Fig. 1, 5, 6): kernel gaps and
+                              overlaps, too-bright VSGLs, power, flicker, K sweep, error against a VPL
+                              reference; writes OUT/<scene>/quality.json, quality.md and PNGs
+      --frames F              static-scene frames (only the lattice offset changes)  [32]
+      --sequence DIR          also the flicker over a recorded sequence (record --frames F)  [none]
+      --generators G[,G]      [fis_tok15,fis_modified,kmeans_2d,kmeans_3d]
+      --k-sweep K[,K]         K values of the Fig. 6 sweep (FIS generators)          [1,2,4,8]
+      --error-stride K        G-buffer stride of the reference comparison            [4]
+      --flicker-width W       width of the flicker images (G-buffer stride W_gbuf/W) [120]
+      --reference-rsm R       reference RSM side (every lit texel a VPL)              [128]
+      --sequence-reference-rsm R   the same for each sequence frame                  [64]
+      --light-vsgls N, --camera-vsgls N, --K K, --kmeans-iterations I   [1024, 2048, 1, 4]
+      --out DIR               output root                                [results/quality]
+
+  compare BASE NEW            a verdict per row (phase, view and generator totals): FASTER, SLOWER, SAME or
+                              AMBIGUOUS from the raw samples (Mann-Whitney U test + minimum change), as a
+                              markdown report; BASE/NEW: table JSON, a directory of table*.json, or
+                              vsgl-gbench JSON made with --benchmark_repetitions=R (R >= 5)
+      --alpha A               significance level of the U test                     [0.05]
+      --min-change X          smallest relevant change of the median (0.02 or 2%)  [2%]
+      --min-samples S         fewer samples on a side: AMBIGUOUS                   [5]
+      --fail-on V[,V]         exit 1 when a row is slower / ambiguous / faster     [none]
+      --allow-mismatch        compare runs on different captures or configs (labelled)
+      --out FILE              also write the report
+      exit: 0 ok · 1 a verdict in --fail-on (regression) · 2 error (input, mismatch, usage)
+
+  export  --format gab|bmf RUN [RUN...] --out FILE   medians and quartiles for dashboards:
+                              github-action-benchmark customSmallerIsBetter, or Bencher Metric Format
+
+  dashboard RESULTS_DIR --out DIR   DIR/index.html: self-contained page with inline SVG charts of
+                              every table JSON under RESULTS_DIR beside the paper's numbers
+      --paper FILE            [results/paper/paper_tables.json]
 
 options of every GPU command:
   --device D                  device index or case-insensitive name substring (see `devices`)
@@ -87,11 +122,16 @@ int dispatch(int argc, char** argv) {
     std::fputs(kUsage, stdout);
     return 0;
   }
+  const std::vector<std::string> tokens(argv + 2, argv + argc);
+  if (command == "compare") return vsgl::cli::run_compare(tokens);
+  if (command == "export") return vsgl::cli::run_export(tokens);
+  if (command == "dashboard") return vsgl::cli::run_dashboard(tokens);
   if (command == "devices") return vsgl::cli::run_devices(args);
   if (command == "record") return vsgl::cli::run_record(args);
   if (command == "tables") return vsgl::cli::run_tables(args);
   if (command == "verify") return vsgl::cli::run_verify(args);
   if (command == "shade") return vsgl::cli::run_shade(args);
+  if (command == "quality") return vsgl::cli::run_quality(args);
   throw vsgl::UsageError("unknown command '" + command + "'");
 }
 

@@ -12,6 +12,7 @@ packages=(
   nlohmann-json3-dev libglm-dev           # JSON, vector maths
   libopenexr-dev                          # EXR captures
   libstb-dev                              # PNG output of the shading pass
+  chromium                                # headless browser: the dashboard test renders results/dashboard
 )
 
 if ! command -v dpkg-query >/dev/null 2>&1 || ! command -v apt-get >/dev/null 2>&1; then

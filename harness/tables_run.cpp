@@ -14,6 +14,7 @@
 #include "harness/device_view.hpp"
 #include "harness/error.hpp"
 #include "harness/json_schema_subset.hpp"
+#include "harness/regression_debug_slow.hpp"
 #include "harness/run_provenance.hpp"
 #include "harness/table_markdown.hpp"
 #include "harness/table_report.hpp"
@@ -47,6 +48,8 @@ void check_options(const TablesOptions& o) {
     if (std::find(known.begin(), known.end(), g) == known.end()) generator_sources(g);  // throws naming the known ones
     if (!gens.insert(g).second) throw UsageError("generator " + g + " is asked for twice");
   }
+  for (const auto& g : o.debug_slow)
+    if (!gens.contains(g)) throw UsageError("--debug-slow " + g + ": not one of the generators timed");
   if (o.camera_vsgls == 0 || o.light_vsgls == 0) throw InputError("N = 0: at least one VSGL is needed");
   o.timing.check();
 }
@@ -125,6 +128,7 @@ TablesOutcome run_tables(Device& device, const TablesOptions& o, const std::func
                   {"clocks_locked_claimed", o.clocks_locked},
                   {"clocks_note", "Vulkan cannot lock GPU clocks: lock them outside (e.g. `nvidia-smi -lgc <MHz>` on "
                                   "NVIDIA, `rocm-smi --setperfdeterminism <MHz>` on AMD) and pass --clocks-locked"}};
+  if (!o.debug_slow.empty()) ctx.run["debug_slow"] = o.debug_slow;  // TEST-ONLY: these timings are inflated
   for (const auto& g : generator_names()) ctx.lines[g] = count_generator_lines(generator_sources(g), o.source_dir);
   for (const auto& g : o.generators) ctx.shaders[g] = static_cast<uint32_t>(generator_sources(g).kernels.size());
 
@@ -158,6 +162,8 @@ TablesOutcome run_tables(Device& device, const TablesOptions& o, const std::func
         GeneratorConfig cfg = o.generator;
         cfg.vsgl_count = view->kind == ViewKind::kCamera ? o.camera_vsgls : o.light_vsgls;
         generators.push_back(make_generator(g, device, *view, cfg));
+        if (std::find(o.debug_slow.begin(), o.debug_slow.end(), g) != o.debug_slow.end())  // TEST-ONLY
+          generators.back() = with_debug_slowdown(device, std::move(generators.back()), DebugSlowWork::for_device(device.info()));
         runner.add(TimingCase{g, view_name(view->kind), generators.back().get()});
       }
     say(number, "timing table " + std::to_string(number) + " (" + t.scene + "): " + std::to_string(generators.size()) +

@@ -35,6 +35,9 @@ struct TablesOptions {
   bool quick = false;           // recorded in the JSON: a CI preset, not the SPEC §9 protocol
   bool validation = false;      // recorded in the JSON
   bool clocks_locked = false;   // the user claims locked clocks (recorded, not checked)
+  // TEST-ONLY (harness/regression_debug_slow.hpp): generators whose last phase gets extra work, so
+  // that `compare` can be tested; recorded in the JSON as run.debug_slow.
+  std::vector<std::string> debug_slow;
 };
 
 // Scene and capture sub-directory of a paper table; throws UsageError for a table other than 1, 2.
