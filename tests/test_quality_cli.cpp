@@ -1,0 +1,61 @@
+// `vsgl-bench quality` as a user runs it: usage and input errors exit with their codes, and a run on
+// a recorded tiny capture (plus a 3-frame sequence) writes quality.json (schema, capture hashes,
+// claims with verdicts), quality.md and the pictures.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.hpp"
+
+namespace vsgl {
+namespace {
+
+TEST(QualityCli, UsageAndInputErrors) {
+  auto r = test::run_cli("quality");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("--capture"), std::string::npos) << r.output;
+  r = test::run_cli("quality --capture x --k-sweep 1,0");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  r = test::run_cli("quality --capture /nonexistent/vsgl_capture");
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+}
+
+TEST(QualityCli, TinyCaptureWritesJsonMarkdownAndPictures) {
+  const auto root = std::filesystem::temp_directory_path() / ("vsgl_quality_cli_" + std::to_string(getpid()));
+  std::filesystem::remove_all(root);
+  const std::string sizes = " --gbuffer 96x64 --rsm 64";
+  auto r = test::run_cli("record --scene tiny" + sizes + " --out " + (root / "cap").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  r = test::run_cli("record --scene tiny --frames 3" + sizes + " --out " + (root / "seq").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  r = test::run_cli("quality --capture " + (root / "cap").string() + " --sequence " + (root / "seq").string() +
+                    " --frames 3 --generators fis_tok15,fis_modified --k-sweep 1,4 --error-stride 2 --flicker-width 48"
+                    " --reference-rsm 32 --sequence-reference-rsm 16 --light-vsgls 128 --camera-vsgls 256 --out " +
+                    (root / "out").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto dir = root / "out" / "tiny";
+  for (const char* f : {"quality.json", "quality.md", "tiny_renders.png", "tiny_k_sweep.png",
+                        "tiny_coverage_light_view_fis_tok15.png", "tiny_coverage_camera_view_fis_modified.png"})
+    EXPECT_TRUE(std::filesystem::exists(dir / f)) << f;
+  std::ifstream in(dir / "quality.json");
+  const auto j = nlohmann::json::parse(in);
+  EXPECT_EQ(j["schema"], "vsgl-quality");
+  EXPECT_EQ(j["schema_version"], 1);
+  EXPECT_TRUE(j["capture"]["hashes"]["rsm"].contains("pdf")) << j["capture"]["hashes"].dump();
+  EXPECT_EQ(j["flicker_static"]["generators"]["fis_modified"]["frames"], 3);
+  EXPECT_EQ(j["flicker_animated"]["frames"], 3);
+  EXPECT_EQ(j["k_sweep"]["fis_tok15"].size(), 2u);
+  ASSERT_GE(j["claims"].size(), 6u);
+  for (const auto& c : j["claims"]) EXPECT_TRUE(c.contains("verdict")) << c.dump();
+  const double power = j["views"]["light_view"]["generators"]["fis_modified"]["power"]["power_ratio"];
+  EXPECT_GT(power, 0.5);
+  EXPECT_LT(power, 1.5);
+  std::filesystem::remove_all(root);
+}
+
+}  // namespace
+}  // namespace vsgl
