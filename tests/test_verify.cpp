@@ -9,6 +9,7 @@
 #include "harness/brsm_pdf.hpp"
 #include "harness/capture_recorder.hpp"
 #include "harness/fis_verification.hpp"
+#include "harness/kmeans_verification.hpp"
 #include "harness/scene.hpp"
 
 namespace vsgl {
@@ -40,9 +41,21 @@ TEST_F(VerifyTest, EveryCheckPassesOnASmallCapture) {
   expect_all_pass(verify_fis(device(), c, config), kChecks);
 }
 
+// 2 views x 2 generators x 5 checks.
+constexpr std::size_t kKmeansChecks = 2 * 2 * 5;
+
+TEST_F(VerifyTest, EveryKmeansCheckPassesOnASmallCapture) {
+  const Capture c = record("tiny", {96, 64, 64});
+  VerifyConfig config;
+  config.camera_vsgls = 256;
+  config.light_vsgls = 128;
+  expect_all_pass(verify_kmeans(device(), c, config, 1), kKmeansChecks);
+}
+
 TEST_F(VerifyTest, EveryCheckPassesOnTheFullSizeAtrium) {
   const Capture c = record("atrium", {1920, 1088, 512});
   expect_all_pass(verify_fis(device(), c, VerifyConfig{}), kChecks);
+  expect_all_pass(verify_kmeans(device(), c, VerifyConfig{}), kKmeansChecks);
 }
 
 TEST(VerifyCli, MissingCaptureIsBadInputNamingThePath) {

@@ -1,4 +1,5 @@
-// `vsgl-bench verify --capture DIR`: the correctness run (SPEC §11) a user does on their own GPU.
+// `vsgl-bench verify --capture DIR`: the correctness run (SPEC §11) a user does on their own GPU:
+// the FIS generators pass by pass, then the k-means generators step by step.
 // One line per check with its measured error and tolerance; exit 1 if any check fails.
 #include <cstdio>
 #include <nlohmann/json.hpp>
@@ -8,6 +9,7 @@
 #include "harness/atomic_file.hpp"
 #include "harness/error.hpp"
 #include "harness/fis_verification.hpp"
+#include "harness/kmeans_verification.hpp"
 
 namespace vsgl::cli {
 
@@ -25,7 +27,9 @@ int run_verify(Args& args) {
   const Capture capture = load_capture(*capture_dir);
   std::printf("verify %s (scene %s) on %s\n", capture_dir->c_str(), capture.meta.scene.c_str(),
               session.device().info().name.c_str());
-  const auto results = verify_fis(session.device(), capture, config);
+  auto results = verify_fis(session.device(), capture, config);
+  const auto kmeans = verify_kmeans(session.device(), capture, config);
+  results.insert(results.end(), kmeans.begin(), kmeans.end());
   uint32_t failed = 0;
   for (const auto& r : results) {
     std::printf("%s\n", format_check(r).c_str());
