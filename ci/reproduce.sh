@@ -8,7 +8,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash ci/install-deps.sh
 cmake --preset release
-cmake --build --preset release
+cmake --build --preset release --target vsgl-bench   # the tests are ci/test.sh's job
 bin=build/release/bench/vsgl-bench
 "$bin" devices
 "$bin" tables "$@"
