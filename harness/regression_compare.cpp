@@ -122,9 +122,11 @@ std::string comparison_markdown(const BenchRun& base, const BenchRun& fresh, con
        << "): the verdicts compare the devices, not a code change.\n";
   for (const auto& m : c.mismatches) os << "- **Mismatch allowed** (--allow-mismatch): " << m << "\n";
   os << "- Verdict per row from the raw samples: two-sided Mann–Whitney U test at α = " << options.verdict.alpha
-     << ", minimum relevant change of the median " << options.verdict.min_change * 100.0 << " %, at least "
+     << ", minimum relevant change of the median " << options.verdict.min_change * 100.0 << " %, noise factor "
+     << options.verdict.noise_factor << " x the larger relative IQR of the two runs, at least "
      << options.verdict.min_samples << " samples per side. SAME: the median moved less than the minimum; "
-     << "FASTER/SLOWER: it moved more and p < α; AMBIGUOUS: too few samples, or it moved but p ≥ α.\n\n";
+     << "FASTER/SLOWER: it moved more than both the minimum and the noise, and p < α; AMBIGUOUS: too few "
+     << "samples, a move within the runs' noise, or p ≥ α.\n\n";
 
   os << "| benchmark | BASE median (ms) | NEW median (ms) | change | p | n (BASE/NEW) | verdict |\n";
   os << "|---|---:|---:|---:|---:|---:|---|\n";

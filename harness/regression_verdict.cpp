@@ -9,10 +9,21 @@
 
 namespace vsgl {
 namespace {
+// Quantile by linear interpolation between order statistics (type 7, as harness/statistics).
+double quantile(const std::vector<double>& sorted, double q) {
+  const double h = (static_cast<double>(sorted.size()) - 1.0) * q;
+  const std::size_t lo = static_cast<std::size_t>(std::floor(h));
+  const std::size_t hi = std::min(lo + 1, sorted.size() - 1);
+  return sorted[lo] + (h - static_cast<double>(lo)) * (sorted[hi] - sorted[lo]);
+}
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+  return quantile(v, 0.5);
+}
+double relative_iqr(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const double m = quantile(v, 0.5);
+  return m > 0 ? (quantile(v, 0.75) - quantile(v, 0.25)) / m : 0.0;
 }
 }  // namespace
 
@@ -35,6 +46,8 @@ Comparison compare_samples(const std::vector<double>& base, const std::vector<do
   if (!(c.base_median > 0)) throw std::invalid_argument("the base median is not a positive time");
   c.change = c.new_median / c.base_median - 1.0;
   c.p_value = mann_whitney_u(base, fresh).p_value;
+  c.threshold = std::max(config.min_change,
+                         config.noise_factor * std::max(relative_iqr(base), relative_iqr(fresh)));
   std::ostringstream why;
   if (base.size() < config.min_samples || fresh.size() < config.min_samples) {
     c.verdict = Verdict::kAmbiguous;
@@ -42,6 +55,9 @@ Comparison compare_samples(const std::vector<double>& base, const std::vector<do
   } else if (std::abs(c.change) < config.min_change) {
     c.verdict = Verdict::kSame;
     why << "median moved less than " << config.min_change * 100 << " %";
+  } else if (std::abs(c.change) < c.threshold) {
+    c.verdict = Verdict::kAmbiguous;
+    why << "median moved less than the runs' own spread (relative IQR " << c.threshold * 100 << " %)";
   } else if (c.p_value < config.alpha) {
     c.verdict = c.change < 0 ? Verdict::kFaster : Verdict::kSlower;
     why << "p = " << c.p_value << " < " << config.alpha;

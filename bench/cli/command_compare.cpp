@@ -64,12 +64,17 @@ double fraction(Args& args, const std::string& name, double fallback, bool open_
 
 int run_compare(std::vector<std::string> tokens) {
   const std::vector<std::string> files =
-      take_positionals(tokens, {"--alpha", "--min-change", "--min-samples", "--fail-on", "--out"});
+      take_positionals(tokens, {"--alpha", "--min-change", "--noise-factor", "--min-samples", "--fail-on", "--out"});
   Args args(tokens);
   CompareOptions options;
   options.verdict.alpha = fraction(args, "--alpha", 0.05, true);
   // --min-change 0.02 or 2%: the relative change of the median below which nothing matters.
   options.verdict.min_change = fraction(args, "--min-change", 0.02, false, true);
+  // --noise-factor F: a change must also exceed F x the runs' relative IQR (0 = off).
+  if (const auto f = args.value("--noise-factor")) {
+    Args one(std::vector<std::string>{"--noise-factor", *f});
+    options.verdict.noise_factor = *f == "0" ? 0.0 : double{one.positive_float("--noise-factor", 1.0f)};
+  }
   options.verdict.min_samples = args.u32("--min-samples", 5, 2);
   options.allow_mismatch = args.flag("--allow-mismatch");
   const std::vector<Verdict> fail_on = parse_fail_on(args.string("--fail-on", "none"));
