@@ -1,6 +1,8 @@
 #include "harness/check_result.hpp"
 
 #include <cstdio>
+#include <iomanip>
+#include <sstream>
 #include <nlohmann/json.hpp>
 
 namespace vsgl {
@@ -16,6 +18,12 @@ nlohmann::json to_json(const CheckResult& r) {
   return {{"view", r.view},         {"generator", r.generator}, {"check", r.check},
           {"measured", r.measured}, {"tolerance", r.tolerance}, {"passed", r.passed()},
           {"detail", r.detail}};
+}
+
+std::string check_number(double value, int digits) {
+  std::ostringstream os;
+  os << std::setprecision(digits) << value;
+  return os.str();
 }
 
 bool all_passed(const std::vector<CheckResult>& results) {

@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iomanip>
-#include <sstream>
 
 #include "harness/command_stream.hpp"
 #include "harness/device.hpp"
@@ -18,12 +16,7 @@ namespace {
 // (a GPU's division need not be correctly rounded); such samples are excused and counted.
 constexpr float kTieMargin = 1e-5f;
 
-// A number for a check's detail line, with `digits` significant digits.
-std::string num(double v, int digits = 3) {
-  std::ostringstream os;
-  os << std::setprecision(digits) << v;
-  return os.str();
-}
+std::string num(double v, int digits = 3) { return check_number(v, digits); }
 
 struct GpuRun {
   std::array<MipPyramid, 3> pyramid;  // as computed on the device

@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iomanip>
-#include <sstream>
 
 #include "harness/command_stream.hpp"
 #include "harness/device.hpp"
@@ -14,11 +12,7 @@
 namespace vsgl {
 namespace {
 
-std::string num(double v, int digits = 3) {
-  std::ostringstream os;
-  os << std::setprecision(digits) << v;
-  return os.str();
-}
+std::string num(double v, int digits = 3) { return check_number(v, digits); }
 
 struct DeviceClusters {
   std::vector<glm::vec4> centres;

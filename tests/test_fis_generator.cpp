@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "gpu_test.hpp"
+#include "tiny_capture.hpp"
 #include "harness/capture_recorder.hpp"
 #include "harness/command_stream.hpp"
 #include "harness/device_view.hpp"
@@ -19,16 +20,7 @@ namespace {
 
 class FisGeneratorTest : public test::GpuTest {
  protected:
-  // The tiny scene; the light view gets a stand-in PDF (its flux) until the BRSM PDF exists.
-  Capture tiny_capture() {
-    CaptureRecorder recorder(device());
-    Capture c = recorder.record(make_scene("tiny"), RecordSizes{96, 64, 64}, 0, 1);
-    ViewImage& rsm = c.rsm;
-    for (std::size_t i = 0; i < rsm.texels(); ++i)
-      rsm.planes[kPdf][i] = rsm.planes[kDR][i] + rsm.planes[kDG][i] + rsm.planes[kDB][i];
-    rsm.has_pdf = true;
-    return c;
-  }
+  Capture tiny_capture() { return test::record_tiny_with_flux_pdf(device()); }
 
   void run(FisGenerator& gen) {
     device().submit_and_wait([&](VkCommandBuffer cmd) {

@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "gpu_test.hpp"
+#include "tiny_capture.hpp"
 #include "harness/capture_recorder.hpp"
 #include "harness/command_stream.hpp"
 #include "harness/device_view.hpp"
@@ -38,17 +39,9 @@ double float_sum_tolerance(double sum_of_abs, std::size_t terms) {
 
 class KmeansGeneratorTest : public test::GpuTest {
  protected:
-  // The tiny scene; the light view gets a stand-in PDF (its flux) until the BRSM PDF exists.
+  // Recorded once for the whole suite.
   static const Capture& tiny_capture(Device& device) {
-    static const Capture capture = [&] {
-      CaptureRecorder recorder(device);
-      Capture c = recorder.record(make_scene("tiny"), RecordSizes{96, 64, 64}, 0, 1);
-      ViewImage& rsm = c.rsm;
-      for (std::size_t i = 0; i < rsm.texels(); ++i)
-        rsm.planes[kPdf][i] = rsm.planes[kDR][i] + rsm.planes[kDG][i] + rsm.planes[kDB][i];
-      rsm.has_pdf = true;
-      return c;
-    }();
+    static const Capture capture = test::record_tiny_with_flux_pdf(device);
     return capture;
   }
   const Capture& tiny() { return tiny_capture(device()); }
