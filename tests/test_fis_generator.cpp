@@ -7,13 +7,11 @@
 
 #include "gpu_test.hpp"
 #include "tiny_capture.hpp"
-#include "harness/capture_recorder.hpp"
 #include "harness/command_stream.hpp"
 #include "harness/device_view.hpp"
 #include "harness/error.hpp"
 #include "harness/fis_generator.hpp"
 #include "harness/fis_reference.hpp"
-#include "harness/scene.hpp"
 
 namespace vsgl {
 namespace {
