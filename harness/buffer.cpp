@@ -1,7 +1,6 @@
 #include "harness/buffer.hpp"
 
 #include <cstring>
-#include <sstream>
 
 #include "harness/device.hpp"
 #include "harness/error.hpp"
@@ -46,25 +45,13 @@ Buffer::Buffer(Device& device, VkDeviceSize size, MemoryUsage usage, const std::
 
   VkMemoryRequirements req{};
   vkGetBufferMemoryRequirements(device_, buffer, &req);
-  VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-  alloc.allocationSize = req.size;
   if (usage == MemoryUsage::kDeviceLocal)
-    alloc.memoryTypeIndex = device.memory_type(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    memory_ = device.allocate_memory(req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, 0, "buffer " + name);
   else
-    alloc.memoryTypeIndex = device.memory_type(
-        req.memoryTypeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
-        usage == MemoryUsage::kReadback ? VK_MEMORY_PROPERTY_HOST_CACHED_BIT : 0);
-  VkDeviceMemory memory = VK_NULL_HANDLE;
-  const VkResult r = vkAllocateMemory(device_, &alloc, nullptr, &memory);
-  if (r == VK_ERROR_OUT_OF_DEVICE_MEMORY || r == VK_ERROR_OUT_OF_HOST_MEMORY) {
-    std::ostringstream os;
-    os << "out of device memory allocating buffer '" << name << "' (" << (static_cast<double>(req.size) / (1 << 20))
-       << " MiB) on " << device.info().name;
-    throw DeviceError(os.str());
-  }
-  VK_CHECK(r);
-  memory_ = UniqueHandle<VkDeviceMemory>(device_, memory, vkFreeMemory);
-  device.set_name(memory, VK_OBJECT_TYPE_DEVICE_MEMORY, name + ".memory");
+    memory_ = device.allocate_memory(req, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
+                                     usage == MemoryUsage::kReadback ? VK_MEMORY_PROPERTY_HOST_CACHED_BIT : 0,
+                                     "buffer " + name);
+  VkDeviceMemory memory = memory_.get();
   VK_CHECK(vkBindBufferMemory(device_, buffer, memory, 0));
   if (usage != MemoryUsage::kDeviceLocal) VK_CHECK(vkMapMemory(device_, memory, 0, VK_WHOLE_SIZE, 0, &mapped_));
 }

@@ -1,5 +1,7 @@
 #include "harness/device.hpp"
 
+#include <sstream>
+
 #include "harness/error.hpp"
 #include "harness/vk_check.hpp"
 
@@ -56,6 +58,24 @@ uint32_t Device::memory_type(uint32_t type_bits, VkMemoryPropertyFlags required,
   }
   if (fallback < 0) throw DeviceError("device " + info_.name + " has no memory type with the required properties");
   return static_cast<uint32_t>(fallback);
+}
+
+UniqueHandle<VkDeviceMemory> Device::allocate_memory(const VkMemoryRequirements& req, VkMemoryPropertyFlags required,
+                                                     VkMemoryPropertyFlags preferred, const std::string& what) {
+  VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+  alloc.allocationSize = req.size;
+  alloc.memoryTypeIndex = memory_type(req.memoryTypeBits, required, preferred);
+  VkDeviceMemory memory = VK_NULL_HANDLE;
+  const VkResult r = vkAllocateMemory(device_, &alloc, nullptr, &memory);
+  if (r == VK_ERROR_OUT_OF_DEVICE_MEMORY || r == VK_ERROR_OUT_OF_HOST_MEMORY) {
+    std::ostringstream os;
+    os << "out of device memory allocating '" << what << "' (" << (static_cast<double>(req.size) / (1 << 20))
+       << " MiB) on " << info_.name;
+    throw DeviceError(os.str());
+  }
+  VK_CHECK(r);
+  set_name(memory, VK_OBJECT_TYPE_DEVICE_MEMORY, what + ".memory");
+  return UniqueHandle<VkDeviceMemory>(device_, memory, vkFreeMemory);
 }
 
 VkCommandBuffer Device::allocate_command_buffer(const std::string& name) {

@@ -10,6 +10,7 @@
 
 #include "harness/device_info.hpp"
 #include "harness/instance.hpp"
+#include "harness/unique_handle.hpp"
 
 namespace vsgl {
 
@@ -35,6 +36,10 @@ class Device {
 
   // Index of a memory type allowed by `type_bits` having `required` flags, preferring `preferred`.
   uint32_t memory_type(uint32_t type_bits, VkMemoryPropertyFlags required, VkMemoryPropertyFlags preferred = 0) const;
+  // Memory for a resource with requirements `req`, from such a type, named "<what>.memory".
+  // Running out of memory is a DeviceError naming `what` and the size, not a bare VkResult.
+  UniqueHandle<VkDeviceMemory> allocate_memory(const VkMemoryRequirements& req, VkMemoryPropertyFlags required,
+                                               VkMemoryPropertyFlags preferred, const std::string& what);
 
   // Records one-shot work into a fresh primary command buffer, submits it and waits for it.
   void submit_and_wait(const std::function<void(VkCommandBuffer)>& record, const std::string& what = "one-shot work");

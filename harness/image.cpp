@@ -1,7 +1,6 @@
 #include "harness/image.hpp"
 
 #include "harness/device.hpp"
-#include "harness/error.hpp"
 #include "harness/vk_check.hpp"
 
 namespace vsgl {
@@ -28,16 +27,8 @@ Image2D::Image2D(Device& device, uint32_t width, uint32_t height, VkFormat forma
 
   VkMemoryRequirements req{};
   vkGetImageMemoryRequirements(dev, image, &req);
-  VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-  alloc.allocationSize = req.size;
-  alloc.memoryTypeIndex = device.memory_type(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-  VkDeviceMemory memory = VK_NULL_HANDLE;
-  const VkResult r = vkAllocateMemory(dev, &alloc, nullptr, &memory);
-  if (r == VK_ERROR_OUT_OF_DEVICE_MEMORY || r == VK_ERROR_OUT_OF_HOST_MEMORY)
-    throw DeviceError("out of device memory allocating image '" + name + "' (" + std::to_string(width) + "x" +
-                      std::to_string(height) + ")");
-  VK_CHECK(r);
-  memory_ = UniqueHandle<VkDeviceMemory>(dev, memory, vkFreeMemory);
+  memory_ = device.allocate_memory(req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, 0, "image " + name);
+  VkDeviceMemory memory = memory_.get();
   VK_CHECK(vkBindImageMemory(dev, image, memory, 0));
 
   VkImageViewCreateInfo view_info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
