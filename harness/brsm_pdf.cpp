@@ -81,7 +81,7 @@ BrsmBuild build_brsm_pdf(Device& device, Capture& capture, uint32_t camera_vsgls
           timestamps->reset(cmd);
           timestamps->write(cmd);
         }
-        camera_fis.record(stream, [&](VkCommandBuffer) { stream.full_barrier(); });
+        record_untimed(camera_fis, stream);
         const BrsmPush push{rsm.width, rsm.height, params.vsgl_count, 0, glm::vec4(capture.meta.light.position, 1.0f)};
         stream.dispatch(pipeline, set, push, div_up(rsm.width, 16), div_up(rsm.height, 16));
         if (timestamps) timestamps->write(cmd);

@@ -25,10 +25,7 @@ struct GpuRun {
 
 GpuRun run_on_device(Device& device, const DeviceView& view, FisVariant variant, const FisParams& params) {
   FisGenerator gen(device, view, variant, params);
-  device.submit_and_wait([&](VkCommandBuffer cmd) {
-    CommandStream stream(cmd);
-    gen.record(stream, [&](VkCommandBuffer) { stream.full_barrier(); });
-  });
+  run_untimed(device, gen);
   const VirtualSquare& sq = view.square;
   const auto all = download_vector<glm::vec4>(device, gen.pyramid(), 3 * std::size_t{sq.total_texels()});
   GpuRun run;

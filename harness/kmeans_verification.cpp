@@ -23,10 +23,7 @@ struct DeviceClusters {
 
 DeviceClusters run_on_device(Device& device, const DeviceView& view, KmeansSpace space, const KmeansParams& params) {
   KmeansGenerator gen(device, view, space, params);
-  device.submit_and_wait([&](VkCommandBuffer cmd) {
-    CommandStream stream(cmd);
-    gen.record(stream, [&](VkCommandBuffer) { stream.full_barrier(); });
-  });
+  run_untimed(device, gen);
   const std::size_t texels = view.square.level_texels(0);
   const uint32_t N = params.vsgl_count;
   DeviceClusters out;

@@ -63,12 +63,7 @@ GeneratorRun run_generator(Device& device, const DeviceView& view, const std::st
   gc.offset_bits = offset_bits;
   GeneratorRun run;
   run.generator = make_generator(name, device, view, gc);
-  device.submit_and_wait(
-      [&](VkCommandBuffer cmd) {
-        CommandStream stream(cmd);
-        run.generator->record(stream, [&](VkCommandBuffer) { stream.full_barrier(); });
-      },
-      name);
+  run_untimed(device, *run.generator);
   run.vsgls = download_vector<VsglRecord>(device, run.generator->vsgls(), run.generator->vsgl_count());
   return run;
 }

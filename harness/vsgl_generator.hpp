@@ -12,6 +12,7 @@ namespace vsgl {
 
 class Buffer;
 class CommandStream;
+class Device;
 
 class VsglGenerator {
  public:
@@ -24,5 +25,11 @@ class VsglGenerator {
   virtual const Buffer& vsgls() const = 0;
   virtual uint32_t vsgl_count() const = 0;
 };
+
+// The untimed run (correctness checks, verify, shading, the BRSM PDF): every phase recorded with
+// a full barrier at each boundary, where a timed run writes a timestamp.
+void record_untimed(VsglGenerator& generator, CommandStream& stream);
+// The same, submitted on its own and waited for.
+void run_untimed(Device& device, VsglGenerator& generator);
 
 }  // namespace vsgl

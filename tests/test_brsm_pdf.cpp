@@ -29,10 +29,7 @@ class BrsmPdfTest : public test::GpuTest {
     FisParams p;
     p.vsgl_count = n;
     FisGenerator gen(device(), view, FisVariant::kModified, p);
-    device().submit_and_wait([&](VkCommandBuffer cmd) {
-      CommandStream s(cmd);
-      gen.record(s, [&](VkCommandBuffer) { s.full_barrier(); });
-    });
+    run_untimed(device(), gen);
     return download_vector<VsglRecord>(device(), gen.vsgls(), n);
   }
 };

@@ -20,12 +20,7 @@ class FisGeneratorTest : public test::GpuTest {
  protected:
   Capture tiny_capture() { return test::record_tiny_with_flux_pdf(device()); }
 
-  void run(FisGenerator& gen) {
-    device().submit_and_wait([&](VkCommandBuffer cmd) {
-      CommandStream stream(cmd);
-      gen.record(stream, [&](VkCommandBuffer) { stream.full_barrier(); });
-    });
-  }
+  void run(FisGenerator& gen) { run_untimed(device(), gen); }
 
   std::array<MipPyramid, 3> download_pyramids(const FisGenerator& gen, const VirtualSquare& sq) {
     const auto all = download_vector<glm::vec4>(device(), gen.pyramid(), 3 * sq.total_texels());

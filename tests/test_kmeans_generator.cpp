@@ -48,10 +48,7 @@ class KmeansGeneratorTest : public test::GpuTest {
 
   GpuResult run(const DeviceView& view, KmeansSpace space, const KmeansParams& params) {
     KmeansGenerator gen(device(), view, space, params);
-    device().submit_and_wait([&](VkCommandBuffer cmd) {
-      CommandStream stream(cmd);
-      gen.record(stream, [&](VkCommandBuffer) { stream.full_barrier(); });
-    });
+    run_untimed(device(), gen);
     const std::size_t n = std::size_t{view.square.width} * view.square.height;
     const uint32_t N = params.vsgl_count;
     GpuResult r;

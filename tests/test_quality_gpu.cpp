@@ -33,12 +33,7 @@ class QualityGpuTest : public test::GpuTest {
     }();
     return c;
   }
-  void run(VsglGenerator& g) {
-    device().submit_and_wait([&](VkCommandBuffer cmd) {
-      CommandStream s(cmd);
-      g.record(s, [&](VkCommandBuffer) { s.full_barrier(); });
-    });
-  }
+  void run(VsglGenerator& g) { run_untimed(device(), g); }
   double power(VsglGenerator& g) {
     double sum = 0;
     for (const auto& v : download_vector<VsglRecord>(device(), g.vsgls(), g.vsgl_count()))

@@ -48,10 +48,7 @@ TEST_F(ShadingPassTest, MatchesTheCpuTwinAndBlackWhereNoGeometry) {
   FisParams params;
   params.vsgl_count = 256;
   FisGenerator gen(device(), light, FisVariant::kModified, params);
-  device().submit_and_wait([&](VkCommandBuffer cmd) {
-    CommandStream s(cmd);
-    gen.record(s, [&](VkCommandBuffer) { s.full_barrier(); });
-  });
+  run_untimed(device(), gen);
   const auto vsgls = download_vector<VsglRecord>(device(), gen.vsgls(), params.vsgl_count);
 
   const RadianceImage full = shade_camera_view(device(), camera, gen.vsgls(), params.vsgl_count, 1);

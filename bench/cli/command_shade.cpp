@@ -55,15 +55,6 @@ const LightGenerator& find_generator(const std::string& name) {
   throw UsageError("--generators: unknown generator '" + name + "' (known: " + known + ")");
 }
 
-void run_generator(Device& device, VsglGenerator& generator) {
-  device.submit_and_wait(
-      [&](VkCommandBuffer cmd) {
-        CommandStream stream(cmd);
-        generator.record(stream, [&](VkCommandBuffer) { stream.full_barrier(); });
-      },
-      generator.name());
-}
-
 }  // namespace
 
 int run_shade(Args& args) {
@@ -89,7 +80,7 @@ int run_shade(Args& args) {
   std::vector<RadianceImage> images;
   for (const LightGenerator* g : generators) {
     auto generator = g->make(device, light, vsgl_count);
-    run_generator(device, *generator);
+    run_untimed(device, *generator);
     images.push_back(shade_camera_view(device, camera, generator->vsgls(), generator->vsgl_count(), stride));
   }
   const bool auto_exposed = exposure == 0.0f;
