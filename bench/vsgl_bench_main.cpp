@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "bench/cli/commands.hpp"
-#include "harness/error.hpp"
-#include "harness/version.hpp"
-#include "harness/vk_check.hpp"
+#include "bench/cli/exit_codes.hpp"
+#include "harness/core/error.hpp"
+#include "harness/core/version.hpp"
 
 namespace {
 
@@ -138,23 +138,5 @@ int dispatch(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  using vsgl::ExitCode;
-  try {
-    return dispatch(argc, argv);
-  } catch (const vsgl::UsageError& e) {
-    std::fprintf(stderr, "vsgl-bench: %s (see vsgl-bench --help)\n", e.what());
-    return static_cast<int>(ExitCode::kUsage);
-  } catch (const vsgl::InputError& e) {
-    std::fprintf(stderr, "vsgl-bench: bad input: %s\n", e.what());
-    return static_cast<int>(ExitCode::kBadInput);
-  } catch (const vsgl::DeviceError& e) {
-    std::fprintf(stderr, "vsgl-bench: device: %s\n", e.what());
-    return static_cast<int>(ExitCode::kDevice);
-  } catch (const vsgl::VulkanError& e) {
-    std::fprintf(stderr, "vsgl-bench: Vulkan: %s\n", e.what());
-    return static_cast<int>(ExitCode::kDevice);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "vsgl-bench: error: %s\n", e.what());
-    return static_cast<int>(ExitCode::kFailure);
-  }
+  return vsgl::cli::run_reporting_errors("vsgl-bench", [&] { return dispatch(argc, argv); });
 }

@@ -4,15 +4,18 @@
 // Device, driver, git commit and every capture hash are in the JSON's "context".
 //
 //   vsgl-gbench [google benchmark flags] [--vsgl_captures=DIR] [--vsgl_device=D] [--vsgl_tables=1,2]
-//               [--vsgl_generators=G,G] [--vsgl_camera_vsgls=N] [--vsgl_light_vsgls=N] [--vsgl_validate]
-//               [--vsgl_iterations=N]   (replays per benchmark, default 30)
+//               [--vsgl_generators=G,G] [--vsgl_camera_vsgls=N] [--vsgl_light_vsgls=N] [--vsgl_K=K]
+//               [--vsgl_iterations=I] [--vsgl_kmeans_iterations=I] [--vsgl_validate]
+//               [--vsgl_replays=N]   (replays per benchmark, default 30)
 //   e.g. vsgl-gbench --benchmark_format=json --benchmark_out=gbench.json
+//
+// Every --vsgl_name option is `vsgl-bench tables --name` (underscores for dashes), read by the
+// same code (bench/cli/), so the two front ends cannot drift; exit codes are vsgl-bench's.
 //
 // Differences from `vsgl-bench tables`: Google Benchmark chooses the iteration counts, and the
 // cases run one after another rather than interleaved; every case is warmed up twice first.
 #include <benchmark/benchmark.h>
 
-#include <charconv>
 #include <cstdio>
 #include <memory>
 #include <sstream>
@@ -21,14 +24,18 @@
 
 #include <nlohmann/json.hpp>
 
-#include "harness/capture_provisioning.hpp"
-#include "harness/device.hpp"
-#include "harness/device_view.hpp"
-#include "harness/error.hpp"
-#include "harness/generator_registry.hpp"
-#include "harness/run_provenance.hpp"
-#include "harness/tables_run.hpp"
-#include "harness/timing_runner.hpp"
+#include "bench/cli/args.hpp"
+#include "bench/cli/exit_codes.hpp"
+#include "bench/cli/generator_options.hpp"
+#include "bench/cli/gpu_session.hpp"
+#include "harness/scene/capture_provisioning.hpp"
+#include "harness/vk/device.hpp"
+#include "harness/generators/device_view.hpp"
+#include "harness/core/error.hpp"
+#include "harness/generators/generator_registry.hpp"
+#include "harness/timing/run_provenance.hpp"
+#include "harness/report/tables_run.hpp"
+#include "harness/timing/timing_runner.hpp"
 
 namespace {
 
@@ -36,58 +43,44 @@ using namespace vsgl;
 
 struct Options {
   std::string captures = "captures";
-  std::string device;
   std::vector<int> tables{1, 2};
-  std::vector<std::string> generators = generator_names();
+  cli::GeneratorOptions generator;
   // Replays per benchmark. Fixed, because each iteration replays the whole case while reporting
   // one phase's manual time: letting Google Benchmark accumulate its min_time of a 20 us phase
   // would replay a millisecond-long k-means case tens of thousands of times.
-  uint32_t iterations = 30;
-  uint32_t camera_vsgls = 2048;
-  uint32_t light_vsgls = 1024;
-  bool validate = false;
+  uint32_t replays = 30;
 };
 
-std::vector<std::string> split(const std::string& s) {
+// The options Google Benchmark left, as vsgl-bench's tokens: --vsgl_camera_vsgls=N becomes
+// --camera-vsgls=N. Anything else is not ours, and a usage error.
+std::vector<std::string> cli_tokens(int argc, char** argv) {
   std::vector<std::string> out;
-  std::stringstream ss(s);
-  std::string item;
-  while (std::getline(ss, item, ','))
-    if (!item.empty()) out.push_back(item);
+  for (int i = 1; i < argc; ++i) {
+    std::string a = argv[i];
+    if (a.rfind("--vsgl_", 0) != 0) throw UsageError("unknown argument '" + a + "' (vsgl-gbench's own options start with --vsgl_)");
+    std::string name = a.substr(7), value;
+    if (const auto eq = name.find('='); eq != std::string::npos) {
+      value = name.substr(eq);
+      name.resize(eq);
+    }
+    for (char& c : name)
+      if (c == '_') c = '-';
+    out.push_back("--" + name + value);
+  }
   return out;
 }
 
-uint32_t parse_count(const std::string& flag, const std::string& v) {
-  uint32_t n = 0;
-  const auto [ptr, ec] = std::from_chars(v.data(), v.data() + v.size(), n);
-  if (ec != std::errc() || ptr != v.data() + v.size() || n == 0)
-    throw UsageError(flag + " takes a positive whole number, not '" + v + "'");
-  return n;
-}
-
-Options parse(int argc, char** argv) {
+Options parse(cli::Args& args) {
   Options o;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    const auto value = [&](const std::string& flag) -> std::optional<std::string> {
-      if (a.rfind(flag + "=", 0) == 0) return a.substr(flag.size() + 1);
-      return std::nullopt;
-    };
-    if (auto v = value("--vsgl_captures")) o.captures = *v;
-    else if (auto d = value("--vsgl_device")) o.device = *d;
-    else if (auto t = value("--vsgl_tables")) {
-      o.tables.clear();
-      for (const auto& s : split(*t)) {
-        if (s != "1" && s != "2") throw UsageError("--vsgl_tables takes 1, 2 or 1,2, not '" + *t + "'");
-        o.tables.push_back(s == "1" ? 1 : 2);
-      }
-    } else if (auto g = value("--vsgl_generators")) o.generators = split(*g);
-    else if (auto c = value("--vsgl_camera_vsgls")) o.camera_vsgls = parse_count("--vsgl_camera_vsgls", *c);
-    else if (auto l = value("--vsgl_light_vsgls")) o.light_vsgls = parse_count("--vsgl_light_vsgls", *l);
-    else if (auto n = value("--vsgl_iterations")) o.iterations = parse_count("--vsgl_iterations", *n);
-    else if (a == "--vsgl_validate") o.validate = true;
-    else throw UsageError("unknown argument '" + a + "'");
+  o.captures = args.string("--captures", "captures");
+  o.tables.clear();
+  for (const auto& s : args.list("--tables", "1,2")) {
+    if (s != "1" && s != "2") throw UsageError("--vsgl_tables takes 1, 2 or 1,2, not '" + s + "'");
+    o.tables.push_back(s == "1" ? 1 : 2);
   }
+  o.generator = cli::read_generator_options(args);
+  if (o.generator.generators.empty()) o.generator.generators = generator_names();
+  o.replays = args.u32("--replays", 30, 1);
   return o;
 }
 
@@ -102,12 +95,11 @@ struct TableState {
 
 int run(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);  // removes the --benchmark_* flags
-  const Options o = parse(argc, argv);
-  GpuContextOptions ctx_options;
-  ctx_options.device = o.device;
-  ctx_options.instance.validation = o.validate;
-  GpuContext ctx(ctx_options);
-  Device& device = ctx.device();
+  cli::Args args(cli_tokens(argc, argv));
+  const Options o = parse(args);
+  cli::GpuSession session = cli::GpuSession::open(args);
+  args.finish();
+  Device& device = session.device();
   const DeviceInfo& info = device.info();
   require_timestamps(info);
   const nlohmann::json build = build_json(VSGL_SOURCE_DIR);
@@ -118,10 +110,12 @@ int run(int argc, char** argv) {
   benchmark::AddCustomContext("vsgl_timestamp_period_ns", std::to_string(info.timestamp_period_ns));
   benchmark::AddCustomContext("vsgl_git_commit", build["git_commit"].get<std::string>());
   benchmark::AddCustomContext("vsgl_compiler", build["compiler"].get<std::string>());
-  benchmark::AddCustomContext("vsgl_config", nlohmann::json{{"camera_vsgls", o.camera_vsgls},
-                                                            {"light_vsgls", o.light_vsgls},
-                                                            {"K", 1.0},
-                                                            {"bisection_iterations", 12}}
+  benchmark::AddCustomContext("vsgl_config", nlohmann::json{{"camera_vsgls", o.generator.camera_vsgls},
+                                                            {"light_vsgls", o.generator.light_vsgls},
+                                                            {"K", o.generator.config.K},
+                                                            {"bisection_iterations", o.generator.config.bisection_iterations},
+                                                            {"kmeans_iterations", o.generator.config.kmeans_iterations},
+                                                            {"replays", o.replays}}
                                                  .dump());
 
   std::vector<std::unique_ptr<TableState>> tables;
@@ -137,10 +131,10 @@ int run(int argc, char** argv) {
     t->camera = std::make_unique<DeviceView>(upload_view(device, t->capture, ViewKind::kCamera));
     t->light = std::make_unique<DeviceView>(upload_view(device, t->capture, ViewKind::kLight));
     t->runner = std::make_unique<TimingRunner>(device, TimingOptions::defaults_for(info));
-    for (const auto& g : o.generators)
+    for (const auto& g : o.generator.generators)
       for (const DeviceView* view : {t->camera.get(), t->light.get()}) {
-        GeneratorConfig cfg;
-        cfg.vsgl_count = view->kind == ViewKind::kCamera ? o.camera_vsgls : o.light_vsgls;
+        GeneratorConfig cfg = o.generator.config;
+        cfg.vsgl_count = view->kind == ViewKind::kCamera ? o.generator.camera_vsgls : o.generator.light_vsgls;
         t->generators.push_back(make_generator(g, device, *view, cfg));
         const std::size_t index = t->generators.size() - 1;
         t->runner->add(TimingCase{g, view_name(view->kind), t->generators.back().get()});
@@ -163,7 +157,7 @@ int run(int argc, char** argv) {
                                          }
                                        })
               ->UseManualTime()
-              ->Iterations(o.iterations)
+              ->Iterations(o.replays)
               ->Unit(benchmark::kMicrosecond);  // compare.py prints whole units: phases are tens of us
         }
       }
@@ -171,30 +165,11 @@ int run(int argc, char** argv) {
   }
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
-  const uint32_t errors = ctx.instance().validation_errors();
-  if (errors > 0) {
-    std::fprintf(stderr, "vsgl-gbench: the Khronos validation layer reported %u error(s)\n", errors);
-    return static_cast<int>(ExitCode::kValidation);
-  }
-  return 0;
+  return session.finish(0);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  try {
-    return run(argc, argv);
-  } catch (const vsgl::UsageError& e) {
-    std::fprintf(stderr, "vsgl-gbench: %s\n", e.what());
-    return static_cast<int>(vsgl::ExitCode::kUsage);
-  } catch (const vsgl::InputError& e) {
-    std::fprintf(stderr, "vsgl-gbench: bad input: %s\n", e.what());
-    return static_cast<int>(vsgl::ExitCode::kBadInput);
-  } catch (const vsgl::DeviceError& e) {
-    std::fprintf(stderr, "vsgl-gbench: device: %s\n", e.what());
-    return static_cast<int>(vsgl::ExitCode::kDevice);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "vsgl-gbench: error: %s\n", e.what());
-    return static_cast<int>(vsgl::ExitCode::kFailure);
-  }
+  return vsgl::cli::run_reporting_errors("vsgl-gbench", [&] { return run(argc, argv); });
 }

@@ -6,7 +6,7 @@
 // chunk j and stores the piece of cluster k at slot j + k (slots are unique: a cluster's chunks
 // are consecutive and the next cluster starts in the same or a later chunk, one slot further).
 // Fixed order, no float atomics: the centres are reproducible run to run, and the CPU reference
-// (kmeans_update_centres in harness/kmeans_reference.cpp) repeats the same order bit for bit.
+// (kmeans_update_centres in harness/reference/kmeans_reference.cpp) repeats the same order bit for bit.
 #include "kmeans_common.glsl"
 layout(local_size_x = 64) in;
 layout(std430, binding = 0) readonly buffer Sorted { uvec2 sorted_pairs[]; };

@@ -3,7 +3,7 @@
 // The shading pass (SPEC §8 (a)): the camera view lit by N VSGLs, without visibility. One thread
 // per output pixel; output pixel (i, j) shades G-buffer texel (i * stride, j * stride), so a stride
 // k > 1 gives a ceil(W / k) x ceil(H / k) preview. Radiance toward the camera is the sum over the
-// VSGLs of vsgl_radiance_surface() in index order (the CPU twin, harness/shading_pass.cpp, sums in
+// VSGLs of vsgl_radiance_surface() in index order (the CPU twin, harness/quality/shading_pass.cpp, sums in
 // the same order). The VSGLs stream through shared memory in tiles, one VSGL per thread per tile.
 // Output: linear radiance (rgb, 1) per valid pixel, (0, 0, 0, 0) where the G-buffer has no surface.
 #include "vsgl_math.glsl"

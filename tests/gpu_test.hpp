@@ -11,14 +11,34 @@
 #include <random>
 #include <vector>
 
-#include "harness/buffer.hpp"
-#include "harness/command_stream.hpp"
-#include "harness/compute_pipeline.hpp"
-#include "harness/device.hpp"
+#include "harness/vk/buffer.hpp"
+#include "harness/vk/command_stream.hpp"
+#include "harness/vk/compute_pipeline.hpp"
+#include "harness/vk/device.hpp"
 
 namespace vsgl::test {
 
+// tests/CMakeLists.txt labels a suite `gpu` by its name (*Test, *Cli, DeviceProbe,
+// ValidationLayer) and everything else `cpu`, so that `ctest -L cpu` runs without a Vulkan
+// device. A test that reaches the device from a suite named otherwise fails here, so the labels
+// cannot silently go wrong.
+inline bool suite_is_labelled_gpu(const std::string& suite) {
+  const auto ends_with = [&](const char* tail) {
+    const std::string t(tail);
+    return suite.size() >= t.size() && suite.compare(suite.size() - t.size(), t.size(), t) == 0;
+  };
+  return ends_with("Test") || ends_with("Cli") || suite == "DeviceProbe" || suite == "ValidationLayer";
+}
+
+inline void require_gpu_label() {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  if (info != nullptr && !suite_is_labelled_gpu(info->test_suite_name()))
+    ADD_FAILURE() << "suite " << info->test_suite_name()
+                  << " uses the Vulkan device but its name labels it `cpu` (tests/CMakeLists.txt): name it *Test or *Cli";
+}
+
 inline GpuContext& shared_context() {
+  require_gpu_label();
   static std::unique_ptr<GpuContext> ctx = [] {
     GpuContextOptions options;
     options.instance.validation = true;

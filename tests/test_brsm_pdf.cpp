@@ -7,13 +7,13 @@
 #include <cstdio>
 
 #include "gpu_test.hpp"
-#include "harness/brsm_pdf.hpp"
-#include "harness/capture_recorder.hpp"
-#include "harness/command_stream.hpp"
-#include "harness/device_view.hpp"
-#include "harness/fis_generator.hpp"
-#include "harness/scene.hpp"
-#include "harness/view_matrices.hpp"
+#include "harness/scene/brsm_pdf.hpp"
+#include "harness/scene/capture_recorder.hpp"
+#include "harness/vk/command_stream.hpp"
+#include "harness/generators/device_view.hpp"
+#include "harness/generators/fis/fis_generator.hpp"
+#include "harness/scene/scene.hpp"
+#include "harness/capture/view_matrices.hpp"
 
 namespace vsgl {
 namespace {

@@ -17,10 +17,11 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "harness/atomic_file.hpp"
-#include "harness/capture.hpp"
-#include "harness/error.hpp"
-#include "harness/exr_io.hpp"
+#include "harness/core/atomic_file.hpp"
+#include "harness/capture/capture.hpp"
+#include "harness/capture/capture_files.hpp"
+#include "harness/core/error.hpp"
+#include "harness/capture/exr_io.hpp"
 
 namespace vsgl {
 namespace {

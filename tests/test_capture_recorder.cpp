@@ -6,10 +6,10 @@
 #include <cmath>
 
 #include "gpu_test.hpp"
-#include "harness/capture_recorder.hpp"
-#include "harness/scene.hpp"
-#include "harness/scene_geometry.hpp"
-#include "harness/view_matrices.hpp"
+#include "harness/scene/capture_recorder.hpp"
+#include "harness/scene/scene.hpp"
+#include "harness/scene/scene_geometry.hpp"
+#include "harness/capture/view_matrices.hpp"
 
 namespace vsgl {
 namespace {

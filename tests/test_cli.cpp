@@ -5,7 +5,8 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.hpp"
-#include "harness/capture.hpp"
+#include "harness/capture/capture.hpp"
+#include "harness/capture/capture_files.hpp"
 
 namespace vsgl {
 namespace {

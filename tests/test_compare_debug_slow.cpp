@@ -1,5 +1,5 @@
 // End to end on the test device (lavapipe): two `tables` runs on tiny captures, the second with
-// the TEST-ONLY --debug-slow fis_modified (harness/regression_debug_slow.hpp); `compare` must
+// the TEST-ONLY --debug-slow fis_modified (harness/generators/testing/debug_slowdown.hpp); `compare` must
 // call SLOWER exactly the rows that contain fis_modified's last phase (filtered sampling, its
 // view totals, its total) and nothing else. The minimum relevant change is 100 % here: two runs
 // on a shared, busy CPU drift by tens of percent (SAME/AMBIGUOUS at 2 % needs a quiet machine),
@@ -12,8 +12,9 @@
 #include <set>
 
 #include "gpu_test.hpp"
-#include "harness/regression_compare.hpp"
-#include "harness/tables_run.hpp"
+#include "harness/compare/regression_compare.hpp"
+#include "harness/generators/testing/debug_slowdown.hpp"
+#include "harness/report/tables_run.hpp"
 
 namespace vsgl {
 namespace {
@@ -39,6 +40,7 @@ TEST_F(CompareDebugSlowTest, SlowedGeneratorAndOnlyItIsSlower) {
   run_tables(device(), o);
   o.out_dir = root / "slow";
   o.debug_slow = {"fis_modified"};
+  o.wrap_generator = debug_slowdown_of(o.debug_slow);
   const TablesOutcome slow = run_tables(device(), o);
   EXPECT_EQ(slow.documents[0]["run"]["debug_slow"][0], "fis_modified");  // the run says so
 

@@ -12,10 +12,10 @@
 #include <random>
 
 #include "cli_runner.hpp"
-#include "harness/error.hpp"
-#include "harness/regression_compare.hpp"
-#include "harness/regression_run.hpp"
-#include "harness/statistics.hpp"
+#include "harness/core/error.hpp"
+#include "harness/compare/regression_compare.hpp"
+#include "harness/compare/regression_run.hpp"
+#include "harness/core/statistics.hpp"
 
 namespace vsgl {
 namespace {

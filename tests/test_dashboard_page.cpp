@@ -12,10 +12,11 @@
 #include <regex>
 
 #include "cli_runner.hpp"
-#include "harness/dashboard_page.hpp"
-#include "harness/dashboard_svg.hpp"
-#include "harness/png_image.hpp"
-#include "harness/table_report.hpp"
+#include "harness/compare/dashboard_page.hpp"
+#include "harness/compare/dashboard_svg.hpp"
+#include "harness/quality/png_image.hpp"
+#include "harness/report/paper_tables.hpp"
+#include "harness/report/table_json.hpp"
 
 namespace vsgl {
 namespace {

@@ -9,9 +9,9 @@
 #include <fstream>
 
 #include "cli_runner.hpp"
-#include "harness/error.hpp"
-#include "harness/export_formats.hpp"
-#include "harness/json_schema_subset.hpp"
+#include "harness/core/error.hpp"
+#include "harness/compare/export_formats.hpp"
+#include "harness/core/json_schema_subset.hpp"
 
 namespace vsgl {
 namespace {

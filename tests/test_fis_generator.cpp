@@ -7,11 +7,11 @@
 
 #include "gpu_test.hpp"
 #include "tiny_capture.hpp"
-#include "harness/command_stream.hpp"
-#include "harness/device_view.hpp"
-#include "harness/error.hpp"
-#include "harness/fis_generator.hpp"
-#include "harness/fis_reference.hpp"
+#include "harness/vk/command_stream.hpp"
+#include "harness/generators/device_view.hpp"
+#include "harness/core/error.hpp"
+#include "harness/generators/fis/fis_generator.hpp"
+#include "harness/reference/fis_reference.hpp"
 
 namespace vsgl {
 namespace {

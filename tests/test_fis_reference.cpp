@@ -1,4 +1,4 @@
-// The CPU reference of the FIS generators (harness/fis_reference.hpp) against the properties of
+// The CPU reference of the FIS generators (harness/reference/fis_reference.hpp) against the properties of
 // SPEC §4-§6 and §11: the virtual-square pyramid, the stratified hierarchical sampler, the level
 // choice of both variants, and whole-generator behaviour on synthetic moment images.
 #include <gtest/gtest.h>
@@ -10,9 +10,9 @@
 #include <limits>
 #include <vector>
 
-#include "harness/error.hpp"
-#include "harness/fis_reference.hpp"
-#include "harness/virtual_square.hpp"
+#include "harness/core/error.hpp"
+#include "harness/reference/fis_reference.hpp"
+#include "harness/math/virtual_square.hpp"
 
 namespace vsgl {
 namespace {

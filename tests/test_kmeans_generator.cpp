@@ -12,13 +12,13 @@
 
 #include "gpu_test.hpp"
 #include "tiny_capture.hpp"
-#include "harness/capture_recorder.hpp"
-#include "harness/command_stream.hpp"
-#include "harness/device_view.hpp"
-#include "harness/error.hpp"
-#include "harness/kmeans_generator.hpp"
-#include "harness/kmeans_reference.hpp"
-#include "harness/scene.hpp"
+#include "harness/scene/capture_recorder.hpp"
+#include "harness/vk/command_stream.hpp"
+#include "harness/generators/device_view.hpp"
+#include "harness/core/error.hpp"
+#include "harness/generators/kmeans/kmeans_generator.hpp"
+#include "harness/reference/kmeans_reference.hpp"
+#include "harness/scene/scene.hpp"
 
 namespace vsgl {
 namespace {

@@ -9,9 +9,9 @@
 #include <cmath>
 #include <functional>
 
-#include "harness/error.hpp"
-#include "harness/fis_reference.hpp"
-#include "harness/quality_metrics.hpp"
+#include "harness/core/error.hpp"
+#include "harness/reference/fis_reference.hpp"
+#include "harness/quality/quality_metrics.hpp"
 
 namespace vsgl {
 namespace {

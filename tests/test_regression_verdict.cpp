@@ -6,8 +6,8 @@
 #include <cmath>
 #include <random>
 
-#include "harness/mann_whitney.hpp"
-#include "harness/regression_verdict.hpp"
+#include "harness/compare/mann_whitney.hpp"
+#include "harness/compare/regression_verdict.hpp"
 
 namespace vsgl {
 namespace {

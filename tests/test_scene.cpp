@@ -8,9 +8,9 @@
 #include <numbers>
 #include <string>
 
-#include "harness/error.hpp"
-#include "harness/scene.hpp"
-#include "harness/scene_geometry.hpp"
+#include "harness/core/error.hpp"
+#include "harness/scene/scene.hpp"
+#include "harness/scene/scene_geometry.hpp"
 
 namespace vsgl {
 namespace {

@@ -13,15 +13,15 @@
 
 #include "cli_runner.hpp"
 #include "gpu_test.hpp"
-#include "harness/brsm_pdf.hpp"
-#include "harness/capture_recorder.hpp"
-#include "harness/command_stream.hpp"
-#include "harness/device_view.hpp"
-#include "harness/error.hpp"
-#include "harness/fis_generator.hpp"
-#include "harness/png_image.hpp"
-#include "harness/scene.hpp"
-#include "harness/shading_pass.hpp"
+#include "harness/scene/brsm_pdf.hpp"
+#include "harness/scene/capture_recorder.hpp"
+#include "harness/vk/command_stream.hpp"
+#include "harness/generators/device_view.hpp"
+#include "harness/core/error.hpp"
+#include "harness/generators/fis/fis_generator.hpp"
+#include "harness/quality/png_image.hpp"
+#include "harness/scene/scene.hpp"
+#include "harness/quality/shading_pass.hpp"
 
 namespace vsgl {
 namespace {

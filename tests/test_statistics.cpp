@@ -1,4 +1,4 @@
-// harness/statistics.hpp against hand-computed cases (type-7 quartiles, sample stdev) and the
+// harness/core/statistics.hpp against hand-computed cases (type-7 quartiles, sample stdev) and the
 // errors that keep a NaN out of every table.
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "harness/statistics.hpp"
+#include "harness/core/statistics.hpp"
 
 namespace vsgl {
 namespace {

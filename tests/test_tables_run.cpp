@@ -1,4 +1,4 @@
-// `tables` end to end on tiny captures (harness/tables_run.hpp): missing captures are recorded,
+// `tables` end to end on tiny captures (harness/report/tables_run.hpp): missing captures are recorded,
 // every generator is timed on both views, and the JSON is complete, finite and conforms to
 // results/schema/table.schema.json; a capture whose hash does not match its sidecar is refused.
 // Also the schema validator itself and the line counter on hand-made inputs.
@@ -10,11 +10,11 @@
 #include <regex>
 
 #include "gpu_test.hpp"
-#include "harness/error.hpp"
-#include "harness/generator_registry.hpp"
-#include "harness/json_schema_subset.hpp"
-#include "harness/source_lines.hpp"
-#include "harness/tables_run.hpp"
+#include "harness/core/error.hpp"
+#include "harness/generators/generator_registry.hpp"
+#include "harness/core/json_schema_subset.hpp"
+#include "harness/core/source_lines.hpp"
+#include "harness/report/tables_run.hpp"
 
 namespace vsgl {
 namespace {
@@ -198,10 +198,10 @@ TEST(SourceLines, CountsCodeNotCommentsOrBlanks) {
   std::ofstream(root / "kernels/k.comp") << "#version 450\n#include \"a.glsl\"\nvoid main() {}\n";
   std::ofstream(root / "kernels/include/a.glsl") << "#include \"b.glsl\"\nfloat a;\n";
   std::ofstream(root / "kernels/include/b.glsl") << "/* b */\nfloat b;\n";
-  const GeneratorLines lines = count_generator_lines(GeneratorSources{{"host.cpp"}, {"kernels/k.comp"}}, root);
+  const GeneratorLines lines = count_generator_lines(SourceSet{{"host.cpp"}, {"kernels/k.comp"}}, root);
   EXPECT_EQ(lines.total, 3u + 3u + 2u + 1u);
   ASSERT_EQ(lines.files.size(), 4u);  // transitive include closure
-  EXPECT_THROW(count_generator_lines(GeneratorSources{{"missing.cpp"}, {}}, root), InputError);
+  EXPECT_THROW(count_generator_lines(SourceSet{{"missing.cpp"}, {}}, root), InputError);
   fs::remove_all(root);
   for (const auto& g : generator_names())
     EXPECT_GT(count_generator_lines(generator_sources(g), VSGL_SOURCE_DIR).total, 100u) << g;

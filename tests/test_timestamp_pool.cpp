@@ -2,13 +2,13 @@
 #include <gtest/gtest.h>
 
 #include "gpu_test.hpp"
-#include "harness/buffer.hpp"
-#include "harness/command_stream.hpp"
-#include "harness/compute_pipeline.hpp"
-#include "harness/error.hpp"
-#include "harness/timestamp_pool.hpp"
-#include "harness/unique_handle.hpp"
-#include "harness/vk_check.hpp"
+#include "harness/vk/buffer.hpp"
+#include "harness/vk/command_stream.hpp"
+#include "harness/vk/compute_pipeline.hpp"
+#include "harness/core/error.hpp"
+#include "harness/vk/timestamp_pool.hpp"
+#include "harness/vk/unique_handle.hpp"
+#include "harness/vk/vk_check.hpp"
 
 namespace vsgl {
 namespace {

@@ -1,4 +1,4 @@
-// The timing harness (harness/timing_runner.hpp): it refuses a device without timestamps and a
+// The timing harness (harness/timing/timing_runner.hpp): it refuses a device without timestamps and a
 // zero interval, replays a once-recorded command buffer with a timestamp at every phase boundary,
 // runs the round-robin schedule and the stop rule, and its dispatch counts (Table 3) equal the
 // vkCmdDispatch calls actually recorded, counted here independently by wrapping the Vulkan entry
@@ -10,13 +10,13 @@
 #include <set>
 
 #include "gpu_test.hpp"
-#include "harness/capture_recorder.hpp"
-#include "harness/device_view.hpp"
-#include "harness/error.hpp"
-#include "harness/generator_registry.hpp"
-#include "harness/scene.hpp"
-#include "harness/timestamp_pool.hpp"
-#include "harness/timing_runner.hpp"
+#include "harness/scene/capture_recorder.hpp"
+#include "harness/generators/device_view.hpp"
+#include "harness/core/error.hpp"
+#include "harness/generators/generator_registry.hpp"
+#include "harness/scene/scene.hpp"
+#include "harness/vk/timestamp_pool.hpp"
+#include "harness/timing/timing_runner.hpp"
 
 // ---- independent counting: these definitions take precedence over libvulkan's for every call
 // the harness makes from this executable, and forward to the loader's (RTLD_NEXT). ----

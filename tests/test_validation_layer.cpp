@@ -3,8 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "gpu_test.hpp"
-#include "harness/device.hpp"
-#include "harness/vk_check.hpp"
+#include "harness/vk/device.hpp"
+#include "harness/vk/vk_check.hpp"
 
 namespace vsgl {
 namespace {

@@ -6,11 +6,11 @@
 
 #include "cli_runner.hpp"
 #include "gpu_test.hpp"
-#include "harness/brsm_pdf.hpp"
-#include "harness/capture_recorder.hpp"
-#include "harness/fis_verification.hpp"
-#include "harness/kmeans_verification.hpp"
-#include "harness/scene.hpp"
+#include "harness/scene/brsm_pdf.hpp"
+#include "harness/scene/capture_recorder.hpp"
+#include "harness/verify/fis_verification.hpp"
+#include "harness/verify/kmeans_verification.hpp"
+#include "harness/scene/scene.hpp"
 
 namespace vsgl {
 namespace {

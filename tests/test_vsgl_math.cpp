@@ -1,4 +1,4 @@
-// The VSGL maths on the CPU (harness/vsgl_math.hpp, twin of kernels/include/vsgl_math.glsl and
+// The VSGL maths on the CPU (harness/math/vsgl_math.hpp, twin of kernels/include/vsgl_math.glsl and
 // sg_eval.glsl): lobe statistics (SPEC §7), VSGLs from moments, and SG evaluation with its
 // point-light limit (SPEC §8, §11).
 #include <gtest/gtest.h>
@@ -7,7 +7,7 @@
 #include <functional>
 #include <vector>
 
-#include "harness/vsgl_math.hpp"
+#include "harness/math/vsgl_math.hpp"
 
 namespace vsgl {
 namespace {

@@ -1,5 +1,5 @@
 // The GLSL VSGL maths (kernels/include/vsgl_math.glsl, sg_eval.glsl, run by the test-only kernel
-// kernels/test_vsgl_math.comp) against their C++ twins (harness/vsgl_math.hpp), on a batch of
+// kernels/test_vsgl_math.comp) against their C++ twins (harness/math/vsgl_math.hpp), on a batch of
 // generated cases including the edge cases (invalid texels, empty moments, a receiver on the
 // VSGL, tiny radii, every branch of A(lambda) and of the SG integral). SPEC §11: "VSGL evaluation
 // matches its CPU twin".
@@ -19,10 +19,10 @@
 #include <vector>
 
 #include "gpu_test.hpp"
-#include "harness/buffer.hpp"
-#include "harness/command_stream.hpp"
-#include "harness/compute_pipeline.hpp"
-#include "harness/vsgl_math.hpp"
+#include "harness/vk/buffer.hpp"
+#include "harness/vk/command_stream.hpp"
+#include "harness/vk/compute_pipeline.hpp"
+#include "harness/math/vsgl_math.hpp"
 
 namespace vsgl {
 namespace {

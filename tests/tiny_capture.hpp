@@ -1,8 +1,8 @@
 #pragma once
 // The tiny scene recorded small for generator tests, with a stand-in light-view PDF (each RSM
 // texel's flux) so that tests of a generator do not also depend on the BRSM PDF's build.
-#include "harness/capture_recorder.hpp"
-#include "harness/scene.hpp"
+#include "harness/scene/capture_recorder.hpp"
+#include "harness/scene/scene.hpp"
 
 namespace vsgl::test {
 

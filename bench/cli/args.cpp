@@ -4,7 +4,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "harness/error.hpp"
+#include "harness/core/error.hpp"
 
 namespace vsgl::cli {
 

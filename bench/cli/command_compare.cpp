@@ -3,7 +3,7 @@
 // repetitions), a markdown report, and an exit status a CI gate can use:
 //   0 no verdict listed in --fail-on · 1 some (a regression) · 2 error (bad command line, unreadable
 //   or malformed input, incomparable runs).
-// The work is harness/regression_compare.hpp.
+// The work is harness/compare/regression_compare.hpp.
 #include <algorithm>
 #include <cstdio>
 #include <exception>
@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "bench/cli/commands.hpp"
-#include "harness/atomic_file.hpp"
-#include "harness/error.hpp"
-#include "harness/regression_compare.hpp"
+#include "harness/core/atomic_file.hpp"
+#include "harness/core/error.hpp"
+#include "harness/compare/regression_compare.hpp"
 
 namespace vsgl::cli {
 

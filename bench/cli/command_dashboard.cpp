@@ -1,14 +1,14 @@
 // `vsgl-bench dashboard RESULTS_DIR --out SITE` (issue 6): SITE/index.html, one self-contained
 // page (inline SVG charts, no script, nothing fetched) from every table JSON under RESULTS_DIR,
-// beside the paper's numbers (harness/dashboard_page.hpp).
+// beside the paper's numbers (harness/compare/dashboard_page.hpp).
 #include <cstdio>
 #include <filesystem>
 
 #include "bench/cli/commands.hpp"
-#include "harness/atomic_file.hpp"
-#include "harness/dashboard_page.hpp"
-#include "harness/error.hpp"
-#include "harness/table_report.hpp"
+#include "harness/core/atomic_file.hpp"
+#include "harness/compare/dashboard_page.hpp"
+#include "harness/core/error.hpp"
+#include "harness/report/paper_tables.hpp"
 
 namespace vsgl::cli {
 

@@ -4,9 +4,9 @@
 #include <nlohmann/json.hpp>
 
 #include "bench/cli/commands.hpp"
-#include "harness/device_info.hpp"
-#include "harness/error.hpp"
-#include "harness/instance.hpp"
+#include "harness/vk/device_info.hpp"
+#include "harness/core/error.hpp"
+#include "harness/vk/instance.hpp"
 
 namespace vsgl::cli {
 

@@ -1,12 +1,12 @@
 // `vsgl-bench export --format gab|bmf RUN [RUN...] --out FILE` (issue 6): a run's medians and
-// quartiles under stable names for dashboards (harness/export_formats.hpp). RUN is a table JSON, a
+// quartiles under stable names for dashboards (harness/compare/export_formats.hpp). RUN is a table JSON, a
 // directory of table*.json (one `tables` run) or Google Benchmark JSON; several are merged.
 #include <cstdio>
 
 #include "bench/cli/commands.hpp"
-#include "harness/atomic_file.hpp"
-#include "harness/error.hpp"
-#include "harness/export_formats.hpp"
+#include "harness/core/atomic_file.hpp"
+#include "harness/core/error.hpp"
+#include "harness/compare/export_formats.hpp"
 
 namespace vsgl::cli {
 

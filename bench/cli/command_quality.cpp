@@ -1,18 +1,19 @@
 // `vsgl-bench quality`: the paper's quality claims as numbers (issue 8; the 2016 paper's Fig. 1, 5
 // and 6): kernel coverage, too-bright VSGLs, power, flicker, the K sweep and the error against a
-// VPL reference, written as OUT/<scene>/quality.json, quality.md and PNGs (harness/quality_run.hpp).
+// VPL reference, written as OUT/<scene>/quality.json, quality.md and PNGs (harness/quality/quality_run.hpp).
 #include <cstdio>
 #include <filesystem>
 #include <string>
 
 #include "bench/cli/commands.hpp"
 #include "bench/cli/gpu_session.hpp"
-#include "harness/atomic_file.hpp"
-#include "harness/capture.hpp"
-#include "harness/error.hpp"
-#include "harness/png_image.hpp"
-#include "harness/quality_report.hpp"
-#include "harness/quality_run.hpp"
+#include "harness/core/atomic_file.hpp"
+#include "harness/capture/capture.hpp"
+#include "harness/capture/capture_files.hpp"
+#include "harness/core/error.hpp"
+#include "harness/quality/png_image.hpp"
+#include "harness/quality/quality_report.hpp"
+#include "harness/quality/quality_run.hpp"
 
 namespace vsgl::cli {
 

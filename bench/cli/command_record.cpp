@@ -4,8 +4,8 @@
 
 #include "bench/cli/commands.hpp"
 #include "bench/cli/gpu_session.hpp"
-#include "harness/capture_provisioning.hpp"
-#include "harness/error.hpp"
+#include "harness/scene/capture_provisioning.hpp"
+#include "harness/core/error.hpp"
 
 namespace vsgl::cli {
 namespace {
@@ -38,7 +38,7 @@ int run_record(Args& args) {
       char frame_dir[32];
       std::snprintf(frame_dir, sizeof frame_dir, "frame_%04u", f);
       const auto dir = frames == 1 ? base : base / frame_dir;
-      // The one recording path, shared with `tables` (harness/capture_provisioning.hpp).
+      // The one recording path, shared with `tables` (harness/scene/capture_provisioning.hpp).
       const RecordedCapture r = record_scene_capture(session.device(), name, sizes, f, frames, dir);
       std::printf("recorded %s frame %u/%u -> %s  (G-buffer %ux%u, RSM %u^2; render + BRSM PDF %.0f ms, of which "
                   "BRSM PDF %.1f ms GPU from %u camera VSGLs; write %.0f ms; %.1f MiB on disk)\n",

@@ -4,55 +4,34 @@
 // paper's Fig. 5). One exposure serves every picture of a run, so they compare directly.
 #include <cstdio>
 #include <filesystem>
-#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "bench/cli/commands.hpp"
 #include "bench/cli/gpu_session.hpp"
-#include "harness/capture.hpp"
-#include "harness/command_stream.hpp"
-#include "harness/device_view.hpp"
-#include "harness/error.hpp"
-#include "harness/fis_generator.hpp"
-#include "harness/png_image.hpp"
-#include "harness/shading_pass.hpp"
-#include "harness/vsgl_generator.hpp"
+#include "harness/capture/capture.hpp"
+#include "harness/capture/capture_files.hpp"
+#include "harness/vk/command_stream.hpp"
+#include "harness/generators/device_view.hpp"
+#include "harness/core/error.hpp"
+#include "harness/generators/generator_registry.hpp"
+#include "harness/quality/png_image.hpp"
+#include "harness/quality/shading_pass.hpp"
+#include "harness/generators/vsgl_generator.hpp"
 
 namespace vsgl::cli {
 namespace {
 
 constexpr uint32_t kLightViewVsgls = 1024;  // the paper's N for the light view (SPEC §2)
 
-// The generators `shade` can run on the light view, by name. A new generator is one more row.
-struct LightGenerator {
-  std::string name;
-  std::function<std::unique_ptr<VsglGenerator>(Device&, const DeviceView&, uint32_t vsgl_count)> make;
-};
-
-std::unique_ptr<VsglGenerator> make_fis(Device& device, const DeviceView& view, FisVariant variant, uint32_t count) {
-  FisParams params;
-  params.vsgl_count = count;
-  return std::make_unique<FisGenerator>(device, view, variant, params);
-}
-
-const std::vector<LightGenerator>& light_generators() {
-  static const std::vector<LightGenerator> table = {
-      {"fis_tok15", [](Device& d, const DeviceView& v, uint32_t n) { return make_fis(d, v, FisVariant::kTok15, n); }},
-      {"fis_modified",
-       [](Device& d, const DeviceView& v, uint32_t n) { return make_fis(d, v, FisVariant::kModified, n); }},
-  };
-  return table;
-}
-
-const LightGenerator& find_generator(const std::string& name) {
-  std::string known;
-  for (const auto& g : light_generators()) {
-    if (g.name == name) return g;
-    known += (known.empty() ? "" : ", ") + g.name;
+// Every registered generator can light the view (generators/generator_registry.hpp).
+const GeneratorDescriptor& find_generator(const std::string& name) {
+  try {
+    return generator_descriptor(name);
+  } catch (const InputError& e) {
+    throw UsageError(std::string("--generators: ") + e.what());
   }
-  throw UsageError("--generators: unknown generator '" + name + "' (known: " + known + ")");
 }
 
 }  // namespace
@@ -68,7 +47,7 @@ int run_shade(Args& args) {
   args.finish();
   if (!capture_arg) throw UsageError("shade needs --capture DIR (a capture written by `vsgl-bench record`)");
   if (names.empty()) throw UsageError("--generators needs at least one generator name");
-  std::vector<const LightGenerator*> generators;
+  std::vector<const GeneratorDescriptor*> generators;
   for (const auto& name : names) generators.push_back(&find_generator(name));
 
   const Capture capture = load_capture(*capture_arg);
@@ -78,8 +57,10 @@ int run_shade(Args& args) {
 
   // Everything is computed and checked before the first file is written (SPEC §12).
   std::vector<RadianceImage> images;
-  for (const LightGenerator* g : generators) {
-    auto generator = g->make(device, light, vsgl_count);
+  for (const GeneratorDescriptor* g : generators) {
+    GeneratorConfig config;
+    config.vsgl_count = vsgl_count;
+    auto generator = g->make(device, light, config);
     run_untimed(device, *generator);
     images.push_back(shade_camera_view(device, camera, generator->vsgls(), generator->vsgl_count(), stride));
   }

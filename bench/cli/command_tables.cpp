@@ -1,16 +1,18 @@
 // `vsgl-bench tables`: the paper's Tables 1 and 2 (and the Table 3 analog) on this device
-// (SPEC §9, §10). The work is harness/tables_run.hpp; this file maps options and prints.
+// (SPEC §9, §10). The work is harness/report/tables_run.hpp; this file maps options and prints.
 #include <unistd.h>
 
 #include <cstdio>
 #include <sstream>
 
 #include "bench/cli/commands.hpp"
+#include "bench/cli/generator_options.hpp"
+#include "harness/generators/testing/debug_slowdown.hpp"
 #include "bench/cli/gpu_session.hpp"
-#include "harness/error.hpp"
-#include "harness/run_provenance.hpp"
-#include "harness/generator_registry.hpp"
-#include "harness/tables_run.hpp"
+#include "harness/core/error.hpp"
+#include "harness/timing/run_provenance.hpp"
+#include "harness/generators/generator_registry.hpp"
+#include "harness/report/tables_run.hpp"
 
 namespace vsgl::cli {
 namespace {
@@ -46,13 +48,11 @@ int run_tables(Args& args) {
   const auto gbuffer = args.size("--gbuffer", {1920, 1088});  // only for captures recorded now
   o.record_sizes = RecordSizes{gbuffer.first, gbuffer.second, args.u32("--rsm", 512, 1)};
   o.tables = parse_tables(args.string("--tables", "1,2"));
-  const auto requested_generators = args.list("--generators", "");
-  if (!requested_generators.empty()) o.generators = requested_generators;
-  o.camera_vsgls = args.u32("--camera-vsgls", 2048, 1);
-  o.light_vsgls = args.u32("--light-vsgls", 1024, 1);
-  o.generator.K = args.positive_float("--K", 1.0f);
-  o.generator.bisection_iterations = args.u32("--iterations", 12, 1);
-  o.generator.kmeans_iterations = args.u32("--kmeans-iterations", 4, 0);
+  const GeneratorOptions gen = read_generator_options(args);
+  if (!gen.generators.empty()) o.generators = gen.generators;
+  o.camera_vsgls = gen.camera_vsgls;
+  o.light_vsgls = gen.light_vsgls;
+  o.generator = gen.config;
   const auto warmup = args.value("--warmup");
   const auto reps = args.value("--repetitions");
   const auto max_reps = args.value("--max-repetitions");
@@ -61,7 +61,8 @@ int run_tables(Args& args) {
   o.timing.cold = args.flag("--cold");
   o.json_only = args.flag("--json-only");
   o.clocks_locked = args.flag("--clocks-locked");
-  o.debug_slow = args.list("--debug-slow", "");  // TEST-ONLY (harness/regression_debug_slow.hpp)
+  o.debug_slow = args.list("--debug-slow", "");  // TEST-ONLY (harness/generators/testing/debug_slowdown.hpp)
+  if (!o.debug_slow.empty()) o.wrap_generator = debug_slowdown_of(o.debug_slow);
   if (const auto p = args.value("--paper")) o.paper_tables = *p;
   if (const auto s = args.value("--schema")) o.schema = *s;
   const bool progress_flag = !args.flag("--no-progress");
@@ -74,7 +75,7 @@ int run_tables(Args& args) {
   // On a CPU device (lavapipe) a k-means replay of both views takes seconds, so the full
   // protocol (2 warm-ups + 10 rounds) of all six generators would take ~20 minutes: there the
   // default is the paper's four; the segmented-sum extras are one --generators away.
-  if (requested_generators.empty() && info.type == VK_PHYSICAL_DEVICE_TYPE_CPU) {
+  if (gen.generators.empty() && info.type == VK_PHYSICAL_DEVICE_TYPE_CPU) {
     std::vector<std::string> paper;
     for (const auto& g : o.generators)
       if (generator_in_paper(g)) paper.push_back(g);

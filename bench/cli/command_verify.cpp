@@ -6,10 +6,11 @@
 
 #include "bench/cli/commands.hpp"
 #include "bench/cli/gpu_session.hpp"
-#include "harness/atomic_file.hpp"
-#include "harness/error.hpp"
-#include "harness/fis_verification.hpp"
-#include "harness/kmeans_verification.hpp"
+#include "harness/capture/capture_files.hpp"
+#include "harness/core/atomic_file.hpp"
+#include "harness/core/error.hpp"
+#include "harness/verify/fis_verification.hpp"
+#include "harness/verify/kmeans_verification.hpp"
 
 namespace vsgl::cli {
 

@@ -1,5 +1,5 @@
 #pragma once
-// The vsgl-bench subcommands. Each returns the process exit code (see harness/error.hpp).
+// The vsgl-bench subcommands. Each returns the process exit code (see harness/core/error.hpp).
 #include <string>
 #include <vector>
 

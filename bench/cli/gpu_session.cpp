@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-#include "harness/error.hpp"
+#include "harness/core/error.hpp"
 
 namespace vsgl::cli {
 

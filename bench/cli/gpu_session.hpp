@@ -4,7 +4,7 @@
 #include <memory>
 
 #include "bench/cli/args.hpp"
-#include "harness/device.hpp"
+#include "harness/vk/device.hpp"
 
 namespace vsgl::cli {
 

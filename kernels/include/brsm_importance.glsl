@@ -3,7 +3,7 @@
 // The BRSM PDF weight of one RSM texel (SPEC §8): q_j = w_j * sum_c E(c -> j) over the camera
 // VSGLs c, E evaluated through the VPL's own emission lobe, without visibility. A VPL emits into
 // the hemisphere of its normal only, so a camera VSGL behind it contributes nothing: a VPL that no
-// camera cluster sees gets q = 0. C++ twin: brsm_texel_weight() in harness/brsm_pdf.cpp.
+// camera cluster sees gets q = 0. C++ twin: brsm_texel_weight() in harness/scene/brsm_pdf.cpp.
 #include "sg_eval.glsl"
 
 struct VplLobe {

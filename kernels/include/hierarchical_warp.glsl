@@ -1,7 +1,7 @@
 #ifndef HIERARCHICAL_WARP_GLSL
 #define HIERARCHICAL_WARP_GLSL
 // Kernel centres (SPEC §5): a Fibonacci lattice warped down the PDF pyramid (layer 2, .w = q).
-// C++ twin: reference_samples() in harness/fis_reference.cpp, float for float.
+// C++ twin: reference_samples() in harness/reference/fis_reference.cpp, float for float.
 #include "pyramid.glsl"
 
 const uint PDF_LAYER = 2u;

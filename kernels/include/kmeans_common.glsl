@@ -1,7 +1,7 @@
 #ifndef KMEANS_COMMON_GLSL
 #define KMEANS_COMMON_GLSL
-// Shared pieces of the k-means kernels (SPEC §6.2; host: harness/kmeans_generator.cpp, CPU twin:
-// harness/kmeans_reference.cpp): the "no cluster" id, the sort key, the feature distance, and the
+// Shared pieces of the k-means kernels (SPEC §6.2; host: harness/generators/kmeans/kmeans_generator.cpp, CPU twin:
+// harness/reference/kmeans_reference.cpp): the "no cluster" id, the sort key, the feature distance, and the
 // flat invocation index of a 1D workload spread over a 2D grid of groups (so that no dispatch
 // exceeds maxComputeWorkGroupCount[0]).
 
@@ -18,7 +18,7 @@ uint kmeans_flat_group() { return gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_Wor
 uint kmeans_sort_key(uint cluster, uint cluster_count) { return min(cluster, cluster_count); }
 
 // Squared feature distance, in exactly this operation order and without contraction, so that the
-// CPU twin (kmeans_distance2 in harness/kmeans_reference.cpp) gives the same float bit for bit:
+// CPU twin (kmeans_distance2 in harness/reference/kmeans_reference.cpp) gives the same float bit for bit:
 // this is what makes "grid search == brute force" an exact property.
 float kmeans_distance2(vec3 a, vec3 b) {
   precise vec3 d = a - b;

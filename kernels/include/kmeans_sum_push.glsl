@@ -1,6 +1,6 @@
 #ifndef KMEANS_SUM_PUSH_GLSL
 #define KMEANS_SUM_PUSH_GLSL
-// Push constants of the k-means `sum` kernels (C++: SumPush in harness/kmeans_generator.cpp).
+// Push constants of the k-means `sum` kernels (C++: SumPush in harness/generators/kmeans/kmeans_generator.cpp).
 layout(push_constant) uniform Push {
   uint width;
   uint height;

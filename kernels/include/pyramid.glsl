@@ -1,6 +1,6 @@
 #ifndef PYRAMID_GLSL
 #define PYRAMID_GLSL
-// Addressing of a mip pyramid over the virtual square (SPEC §4; C++ twin harness/virtual_square.hpp).
+// Addressing of a mip pyramid over the virtual square (SPEC §4; C++ twin harness/math/virtual_square.hpp).
 // The includer declares the buffer `pyramid_texels` (vec4) holding PYRAMID_LAYERS layers of
 // `pyramid_total` texels each: layer 0 = (Phi.rgb, w), 1 = (w P, w |P|^2), 2 = (w rbar, q).
 // Call pyramid_init() first in main().

@@ -11,7 +11,7 @@
 //   f(w) = the receiver's response as a sum of SGs.
 // A product of SGs is an SG, so each term is a triple-product integral of SGs. As r -> 0 and d
 // grows, L tends to the point-light value I(wc) f(wc) / d^2.
-// C++ twin: harness/vsgl_math.hpp.
+// C++ twin: harness/math/vsgl_math.hpp.
 #include "vsgl_math.glsl"
 
 // The clamped cosine max(dot(w, n), 0) as one SG: 1.17 G(w; n, 2.133).

@@ -1,0 +1,54 @@
+#include "harness/capture/capture.hpp"
+
+#include <bit>
+#include <cstdio>
+
+namespace vsgl {
+namespace {
+
+constexpr std::array<const char*, kChannelCount> kCameraChannelNames = {
+    "P.X", "P.Y", "P.Z", "valid", "N.X", "N.Y", "N.Z", "albedo_diffuse.R", "albedo_diffuse.G",
+    "albedo_diffuse.B", "albedo_specular.R", "albedo_specular.G", "albedo_specular.B", "roughness",
+    "pdf"};
+constexpr std::array<const char*, kChannelCount> kLightChannelNames = {
+    "P.X", "P.Y", "P.Z", "valid", "N.X", "N.Y", "N.Z", "flux_diffuse.R", "flux_diffuse.G",
+    "flux_diffuse.B", "flux_specular.R", "flux_specular.G", "flux_specular.B", "roughness", "pdf"};
+
+}  // namespace
+
+std::span<const char* const> channel_names(ViewKind kind) {
+  return kind == ViewKind::kCamera ? std::span<const char* const>(kCameraChannelNames)
+                                   : std::span<const char* const>(kLightChannelNames);
+}
+
+const char* view_file_name(ViewKind kind) {
+  return kind == ViewKind::kCamera ? "gbuffer.exr" : "rsm.exr";
+}
+
+const char* view_label(ViewKind kind) { return kind == ViewKind::kCamera ? "gbuffer" : "rsm"; }
+
+void ViewImage::resize(ViewKind k, uint32_t w, uint32_t h) {
+  kind = k;
+  width = w;
+  height = h;
+  for (std::vector<float>& plane : planes) plane.assign(std::size_t{w} * h, 0.0f);
+}
+
+std::string plane_hash(const std::vector<float>& plane) {
+  // The hash is defined over the little-endian bytes of the floats.
+  static_assert(std::endian::native == std::endian::little);
+  constexpr uint64_t kOffsetBasis = 14695981039346656037ull;
+  constexpr uint64_t kPrime = 1099511628211ull;
+  uint64_t hash = kOffsetBasis;
+  const auto* bytes = reinterpret_cast<const unsigned char*>(plane.data());
+  const std::size_t size = plane.size() * sizeof(float);
+  for (std::size_t i = 0; i < size; ++i) {
+    hash ^= bytes[i];
+    hash *= kPrime;
+  }
+  char text[8 + 16 + 1];
+  std::snprintf(text, sizeof text, "fnv1a64:%016llx", static_cast<unsigned long long>(hash));
+  return text;
+}
+
+}  // namespace vsgl

@@ -1,0 +1,216 @@
+#include "harness/compare/dashboard_page.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <tuple>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "harness/compare/dashboard_svg.hpp"
+#include "harness/core/error.hpp"
+#include "harness/generators/generator_registry.hpp"
+
+namespace vsgl {
+namespace {
+
+const char* const kViews[] = {"camera_view", "light_view"};
+
+// Bar labels must fit under a bar.
+std::string short_generator(const std::string& g) {
+  for (const auto& d : generator_descriptors())
+    if (d.name == g) return d.short_label;
+  return g;  // a run of a generator this build does not know
+}
+
+// One hue per phase; the light view a lighter tint of the camera view's.
+std::string phase_color(const std::string& view, const std::string& phase) {
+  static const std::map<std::string, std::pair<std::string, std::string>> colors{
+      {"additional", {"#2f5f98", "#8fb3dd"}},         {"mipmapping", {"#3b8a3e", "#9fd39f"}},
+      {"filtered_sampling", {"#d9781a", "#f6c38f"}},  {"cluster_assignment", {"#6a3d9a", "#c2a5de"}},
+      {"sort", {"#b8860b", "#ecd27a"}},               {"sum", {"#b22222", "#ee9a9a"}}};
+  const auto it = colors.find(phase);
+  if (it == colors.end()) return view == "camera_view" ? "#555555" : "#aaaaaa";
+  return view == "camera_view" ? it->second.first : it->second.second;
+}
+
+std::string view_short(const std::string& view) { return view == "camera_view" ? "camera" : "light"; }
+
+std::string day(const std::string& date) { return date.substr(0, std::min<std::size_t>(date.size(), 10)); }
+
+std::string short_commit(const std::string& commit) {
+  return commit == "unknown" ? "(no commit)" : commit.substr(0, std::min<std::size_t>(commit.size(), 7));
+}
+
+std::string run_title(const BenchRun& r) {
+  std::string s = r.device + ", " + day(r.date);
+  if (r.quick) s += " (quick)";
+  if (!r.debug_slow.empty()) s += " (TEST-ONLY debug-slow)";
+  return s;
+}
+
+std::string fmt(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", v);
+  return buf;
+}
+
+void add_legend(std::vector<LegendEntry>& legend, std::set<std::string>& seen, const std::string& view, const std::string& phase) {
+  const std::string key = view + "/" + phase;
+  if (seen.insert(key).second) legend.push_back(LegendEntry{key, view_short(view) + ": " + phase, phase_color(view, phase)});
+}
+
+// The measured chart of one run of one table.
+std::string run_bars(const BenchRun& run, int table) {
+  std::vector<StackedBar> bars;
+  std::vector<LegendEntry> legend;
+  std::set<std::string> seen;
+  std::vector<std::string> generators;
+  for (const RunSeries& s : run.series)
+    if (s.table == table && std::find(generators.begin(), generators.end(), s.generator) == generators.end())
+      generators.push_back(s.generator);
+  for (const auto& g : generators) {
+    StackedBar bar{short_generator(g), {}};
+    for (const char* view : kViews)
+      for (const RunSeries& s : run.series)
+        if (s.table == table && s.generator == g && s.view == view && !s.is_total()) {
+          add_legend(legend, seen, view, s.phase);
+          bar.segments.push_back(BarSegment{std::string(view) + "/" + s.phase, s.median_ms,
+                                            g + " " + view + " " + s.phase + ": median " + fmt(s.median_ms) + " ms (q1 " +
+                                                fmt(s.q1_ms) + ", q3 " + fmt(s.q3_ms) + ", " +
+                                                std::to_string(s.samples_ms.size()) + " samples)"});
+        }
+    bars.push_back(std::move(bar));
+  }
+  return stacked_bar_chart_svg(run_title(run), "run", bars, legend, 460, 330);
+}
+
+// The paper's chart of one table (the generators the paper timed).
+std::string paper_bars(const nlohmann::json& paper, int table) {
+  const nlohmann::json& t = paper.at("tables").at(std::to_string(table));
+  std::vector<StackedBar> bars;
+  std::vector<LegendEntry> legend;
+  std::set<std::string> seen;
+  // The paper's column order.
+  for (const std::string& g : paper_generator_names()) {
+    if (!t.contains(g)) continue;
+    StackedBar bar{short_generator(g), {}};
+    for (const char* view : kViews) {
+      // paper_tables.json is read unordered; the phases in execution order.
+      for (const auto& phase : generator_descriptor(g).phases) {
+        const double ms = t.at(g).at(view).at(phase).get<double>();
+        add_legend(legend, seen, view, phase);
+        bar.segments.push_back(BarSegment{std::string(view) + "/" + phase, ms,
+                                          g + " " + view + " " + phase + ": " + fmt(ms) + " ms (paper)"});
+      }
+    }
+    bars.push_back(std::move(bar));
+  }
+  return stacked_bar_chart_svg("Paper: " + paper.at("setup").at("gpu").get<std::string>(), "paper", bars, legend, 460, 330);
+}
+
+const char* const kPalette[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf"};
+
+std::string total_series(const std::vector<const BenchRun*>& runs, int table, const std::string& generator,
+                         const std::map<std::string, std::string>& device_colors) {
+  std::vector<std::string> labels;
+  for (const BenchRun* r : runs) labels.push_back(day(r->date) + " " + short_commit(r->git_commit));
+  std::map<std::string, Series> by_device;
+  std::vector<std::string> order;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const RunSeries* s = runs[i]->find("table" + std::to_string(table) + "/" + generator + "/total");
+    if (s == nullptr) continue;
+    auto [it, fresh] = by_device.try_emplace(runs[i]->device);
+    if (fresh) {
+      it->second.name = runs[i]->device;
+      it->second.color = device_colors.at(runs[i]->device);
+      order.push_back(runs[i]->device);
+    }
+    it->second.points.push_back(SeriesPoint{i, s->median_ms, std::min(s->q1_ms, s->median_ms), std::max(s->q3_ms, s->median_ms),
+                                            runs[i]->device + " " + runs[i]->date + " commit " + runs[i]->git_commit +
+                                                ": median " + fmt(s->median_ms) + " ms (q1 " + fmt(s->q1_ms) + ", q3 " +
+                                                fmt(s->q3_ms) + ")"});
+  }
+  std::vector<Series> series;
+  for (const auto& d : order) series.push_back(by_device.at(d));
+  return time_series_svg(generator + " total", labels, series, 300, 200 + 14 * static_cast<int>(series.size()));
+}
+
+}  // namespace
+
+std::vector<BenchRun> find_table_runs(const std::filesystem::path& results_dir) {
+  if (!std::filesystem::is_directory(results_dir)) throw InputError(results_dir.string() + ": not a directory");
+  std::vector<BenchRun> runs;
+  for (const auto& e : std::filesystem::recursive_directory_iterator(results_dir)) {
+    const std::string name = e.path().filename().string();
+    if (!e.is_regular_file() || !is_table_file_name(name)) continue;
+    BenchRun r = load_bench_run(e.path());
+    r.path = std::filesystem::relative(e.path(), results_dir).string();
+    if (r.format == "table") runs.push_back(std::move(r));
+  }
+  if (runs.empty()) throw InputError(results_dir.string() + ": no table JSON (tableN.json) found");
+  std::sort(runs.begin(), runs.end(), [](const BenchRun& a, const BenchRun& b) {
+    const int ta = a.tables.begin()->first, tb = b.tables.begin()->first;
+    return std::tie(ta, a.date, a.git_commit, a.path) < std::tie(tb, b.date, b.git_commit, b.path);
+  });
+  return runs;
+}
+
+std::string dashboard_html(const std::vector<BenchRun>& runs, const nlohmann::json& paper, const std::string& source) {
+  std::map<std::string, std::string> device_colors;
+  for (const auto& r : runs)
+    if (!device_colors.contains(r.device))
+      device_colors[r.device] = kPalette[device_colors.size() % (sizeof kPalette / sizeof kPalette[0])];
+
+  std::ostringstream os;
+  os << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+     << "<title>vsgl-bench dashboard</title>\n<style>\n"
+     << "body{font-family:sans-serif;margin:16px;color:#222;background:#fafafa}\n"
+     << "h1{font-size:20px}h2{font-size:17px;margin-top:28px;border-bottom:1px solid #ccc}h3{font-size:14px}\n"
+     << ".charts{display:flex;flex-wrap:wrap;gap:10px}\n"
+     << "svg.chart{background:#fff;border:1px solid #ddd}\n"
+     << "svg .title{font-size:13px;font-weight:bold}svg .tick,svg .bar-total,svg .x-label{font-size:10px}\n"
+     << "svg .bar-label,svg .legend,svg .axis-label{font-size:10px}\n"
+     << "table.runs{border-collapse:collapse;font-size:12px}table.runs td,table.runs th{border:1px solid #ccc;padding:2px 6px}\n"
+     << "</style>\n</head>\n<body>\n";
+  os << "<h1>vsgl-bench: VSGL generation timings (Tokuyoshi 2016, Tables 1 and 2)</h1>\n";
+  os << "<p>" << runs.size() << " table runs from <code>" << xml_escape(source)
+     << "</code>; medians in ms. Each chart has its own scale: the paper's GTX 970 numbers are beside, not on, "
+        "the measured ones. Hover a bar segment or a point for its numbers.</p>\n";
+
+  std::set<int> tables;
+  for (const auto& r : runs)
+    for (const auto& [n, t] : r.tables) tables.insert(n);
+  for (int table : tables) {
+    std::vector<const BenchRun*> table_runs;
+    for (const auto& r : runs)
+      if (r.tables.contains(table)) table_runs.push_back(&r);
+    const std::string scene = table == 1 ? "atrium" : "conference";
+    os << "<section class=\"table\" id=\"table" << table << "\">\n<h2>Table " << table << " (" << scene << ")</h2>\n";
+    os << "<h3>Phases per generator: camera view (dark) then light view (light), median ms</h3>\n<div class=\"charts\">\n";
+    if (paper.contains("tables") && paper["tables"].contains(std::to_string(table))) os << paper_bars(paper, table) << "\n";
+    for (const BenchRun* r : table_runs) os << run_bars(*r, table) << "\n";
+    os << "</div>\n<h3>Totals across runs (date, commit), median with q1..q3, log axis</h3>\n<div class=\"charts\">\n";
+    std::vector<std::string> generators;
+    for (const BenchRun* r : table_runs)
+      for (const RunSeries& s : r->series)
+        if (s.is_total() && s.view.empty() && std::find(generators.begin(), generators.end(), s.generator) == generators.end())
+          generators.push_back(s.generator);
+    for (const auto& g : generators) os << total_series(table_runs, table, g, device_colors) << "\n";
+    os << "</div>\n</section>\n";
+  }
+
+  os << "<h2>Runs</h2>\n<table class=\"runs\"><tr><th>file</th><th>device</th><th>started (UTC)</th><th>commit</th><th>notes</th></tr>\n";
+  for (const auto& r : runs) {
+    std::string notes = r.quick ? "--quick" : "";
+    if (!r.debug_slow.empty()) notes += " TEST-ONLY --debug-slow";
+    os << "<tr><td>" << xml_escape(r.path) << "</td><td>" << xml_escape(r.device) << "</td><td>" << xml_escape(r.date)
+       << "</td><td>" << xml_escape(r.git_commit) << (r.git_dirty ? " (dirty)" : "") << "</td><td>" << xml_escape(notes)
+       << "</td></tr>\n";
+  }
+  os << "</table>\n<p>Paper: " << xml_escape(paper.value("source", std::string("results/paper/paper_tables.json")))
+     << ".</p>\n</body>\n</html>\n";
+  return os.str();
+}
+
+}  // namespace vsgl

@@ -1,0 +1,30 @@
+#pragma once
+// `vsgl-bench dashboard RESULTS_DIR --out SITE` (issue 6): one self-contained HTML page (inline
+// CSS and SVG, no script, nothing fetched) from every table JSON under RESULTS_DIR:
+//  - per paper table, a stacked bar chart of the phases (camera view, then light view) per
+//    generator for each run, beside the same chart of the paper's GTX 970 numbers
+//    (results/paper/paper_tables.json); each chart has its own scale, as devices differ by
+//    orders of magnitude;
+//  - per paper table and generator, the total across runs in time order (date, then commit), one
+//    line per device, median with a q1..q3 whisker, on a log axis;
+//  - the list of runs (file, device, date, commit, flags).
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "harness/compare/regression_run.hpp"
+
+namespace vsgl {
+
+// Every table JSON under `results_dir` (recursively; files that are neither table JSON nor
+// anything else vsgl-bench reads as a run are skipped), sorted by table, date, commit, path.
+// Throws InputError for a table JSON that cannot be read (regression_run.hpp), or none at all.
+std::vector<BenchRun> find_table_runs(const std::filesystem::path& results_dir);
+
+// The page. `paper` is results/paper/paper_tables.json (report/paper_tables.hpp load_paper_tables);
+// `source` names where the runs came from (shown on the page).
+std::string dashboard_html(const std::vector<BenchRun>& runs, const nlohmann::json& paper, const std::string& source);
+
+}  // namespace vsgl

@@ -1,0 +1,264 @@
+#include "harness/compare/regression_run.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "harness/core/error.hpp"
+#include "harness/core/json_reader.hpp"
+#include "harness/core/statistics.hpp"
+
+namespace vsgl {
+namespace {
+
+using json = nlohmann::ordered_json;
+
+// Order-independent copy for equality (capture hashes, workload config).
+nlohmann::json unordered(const json& j) { return nlohmann::json::parse(j.dump()); }
+
+// Field access that names the file and the JSON pointer of whatever is missing or mistyped.
+// Run files are read with JSON pointers in their messages; times must be positive.
+class Reader : public OrderedJsonReader {
+ public:
+  explicit Reader(std::string what) : OrderedJsonReader(std::move(what), JsonPathStyle::kPointer) {}
+  std::string text(const json& obj, const std::string& pointer, const std::string& key) const {
+    return string(obj, pointer, key);
+  }
+  double time(const json& v, const std::string& pointer) const {
+    const double t = number(v, pointer);
+    if (!(t > 0)) fail(pointer, "is not a positive time (" + v.dump() + ")");
+    return t;
+  }
+  double time(const json& obj, const std::string& pointer, const std::string& key) const {
+    return time(member(obj, pointer, key), pointer + "/" + key);
+  }
+};
+
+std::string text_or(const json& obj, const std::string& key, const std::string& fallback) {
+  const auto it = obj.find(key);
+  return it != obj.end() && it->is_string() ? it->get<std::string>() : fallback;
+}
+
+// The statistics block of a table JSON (SPEC §9): samples, median, quartiles, paper value.
+RunSeries stats_series(const Reader& r, const json& stats, const std::string& pointer) {
+  RunSeries s;
+  const json& samples = r.member(stats, pointer, "samples_ms");
+  if (!samples.is_array() || samples.empty()) r.fail(pointer + "/samples_ms", "is not a non-empty array");
+  for (std::size_t i = 0; i < samples.size(); ++i)
+    s.samples_ms.push_back(r.time(samples[i], pointer + "/samples_ms/" + std::to_string(i)));
+  s.median_ms = r.time(stats, pointer, "median_ms");
+  s.q1_ms = r.time(stats, pointer, "q1_ms");
+  s.q3_ms = r.time(stats, pointer, "q3_ms");
+  if (const auto p = stats.find("paper_ms"); p != stats.end() && p->is_number()) s.paper_ms = p->get<double>();
+  return s;
+}
+
+BenchRun parse_table_json(const json& doc, const Reader& r) {
+  BenchRun run;
+  run.format = "table";
+  const json& table_value = r.member(doc, "", "table");
+  if (!table_value.is_number_integer()) r.fail("/table", "is not a table number");
+  const int table = table_value.get<int>();
+  if (table != 1 && table != 2) r.fail("/table", "is " + std::to_string(table) + ", not 1 or 2");
+  const json& device = r.object(doc, "", "device");
+  run.device = r.text(device, "/device", "name");
+  run.device_type = text_or(device, "type", "");
+  const json& build = r.object(doc, "", "build");
+  run.git_commit = r.text(build, "/build", "git_commit");
+  run.git_dirty = build.value("git_dirty", false);
+  const json& meta = r.object(doc, "", "run");
+  run.date = r.text(meta, "/run", "started_utc");
+  run.quick = meta.value("quick", false);
+  if (const auto slow = meta.find("debug_slow"); slow != meta.end()) {
+    if (!slow->is_array()) r.fail("/run/debug_slow", "is not an array");
+    for (const auto& g : *slow) run.debug_slow.push_back(g.get<std::string>());
+  }
+
+  RunTable t;
+  t.table = table;
+  t.capture_hashes = unordered(r.object(r.object(doc, "", "capture"), "/capture", "hashes"));
+  // The workload, not the protocol: repetitions, noise target and caps change how long a run
+  // measures, not what it measures; the generator list decides which rows exist (compared row
+  // by row); kmeans_sum and sampler are descriptions.
+  json workload = r.object(doc, "", "config");
+  for (const char* key : {"timing", "generators", "kmeans_sum", "sampler"}) workload.erase(key);
+  t.workload = unordered(workload);
+  run.tables[table] = t;
+
+  const std::string prefix = "table" + std::to_string(table) + "/";
+  const json& generators = r.object(doc, "", "generators");
+  if (generators.empty()) r.fail("/generators", "holds no generator");
+  for (const auto& [g, gj] : generators.items()) {
+    const std::string gp = "/generators/" + g;
+    const json& views = r.object(gj, gp, "views");
+    for (const char* view : {"camera_view", "light_view"}) {
+      const std::string vp = gp + "/views/" + view;
+      const json& vj = r.object(views, gp + "/views", view);
+      const json& phases = r.object(vj, vp, "phases");
+      if (phases.empty()) r.fail(vp + "/phases", "holds no phase");
+      for (const auto& [phase, stats] : phases.items()) {
+        RunSeries s = stats_series(r, stats, vp + "/phases/" + phase);
+        s.name = prefix + g + "/" + view + "/" + phase;
+        s.table = table, s.generator = g, s.view = view, s.phase = phase;
+        run.series.push_back(std::move(s));
+      }
+      RunSeries total = stats_series(r, r.object(vj, vp, "total"), vp + "/total");
+      total.name = prefix + g + "/" + view + "/total";
+      total.table = table, total.generator = g, total.view = view, total.phase = "total";
+      run.series.push_back(std::move(total));
+    }
+    RunSeries total = stats_series(r, r.object(gj, gp, "total"), gp + "/total");
+    total.name = prefix + g + "/total";
+    total.table = table, total.generator = g, total.phase = "total";
+    run.series.push_back(std::move(total));
+  }
+  return run;
+}
+
+double to_ms(double value, const std::string& unit, const Reader& r, const std::string& pointer) {
+  if (unit == "ns") return value * 1e-6;
+  if (unit == "us") return value * 1e-3;
+  if (unit == "ms") return value;
+  if (unit == "s") return value * 1e3;
+  r.fail(pointer, "unknown time unit '" + unit + "'");
+}
+
+json parse_embedded(const Reader& r, const json& context, const std::string& key) {
+  const std::string text = r.text(context, "/context", key);
+  try {
+    return json::parse(text);
+  } catch (const json::exception& e) {
+    r.fail("/context/" + key, std::string("is not JSON text: ") + e.what());
+  }
+}
+
+BenchRun parse_gbench_json(const json& doc, const Reader& r) {
+  BenchRun run;
+  run.format = "gbench";
+  const json& context = r.object(doc, "", "context");
+  run.device = r.text(context, "/context", "vsgl_device");
+  run.device_type = text_or(context, "vsgl_device_type", "");
+  run.git_commit = text_or(context, "vsgl_git_commit", "unknown");
+  run.date = text_or(context, "date", "");
+  const json workload = parse_embedded(r, context, "vsgl_config");
+
+  const json& benchmarks = r.member(doc, "", "benchmarks");
+  if (!benchmarks.is_array()) r.fail("/benchmarks", "is not an array");
+  std::map<std::string, std::size_t> index;  // stable name -> series
+  for (std::size_t i = 0; i < benchmarks.size(); ++i) {
+    const json& b = benchmarks[i];
+    const std::string bp = "/benchmarks/" + std::to_string(i);
+    if (text_or(b, "run_type", "iteration") == "aggregate") continue;  // mean/median/stddev of the repetitions
+    const std::string name = r.text(b, bp, "name");
+    if (b.value("error_occurred", false))
+      r.fail(bp, "benchmark '" + name + "' reported an error: " + text_or(b, "error_message", "(no message)"));
+    // "table1/fis_modified/light_view/filtered_sampling/iterations:30/manual_time": the first four
+    // parts name it; the rest is Google Benchmark's decoration.
+    std::vector<std::string> parts;
+    std::stringstream ss(text_or(b, "run_name", name));
+    for (std::string part; std::getline(ss, part, '/');) parts.push_back(part);
+    if (parts.size() < 4 || parts[0].rfind("table", 0) != 0 || (parts[0] != "table1" && parts[0] != "table2"))
+      r.fail(bp + "/name", "'" + name + "' is not a vsgl-gbench benchmark name (tableN/generator/view/phase/...)");
+    const double ms = to_ms(r.time(b, bp, "real_time"), r.text(b, bp, "time_unit"), r, bp + "/time_unit");
+    const std::string stable = parts[0] + "/" + parts[1] + "/" + parts[2] + "/" + parts[3];
+    auto [it, fresh] = index.try_emplace(stable, run.series.size());
+    if (fresh) {
+      RunSeries s;
+      s.name = stable;
+      s.table = parts[0] == "table1" ? 1 : 2;
+      s.generator = parts[1], s.view = parts[2], s.phase = parts[3];
+      run.series.push_back(std::move(s));
+    }
+    run.series[it->second].samples_ms.push_back(ms);
+  }
+  if (run.series.empty()) r.fail("/benchmarks", "holds no vsgl-gbench benchmark");
+  for (RunSeries& s : run.series) {
+    std::vector<double> sorted = s.samples_ms;
+    std::sort(sorted.begin(), sorted.end());
+    s.median_ms = quantile_sorted(sorted, 0.5);
+    s.q1_ms = quantile_sorted(sorted, 0.25);
+    s.q3_ms = quantile_sorted(sorted, 0.75);
+    if (!run.tables.contains(s.table)) {
+      RunTable t;
+      t.table = s.table;
+      t.capture_hashes = unordered(parse_embedded(r, context, "vsgl_table" + std::to_string(s.table) + "_capture_hashes"));
+      t.workload = unordered(workload);
+      run.tables[s.table] = t;
+    }
+  }
+  return run;
+}
+
+}  // namespace
+
+bool is_table_file_name(const std::string& name) {
+  if (name.size() < 11 || name.rfind("table", 0) != 0 || !name.ends_with(".json")) return false;
+  return std::all_of(name.begin() + 5, name.end() - 5, [](char c) { return c >= '0' && c <= '9'; });
+}
+
+const RunSeries* BenchRun::find(const std::string& name) const {
+  for (const RunSeries& s : series)
+    if (s.name == name) return &s;
+  return nullptr;
+}
+
+BenchRun parse_bench_run(const nlohmann::ordered_json& doc, const std::string& what) {
+  const Reader r(what);
+  if (!doc.is_object()) r.fail("", "is not a JSON object (neither a table JSON nor Google Benchmark JSON)");
+  BenchRun run;
+  if (doc.contains("benchmarks") && doc.contains("context")) run = parse_gbench_json(doc, r);
+  else if (doc.contains("schema_version") && doc.contains("generators")) run = parse_table_json(doc, r);
+  else
+    r.fail("", "neither a vsgl-bench table JSON (schema_version, generators) nor Google Benchmark JSON (context, "
+               "benchmarks)");
+  run.path = what;
+  return run;
+}
+
+BenchRun load_bench_run(const std::filesystem::path& path) {
+  return parse_bench_run(read_json_file(path, "the run"), path.string());
+}
+
+BenchRun merge_bench_runs(const std::vector<BenchRun>& runs) {
+  if (runs.empty()) throw std::logic_error("nothing to merge");
+  BenchRun merged = runs.front();
+  std::set<std::string> names;
+  for (const auto& s : merged.series) names.insert(s.name);
+  for (std::size_t i = 1; i < runs.size(); ++i) {
+    const BenchRun& r = runs[i];
+    merged.path += " + " + r.path;
+    if (r.format != merged.format) throw InputError(r.path + ": is " + r.format + " JSON, " + runs.front().path + " is " + merged.format + " JSON");
+    for (const auto& [n, t] : r.tables)
+      if (!merged.tables.emplace(n, t).second)
+        throw InputError(r.path + ": table " + std::to_string(n) + " is also in " + runs.front().path);
+    for (const auto& s : r.series) {
+      if (!names.insert(s.name).second) throw InputError(r.path + ": " + s.name + " appears twice");
+      merged.series.push_back(s);
+    }
+    merged.date = std::min(merged.date, r.date);
+    merged.quick = merged.quick || r.quick;
+    for (const auto& g : r.debug_slow)
+      if (std::find(merged.debug_slow.begin(), merged.debug_slow.end(), g) == merged.debug_slow.end()) merged.debug_slow.push_back(g);
+  }
+  return merged;
+}
+
+BenchRun load_bench_run_path(const std::filesystem::path& file_or_dir) {
+  if (!std::filesystem::is_directory(file_or_dir)) return load_bench_run(file_or_dir);
+  std::vector<std::filesystem::path> files;
+  for (const auto& e : std::filesystem::directory_iterator(file_or_dir)) {
+    const std::string name = e.path().filename().string();
+    if (e.is_regular_file() && is_table_file_name(name)) files.push_back(e.path());
+  }
+  if (files.empty()) throw InputError(file_or_dir.string() + ": a directory without tableN.json");
+  std::sort(files.begin(), files.end());
+  std::vector<BenchRun> runs;
+  for (const auto& f : files) runs.push_back(load_bench_run(f));
+  BenchRun merged = merge_bench_runs(runs);
+  merged.path = file_or_dir.string();
+  return merged;
+}
+
+}  // namespace vsgl

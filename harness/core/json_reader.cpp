@@ -1,0 +1,130 @@
+#include "harness/core/json_reader.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iterator>
+#include <limits>
+
+#include "harness/core/error.hpp"
+
+namespace vsgl {
+
+nlohmann::ordered_json read_json_file(const std::filesystem::path& path, const std::string& what, const std::string& hint) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path.string() + ": cannot read " + what + hint);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) throw InputError(path.string() + ": cannot read " + what + hint);
+  try {
+    return nlohmann::ordered_json::parse(text);
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(path.string() + ": " + what + " is not valid JSON (truncated or corrupt?): " + e.what());
+  }
+}
+
+template <typename Json>
+std::string BasicJsonReader<Json>::child(const std::string& parent, std::string_view key) const {
+  if (style_ == JsonPathStyle::kPointer) return parent + "/" + std::string(key);
+  return parent.empty() ? std::string(key) : parent + "." + std::string(key);
+}
+
+template <typename Json>
+std::string BasicJsonReader<Json>::element(const std::string& parent, std::size_t index) const {
+  if (style_ == JsonPathStyle::kPointer) return parent + "/" + std::to_string(index);
+  return parent + "[" + std::to_string(index) + "]";
+}
+
+template <typename Json>
+std::string BasicJsonReader<Json>::place(const std::string& path) const {
+  if (style_ == JsonPathStyle::kPointer) return path.empty() ? "" : path + ": ";
+  return path.empty() ? "" : "key \"" + path + "\" ";
+}
+
+template <typename Json>
+void BasicJsonReader<Json>::fail(const std::string& path, const std::string& problem) const {
+  throw InputError(where_ + ": " + place(path) + problem);
+}
+
+template <typename Json>
+void BasicJsonReader<Json>::wrong_type(const json& value, const std::string& path, const std::string& expected) const {
+  fail(path, std::string("has type ") + value.type_name() + ", expected " + expected);
+}
+
+template <typename Json>
+const Json& BasicJsonReader<Json>::member(const json& object, const std::string& parent, std::string_view key) const {
+  if (!object.is_object()) fail(parent, "is not an object");
+  const auto it = object.find(std::string(key));
+  if (it == object.end()) fail(child(parent, key), style_ == JsonPathStyle::kPointer ? "missing field" : "is missing");
+  return *it;
+}
+
+template <typename Json>
+const Json& BasicJsonReader<Json>::object(const json& object, const std::string& parent, std::string_view key) const {
+  const json& value = member(object, parent, key);
+  if (!value.is_object()) wrong_type(value, child(parent, key), "an object");
+  return value;
+}
+
+template <typename Json>
+std::string BasicJsonReader<Json>::string(const json& object, const std::string& parent, std::string_view key) const {
+  const json& value = member(object, parent, key);
+  if (!value.is_string()) wrong_type(value, child(parent, key), "a string");
+  return value.template get<std::string>();
+}
+
+template <typename Json>
+bool BasicJsonReader<Json>::boolean(const json& object, const std::string& parent, std::string_view key) const {
+  const json& value = member(object, parent, key);
+  if (!value.is_boolean()) wrong_type(value, child(parent, key), "a boolean");
+  return value.template get<bool>();
+}
+
+template <typename Json>
+uint32_t BasicJsonReader<Json>::uint32(const json& object, const std::string& parent, std::string_view key) const {
+  const json& value = member(object, parent, key);
+  // nlohmann parses every non-negative integer literal as number_unsigned.
+  if (!value.is_number_unsigned() || value.template get<unsigned long long>() > std::numeric_limits<uint32_t>::max())
+    wrong_type(value, child(parent, key), "an unsigned 32-bit integer");
+  return static_cast<uint32_t>(value.template get<unsigned long long>());
+}
+
+template <typename Json>
+double BasicJsonReader<Json>::number(const json& value, const std::string& path) const {
+  if (!value.is_number()) wrong_type(value, path, "a number");
+  const double number = value.template get<double>();
+  if (!std::isfinite(number)) fail(path, "is not a finite number");
+  return number;
+}
+
+template <typename Json>
+double BasicJsonReader<Json>::number(const json& object, const std::string& parent, std::string_view key) const {
+  return number(member(object, parent, key), child(parent, key));
+}
+
+template <typename Json>
+float BasicJsonReader<Json>::number32(const json& value, const std::string& path) const {
+  const double v = number(value, path);
+  if (std::abs(v) > static_cast<double>(std::numeric_limits<float>::max())) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", v);
+    fail(path, "(" + std::string(text) + ") is out of float32 range");
+  }
+  return static_cast<float>(v);
+}
+
+template <typename Json>
+const Json& BasicJsonReader<Json>::array(const json& object, const std::string& parent, std::string_view key,
+                                        std::size_t count) const {
+  const std::string path = child(parent, key);
+  const json& value = member(object, parent, key);
+  const std::string expected = "an array of " + std::to_string(count) + " numbers";
+  if (!value.is_array()) wrong_type(value, path, expected);
+  if (value.size() != count)
+    fail(path, "has " + std::to_string(value.size()) + " elements, expected " + expected);
+  return value;
+}
+
+template class BasicJsonReader<nlohmann::json>;
+template class BasicJsonReader<nlohmann::ordered_json>;
+
+}  // namespace vsgl

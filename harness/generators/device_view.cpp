@@ -1,0 +1,48 @@
+#include "harness/generators/device_view.hpp"
+
+#include "harness/vk/device.hpp"
+#include "harness/core/error.hpp"
+
+namespace vsgl {
+
+const char* view_name(ViewKind kind) { return kind == ViewKind::kCamera ? "camera_view" : "light_view"; }
+
+std::vector<glm::vec4> interleave_view(const ViewImage& v) {
+  const std::size_t n = v.texels();
+  std::vector<glm::vec4> out(4 * n);
+  const auto& p = v.planes;
+  for (std::size_t i = 0; i < n; ++i) {
+    out[i] = {p[kPX][i], p[kPY][i], p[kPZ][i], p[kValid][i]};
+    out[n + i] = {p[kNX][i], p[kNY][i], p[kNZ][i], p[kPdf][i]};
+    out[2 * n + i] = {p[kDR][i], p[kDG][i], p[kDB][i], p[kRoughness][i]};
+    out[3 * n + i] = {p[kSR][i], p[kSG][i], p[kSB][i], 0.0f};
+  }
+  return out;
+}
+
+DeviceView upload_view(Device& device, const Capture& capture, ViewKind kind) {
+  const ViewImage& v = capture.view(kind);
+  const std::string what = std::string(view_file_name(kind));
+  if (!v.has_pdf)
+    throw InputError(what + ": the capture has no BRSM PDF for the light view; record it again with "
+                            "`vsgl-bench record` (which builds the PDF)");
+  DeviceView out;
+  out.kind = kind;
+  out.square = VirtualSquare::make(v.width, v.height, what);
+  out.source_position = kind == ViewKind::kCamera ? capture.meta.camera.position : capture.meta.light.position;
+  out.label = view_name(kind);
+  for (std::size_t i = 0; i < v.texels(); ++i) {
+    if (v.planes[kValid][i] == 0.0f) continue;
+    ++out.valid_texels;
+    if (v.planes[kPdf][i] > 0.0f) ++out.samplable_texels;
+  }
+  if (out.samplable_texels == 0)
+    throw InputError(what + ": all-zero PDF on the valid texels: no texel can be sampled");
+  const auto texels = interleave_view(v);
+  out.texels = Buffer(device, texels.size() * sizeof(glm::vec4), MemoryUsage::kDeviceLocal,
+                      std::string(out.label) + ".texels");
+  upload(device, out.texels, texels.data(), texels.size() * sizeof(glm::vec4));
+  return out;
+}
+
+}  // namespace vsgl

@@ -1,0 +1,35 @@
+#pragma once
+// One view of a capture uploaded for the generators: a device-local buffer of 4 layers of
+// W*H vec4 texels — (P, valid), (N, pdf), (diffuse, roughness), (specular, 0) — plus what the
+// host needs to size and check the passes. Uploads happen before any timing (SPEC §9).
+#include <glm/glm.hpp>
+#include <string>
+
+#include "harness/vk/buffer.hpp"
+#include "harness/capture/capture.hpp"
+#include "harness/math/virtual_square.hpp"
+
+namespace vsgl {
+
+class Device;
+
+struct DeviceView {
+  ViewKind kind = ViewKind::kCamera;
+  VirtualSquare square;
+  glm::vec3 source_position{0.0f};  // camera (G-buffer) or spot light (RSM) position
+  uint32_t valid_texels = 0;
+  uint32_t samplable_texels = 0;    // valid texels with a positive PDF weight
+  std::string label;                // "camera_view" | "light_view"
+  Buffer texels;
+};
+
+const char* view_name(ViewKind kind);  // "camera_view" | "light_view" (the tables' names)
+
+// Throws InputError when the view has no PDF (an RSM recorded before its BRSM PDF was built)
+// or an all-zero PDF.
+DeviceView upload_view(Device& device, const Capture& capture, ViewKind kind);
+
+// The same layout on the host (tests and the CPU references use it).
+std::vector<glm::vec4> interleave_view(const ViewImage& view);
+
+}  // namespace vsgl

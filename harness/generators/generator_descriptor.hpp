@@ -1,0 +1,47 @@
+#pragma once
+// One generator, described once: its name, its labels, whether it is a column of the paper's
+// tables, its family, how to build it, and which sources make it up (Table 3's analog). The
+// registry (generator_registry.hpp), the table reports and their claims, the dashboard, `shade`,
+// `quality` and `vsgl-gbench` read these descriptors and nothing else.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "harness/core/source_lines.hpp"
+
+namespace vsgl {
+
+class Device;
+class VsglGenerator;
+struct DeviceView;
+
+// What a generator needs besides the view; each generator reads the fields that concern it.
+struct GeneratorConfig {
+  uint32_t vsgl_count = 0;            // N (camera view 2048, light view 1024 in the paper)
+  float K = 1.0f;                     // FIS kernel-size parameter (SPEC §6.1)
+  uint32_t bisection_iterations = 12; // fis_modified's level search (SPEC §6.1)
+  uint32_t kmeans_iterations = 4;     // Lloyd iterations before the final assignment (SPEC §6.2)
+  uint32_t offset_bits = 0;           // Fibonacci lattice offset (SPEC §5)
+};
+
+// FIS generators filter a mip pyramid at a level per kernel (SPEC §6.1), so their VSGLs have
+// kernel footprints; k-means generators cluster texels (SPEC §6.2).
+enum class GeneratorFamily { kFis, kKmeans };
+
+using GeneratorFactory = std::unique_ptr<VsglGenerator> (*)(Device& device, const DeviceView& view,
+                                                            const GeneratorConfig& config);
+
+struct GeneratorDescriptor {
+  std::string name;         // stable id in every output: "fis_modified"
+  std::string label;        // the paper's column heading: "Ours (modified FIS)"
+  std::string short_label;  // fits under a dashboard bar: "modified"
+  bool in_paper = false;    // a column of the paper's Tables 1-3
+  GeneratorFamily family = GeneratorFamily::kFis;
+  std::vector<std::string> phases;  // in execution order; equal to VsglGenerator::phases() (tested)
+  GeneratorFactory make = nullptr;  // throws InputError for N = 0, N > samplable texels, K <= 0
+  // The host class and the compute kernels it dispatches (one pipeline each); the GLSL they
+  // #include is added by count_generator_lines(). Shared infrastructure counts for no generator.
+  SourceSet sources;
+};
+
+}  // namespace vsgl

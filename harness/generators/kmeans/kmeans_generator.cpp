@@ -1,0 +1,334 @@
+#include "harness/generators/kmeans/kmeans_generator.hpp"
+
+#include <algorithm>
+#include <bit>
+
+#include "harness/vk/command_stream.hpp"
+#include "harness/vk/device.hpp"
+#include "harness/generators/device_view.hpp"
+#include "harness/core/error.hpp"
+#include "harness/math/vsgl_math.hpp"
+
+namespace vsgl {
+namespace {
+
+// Work sizes; they must match the kernels' local sizes.
+constexpr uint32_t kTile = 16;          // 16x16 threads: per-texel passes over the image
+constexpr uint32_t kWide = 256;         // fill, assign, scan, radix
+constexpr uint32_t kNarrow = 64;        // per-centre / per-cluster / per-chunk passes
+constexpr uint32_t kScanBlock = 1024;   // kmeans_scan_blocks.comp: 256 threads x 4 values
+constexpr uint32_t kRadix = 256;        // 8-bit digits
+constexpr uint32_t kRadixRounds = 8;    // 2048 elements per tile
+// Radix scatter's shared memory: a cursor per digit and a 256-bit mask per digit.
+constexpr uint32_t kRadixSharedBytes = (kRadix + kRadix * (kRadix / 32)) * 4;
+// kernels/include/kmeans_grid.glsl: KMEANS_CELLS_PER_CENTRE cells per centre are aimed at; ceil()
+// of the per-axis counts can multiply that by up to 2^3.
+constexpr uint32_t kCellsPerCentre = 2;
+constexpr uint32_t kGridCounts = 8;  // KMEANS_GRID_COUNTS: words before the cell counts
+
+struct FillPush {
+  uint32_t offset, count, value;
+};
+struct PreparePush {
+  uint32_t width, height, camera_view, space3d;
+  glm::vec4 source_position;
+};
+struct MipPush {
+  uint32_t width, height, source_level;
+};
+struct SeedPush {
+  uint32_t width, height, count, offset_bits, space3d;
+};
+struct GridPush {
+  uint32_t count, max_cells;
+};
+struct AssignPush {
+  uint32_t texels, count, max_cells;
+};
+struct ScanPush {
+  uint32_t in_aux, in_offset, count, out_offset;
+};
+struct RadixPush {
+  uint32_t count, clusters, shift, from_assignment, tiles, rounds;
+};
+struct RangesPush {
+  uint32_t count, clusters;
+};
+struct PiecesPush {
+  uint32_t count, chunk;
+};
+struct UpdatePush {
+  uint32_t clusters, chunk;
+};
+struct SumPush {  // kernels/include/kmeans_sum_push.glsl
+  uint32_t width, height, texels, clusters, chunk, camera_view, space3d, square_size;
+  glm::vec4 source_position;
+};
+
+KmeansParams checked(const KmeansParams& p, const DeviceView& view, KmeansSpace space) {
+  const std::string name = kmeans_generator_name(space, p.segmented_sum);
+  if (p.vsgl_count == 0) throw InputError(name + ": N = 0: at least one VSGL is needed");
+  if (p.vsgl_count > view.samplable_texels)
+    throw InputError(name + ": N = " + std::to_string(p.vsgl_count) + " is larger than the " +
+                     std::to_string(view.samplable_texels) + " valid texels with nonzero PDF of the " + view.label);
+  return p;
+}
+
+uint32_t device_checked_texels(const Device& device, const DeviceView& view) {
+  if (device.info().max_shared_memory < kRadixSharedBytes)
+    throw DeviceError("k-means: the radix sort needs " + std::to_string(kRadixSharedBytes) +
+                      " bytes of shared memory per workgroup; " + device.info().name + " offers " +
+                      std::to_string(device.info().max_shared_memory));
+  if (device.info().max_workgroup_invocations < kWide)
+    throw DeviceError("k-means: workgroups of " + std::to_string(kWide) + " invocations are not supported by " +
+                      device.info().name);
+  return view.square.width * view.square.height;
+}
+
+template <class T>
+VkDeviceSize bytes(uint64_t count) {
+  return VkDeviceSize{count * sizeof(T)};
+}
+
+}  // namespace
+
+KmeansGenerator::ScanPlan KmeansGenerator::plan_scan(uint32_t offset, uint32_t count) {
+  ScanPlan plan;
+  plan.levels.push_back({0u, offset, count});
+  while (plan.levels.back().count > kScanBlock) {
+    const uint32_t blocks = div_up(plan.levels.back().count, kScanBlock);
+    plan.levels.push_back({1u, plan.aux_words, blocks});
+    plan.aux_words += blocks;
+  }
+  plan.total_slot = plan.aux_words++;
+  return plan;
+}
+
+KmeansGenerator::KmeansGenerator(Device& device, const DeviceView& view, KmeansSpace space,
+                                 const KmeansParams& params)
+    : device_(device),
+      view_(view),
+      space_(space),
+      params_(checked(params, view, space)),
+      texels_(device_checked_texels(device, view)),
+      max_cells_(params.brute_force_grid ? 1u : 8 * kCellsPerCentre * params.vsgl_count),
+      radix_passes_(std::max(1u, div_up(static_cast<uint32_t>(std::bit_width(params.vsgl_count)), 8))),
+      radix_rounds_(kRadixRounds),
+      radix_tiles_(div_up(texels_, kRadix * kRadixRounds)),
+      pieces_(div_up(texels_, kKmeansChunk) + params.vsgl_count),
+      grid_scan_(plan_scan(kGridCounts, max_cells_ + 1)),
+      radix_scan_(plan_scan(0, kRadix * radix_tiles_)),
+      features_(device, bytes<glm::vec4>(texels_), MemoryUsage::kDeviceLocal, name() + ".features"),
+      pdf_pyramid_(device, bytes<glm::vec4>(view.square.total_texels()), MemoryUsage::kDeviceLocal,
+                   name() + ".pdf_pyramid"),
+      grid_(device, bytes<uint32_t>(kGridCounts + 2ull * max_cells_ + 1), MemoryUsage::kDeviceLocal, name() + ".grid"),
+      cell_items_(device, bytes<uint32_t>(params.vsgl_count), MemoryUsage::kDeviceLocal, name() + ".cell_items"),
+      centres_(device, bytes<glm::vec4>(params.vsgl_count), MemoryUsage::kDeviceLocal, name() + ".centres"),
+      assignment_(device, bytes<uint32_t>(texels_), MemoryUsage::kDeviceLocal, name() + ".assignment"),
+      sorted_(device, bytes<glm::uvec2>(texels_), MemoryUsage::kDeviceLocal, name() + ".sorted"),
+      sort_scratch_(device, bytes<glm::uvec2>(texels_), MemoryUsage::kDeviceLocal, name() + ".sort_scratch"),
+      histogram_(device, bytes<uint32_t>(uint64_t{kRadix} * radix_tiles_), MemoryUsage::kDeviceLocal,
+                 name() + ".histogram"),
+      scan_aux_(device, bytes<uint32_t>(std::max(grid_scan_.aux_words, radix_scan_.aux_words)),
+                MemoryUsage::kDeviceLocal, name() + ".scan_aux"),
+      ranges_(device, bytes<glm::uvec2>(params.vsgl_count), MemoryUsage::kDeviceLocal, name() + ".ranges"),
+      centre_pieces_(device, bytes<glm::vec4>(pieces_), MemoryUsage::kDeviceLocal, name() + ".centre_pieces"),
+      vsgls_(device, bytes<VsglRecord>(params.vsgl_count), MemoryUsage::kDeviceLocal,
+             name() + "." + view.label + ".vsgls"),
+      fill_(device, {"kmeans_fill.comp", 1, sizeof(FillPush), {}}),
+      prepare_(device, {"kmeans_prepare.comp", 4, sizeof(PreparePush), {}}),
+      pdf_mip_(device, {"kmeans_pdf_mip.comp", 1, sizeof(MipPush), {}}),
+      seed_(device, {"kmeans_seed.comp", 3, sizeof(SeedPush), {}}),
+      grid_count_(device, {"kmeans_grid_count.comp", 2, sizeof(GridPush), {}}),
+      grid_fill_(device, {"kmeans_grid_fill.comp", 3, sizeof(GridPush), {}}),
+      assign_(device, {"kmeans_assign.comp", 5, sizeof(AssignPush), {}}),
+      scan_blocks_(device, {"kmeans_scan_blocks.comp", 2, sizeof(ScanPush), {}}),
+      scan_add_(device, {"kmeans_scan_add.comp", 2, sizeof(ScanPush), {}}),
+      radix_histogram_(device, {"kmeans_radix_histogram.comp", 4, sizeof(RadixPush), {}}),
+      radix_scatter_(device, {"kmeans_radix_scatter.comp", 4, sizeof(RadixPush), {}}),
+      ranges_pipeline_(device, {"kmeans_ranges.comp", 2, sizeof(RangesPush), {}}),
+      update_pieces_(device, {"kmeans_update_pieces.comp", 3, sizeof(PiecesPush), {}}),
+      update_centres_(device, {"kmeans_update_centres.comp", 3, sizeof(UpdatePush), {}}),
+      fill_grid_set_(device, fill_, {grid_}, name() + ".fill"),
+      prepare_set_(device, prepare_, {view.texels, features_, pdf_pyramid_, grid_}, name() + ".prepare"),
+      pdf_mip_set_(device, pdf_mip_, {pdf_pyramid_}, name() + ".pdf_mip"),
+      seed_set_(device, seed_, {pdf_pyramid_, view.texels, centres_}, name() + ".seed"),
+      grid_count_set_(device, grid_count_, {grid_, centres_}, name() + ".grid_count"),
+      grid_fill_set_(device, grid_fill_, {grid_, centres_, cell_items_}, name() + ".grid_fill"),
+      assign_set_(device, assign_, {grid_, centres_, cell_items_, features_, assignment_}, name() + ".assign"),
+      scan_blocks_grid_set_(device, scan_blocks_, {grid_, scan_aux_}, name() + ".scan_blocks.grid"),
+      scan_add_grid_set_(device, scan_add_, {grid_, scan_aux_}, name() + ".scan_add.grid"),
+      scan_blocks_radix_set_(device, scan_blocks_, {histogram_, scan_aux_}, name() + ".scan_blocks.radix"),
+      scan_add_radix_set_(device, scan_add_, {histogram_, scan_aux_}, name() + ".scan_add.radix"),
+      histogram_to_sorted_set_(device, radix_histogram_, {assignment_, sort_scratch_, sorted_, histogram_},
+                               name() + ".radix_histogram.a"),
+      histogram_to_scratch_set_(device, radix_histogram_, {assignment_, sorted_, sort_scratch_, histogram_},
+                                name() + ".radix_histogram.b"),
+      scatter_to_sorted_set_(device, radix_scatter_, {assignment_, sort_scratch_, sorted_, histogram_},
+                             name() + ".radix_scatter.a"),
+      scatter_to_scratch_set_(device, radix_scatter_, {assignment_, sorted_, sort_scratch_, histogram_},
+                              name() + ".radix_scatter.b"),
+      ranges_set_(device, ranges_pipeline_, {sorted_, ranges_}, name() + ".ranges"),
+      update_pieces_set_(device, update_pieces_, {sorted_, features_, centre_pieces_}, name() + ".update_pieces"),
+      update_centres_set_(device, update_centres_, {ranges_, centre_pieces_, centres_}, name() + ".update_centres") {
+  if (params_.segmented_sum) {
+    sum_pieces_.emplace(device, bytes<glm::vec4>(4ull * pieces_), MemoryUsage::kDeviceLocal, name() + ".sum_pieces");
+    segsum_pieces_.emplace(device, ComputePipelineDesc{"kmeans_segsum_pieces.comp", 3, sizeof(SumPush), {}});
+    segsum_clusters_.emplace(device, ComputePipelineDesc{"kmeans_segsum_clusters.comp", 4, sizeof(SumPush), {}});
+    segsum_pieces_set_.emplace(device, *segsum_pieces_, std::initializer_list<BufferBinding>{view.texels, sorted_, *sum_pieces_},
+                               name() + ".segsum_pieces");
+    segsum_clusters_set_.emplace(device, *segsum_clusters_,
+                                 std::initializer_list<BufferBinding>{ranges_, *sum_pieces_, centres_, vsgls_},
+                                 name() + ".segsum_clusters");
+  } else {
+    sum_.emplace(device, ComputePipelineDesc{"kmeans_sum.comp", 5, sizeof(SumPush), {}});
+    sum_set_.emplace(device, *sum_, std::initializer_list<BufferBinding>{view.texels, sorted_, ranges_, centres_, vsgls_},
+                     name() + ".sum");
+  }
+}
+
+template <class Push>
+void KmeansGenerator::dispatch_flat(CommandStream& stream, const ComputePipeline& pipeline, const BindingSet& set,
+                                    const Push& push, uint32_t groups) {
+  const uint32_t max_x = std::max(1u, device_.info().max_workgroup_count[0]);
+  const uint32_t gx = std::min(std::max(groups, 1u), max_x);
+  stream.dispatch(pipeline, set, push, gx, div_up(std::max(groups, 1u), gx));
+}
+
+void KmeansGenerator::record(CommandStream& stream, const std::function<void(VkCommandBuffer)>& boundary) {
+  boundary(stream.get());
+  record_cluster_assignment(stream);
+  boundary(stream.get());
+  record_sort(stream);
+  boundary(stream.get());
+  record_sum(stream);
+  boundary(stream.get());
+}
+
+// Seeding, then I Lloyd iterations (assign -> sort by cluster -> centre update), then the final
+// assignment. The centre update needs the texels grouped by cluster; it reuses the `sort` phase's
+// radix sort, and sums in a fixed chunked order (kmeans_update_pieces.comp) instead of float
+// atomics, so the centres are the same on every run.
+void KmeansGenerator::record_cluster_assignment(CommandStream& stream) {
+  record_seeding(stream);
+  for (uint32_t it = 0; it < params_.iterations; ++it) {
+    stream.compute_barrier();
+    record_grid_build(stream);
+    stream.compute_barrier();
+    record_assign(stream);
+    stream.compute_barrier();
+    record_radix_sort(stream);
+    stream.compute_barrier();
+    record_centre_update(stream);
+  }
+  stream.compute_barrier();
+  record_grid_build(stream);
+  stream.compute_barrier();
+  record_assign(stream);
+}
+
+void KmeansGenerator::record_sort(CommandStream& stream) { record_radix_sort(stream); }
+
+void KmeansGenerator::record_sum(CommandStream& stream) {
+  const VirtualSquare& sq = view_.square;
+  const SumPush push{sq.width,
+                     sq.height,
+                     texels_,
+                     params_.vsgl_count,
+                     kKmeansChunk,
+                     view_.kind == ViewKind::kCamera ? 1u : 0u,
+                     space_ == KmeansSpace::k3d ? 1u : 0u,
+                     sq.size,
+                     glm::vec4(view_.source_position, 0.0f)};
+  if (!params_.segmented_sum) {
+    // The paper's Sum: one thread per cluster, its texels one after another.
+    dispatch_flat(stream, *sum_, *sum_set_, push, div_up(params_.vsgl_count, kNarrow));
+    return;
+  }
+  dispatch_flat(stream, *segsum_pieces_, *segsum_pieces_set_, push, div_up(div_up(texels_, kKmeansChunk), kNarrow));
+  stream.compute_barrier();
+  dispatch_flat(stream, *segsum_clusters_, *segsum_clusters_set_, push, div_up(params_.vsgl_count, kNarrow));
+}
+
+// Features, PDF pyramid level 0 and feature bounds; the PDF pyramid; the seeds (SPEC §5).
+void KmeansGenerator::record_seeding(CommandStream& stream) {
+  const VirtualSquare& sq = view_.square;
+  const uint32_t space3d = space_ == KmeansSpace::k3d ? 1u : 0u;
+  dispatch_flat(stream, fill_, fill_grid_set_, FillPush{0, kGridCounts, 0u}, 1);  // bounds := empty
+  stream.compute_barrier();
+  const PreparePush prepare{sq.width, sq.height, view_.kind == ViewKind::kCamera ? 1u : 0u, space3d,
+                            glm::vec4(view_.source_position, 0.0f)};
+  stream.dispatch(prepare_, prepare_set_, prepare, div_up(sq.width, kTile), div_up(sq.height, kTile));
+  for (uint32_t l = 0; l < sq.levels; ++l) {
+    stream.compute_barrier();
+    stream.dispatch(pdf_mip_, pdf_mip_set_, MipPush{sq.width, sq.height, l}, div_up(sq.level_width(l + 1), kTile),
+                    div_up(sq.level_height(l + 1), kTile));
+  }
+  stream.compute_barrier();
+  dispatch_flat(stream, seed_, seed_set_, SeedPush{sq.width, sq.height, params_.vsgl_count, params_.offset_bits, space3d},
+                div_up(params_.vsgl_count, kNarrow));
+}
+
+// The uniform grid over the centres: clear -> count per cell -> exclusive scan -> scatter ids.
+void KmeansGenerator::record_grid_build(CommandStream& stream) {
+  const uint32_t words = 2 * max_cells_ + 1;
+  dispatch_flat(stream, fill_, fill_grid_set_, FillPush{kGridCounts, words, 0u}, div_up(words, kWide));
+  stream.compute_barrier();
+  const GridPush push{params_.vsgl_count, max_cells_};
+  dispatch_flat(stream, grid_count_, grid_count_set_, push, div_up(params_.vsgl_count, kNarrow));
+  stream.compute_barrier();
+  record_scan(stream, grid_scan_, scan_blocks_grid_set_, scan_add_grid_set_);
+  stream.compute_barrier();
+  dispatch_flat(stream, grid_fill_, grid_fill_set_, push, div_up(params_.vsgl_count, kNarrow));
+}
+
+void KmeansGenerator::record_assign(CommandStream& stream) {
+  dispatch_flat(stream, assign_, assign_set_, AssignPush{texels_, params_.vsgl_count, max_cells_},
+                div_up(texels_, kWide));
+}
+
+void KmeansGenerator::record_scan(CommandStream& stream, const ScanPlan& plan, const BindingSet& blocks,
+                                  const BindingSet& add) {
+  const auto& lv = plan.levels;
+  for (std::size_t k = 0; k < lv.size(); ++k) {
+    if (k > 0) stream.compute_barrier();
+    const uint32_t out = k + 1 < lv.size() ? lv[k + 1].offset : plan.total_slot;
+    dispatch_flat(stream, scan_blocks_, blocks, ScanPush{lv[k].in_aux, lv[k].offset, lv[k].count, out},
+                  div_up(lv[k].count, kScanBlock));
+  }
+  for (std::size_t k = lv.size() - 1; k-- > 0;) {
+    stream.compute_barrier();
+    dispatch_flat(stream, scan_add_, add, ScanPush{lv[k].in_aux, lv[k].offset, lv[k].count, lv[k + 1].offset},
+                  div_up(lv[k].count, kScanBlock));
+  }
+}
+
+// Stable LSD radix sort of (assignment[i], i) by sort key, 8 bits per pass (histogram -> scan ->
+// scatter), ping-ponging so that the last pass lands in sorted_; then each cluster's range.
+void KmeansGenerator::record_radix_sort(CommandStream& stream) {
+  for (uint32_t p = 0; p < radix_passes_; ++p) {
+    const bool to_sorted = (radix_passes_ - 1 - p) % 2 == 0;
+    const RadixPush push{texels_, params_.vsgl_count, 8 * p, p == 0 ? 1u : 0u, radix_tiles_, radix_rounds_};
+    if (p > 0) stream.compute_barrier();
+    dispatch_flat(stream, radix_histogram_, to_sorted ? histogram_to_sorted_set_ : histogram_to_scratch_set_, push,
+                  radix_tiles_);
+    stream.compute_barrier();
+    record_scan(stream, radix_scan_, scan_blocks_radix_set_, scan_add_radix_set_);
+    stream.compute_barrier();
+    dispatch_flat(stream, radix_scatter_, to_sorted ? scatter_to_sorted_set_ : scatter_to_scratch_set_, push,
+                  radix_tiles_);
+  }
+  stream.compute_barrier();
+  dispatch_flat(stream, ranges_pipeline_, ranges_set_, RangesPush{texels_, params_.vsgl_count},
+                div_up(params_.vsgl_count, kNarrow));
+}
+
+void KmeansGenerator::record_centre_update(CommandStream& stream) {
+  dispatch_flat(stream, update_pieces_, update_pieces_set_, PiecesPush{texels_, kKmeansChunk},
+                div_up(div_up(texels_, kKmeansChunk), kNarrow));
+  stream.compute_barrier();
+  dispatch_flat(stream, update_centres_, update_centres_set_, UpdatePush{params_.vsgl_count, kKmeansChunk},
+                div_up(params_.vsgl_count, kNarrow));
+}
+
+}  // namespace vsgl

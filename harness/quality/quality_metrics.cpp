@@ -1,0 +1,269 @@
+#include "harness/quality/quality_metrics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "harness/core/error.hpp"
+#include "harness/core/statistics.hpp"
+
+namespace vsgl {
+namespace {
+
+double luminance_d(glm::vec4 p) { return static_cast<double>(luminance(glm::vec3(p))); }
+
+}  // namespace
+
+ValueSummary summarize_values(std::vector<double> values) {
+  if (values.empty()) throw std::invalid_argument("summarize_values: no values");
+  std::sort(values.begin(), values.end());
+  ValueSummary s;
+  s.count = values.size();
+  double sum = 0;
+  for (double v : values) sum += v;
+  s.mean = sum / static_cast<double>(values.size());
+  double sq = 0;
+  for (double v : values) sq += (v - s.mean) * (v - s.mean);
+  s.stdev = std::sqrt(sq / static_cast<double>(values.size()));
+  s.min = values.front();
+  s.max = values.back();
+  s.p99 = quantile_sorted(values, 0.99);
+  return s;
+}
+
+std::vector<uint32_t> footprint_counts(const std::vector<VsglRecord>& kernels, const VirtualSquare& square) {
+  const int64_t w = square.width, h = square.height;
+  // 2D difference array: +1 at a footprint's first texel, -1 past its ends; prefix sums give the
+  // count per texel in O(N + W H) however large the footprints are.
+  std::vector<int32_t> diff(static_cast<std::size_t>((w + 1) * (h + 1)), 0);
+  const auto at = [&](int64_t x, int64_t y) -> int32_t& { return diff[static_cast<std::size_t>(y * (w + 1) + x)]; };
+  const double S = static_cast<double>(square.size);
+  for (const VsglRecord& k : kernels) {
+    const double level = static_cast<double>(k.level());
+    if (!(level >= 0.0)) throw InputError("kernel coverage: a VSGL has no FIS level (k-means records carry -1)");
+    const double half = 0.5 * std::exp2(level);
+    const double cx = static_cast<double>(k.center().x) * S, cy = static_cast<double>(k.center().y) * S;
+    // Texel t's centre t + 0.5 in [c - h, c + h)  <=>  t in [ceil(c - h - 0.5), ceil(c + h - 0.5)).
+    const int64_t x0 = std::clamp<int64_t>(static_cast<int64_t>(std::ceil(cx - half - 0.5)), 0, w);
+    const int64_t x1 = std::clamp<int64_t>(static_cast<int64_t>(std::ceil(cx + half - 0.5)), 0, w);
+    const int64_t y0 = std::clamp<int64_t>(static_cast<int64_t>(std::ceil(cy - half - 0.5)), 0, h);
+    const int64_t y1 = std::clamp<int64_t>(static_cast<int64_t>(std::ceil(cy + half - 0.5)), 0, h);
+    if (x0 >= x1 || y0 >= y1) continue;
+    ++at(x0, y0);
+    --at(x1, y0);
+    --at(x0, y1);
+    ++at(x1, y1);
+  }
+  std::vector<uint32_t> counts(static_cast<std::size_t>(w * h));
+  std::vector<int64_t> column(static_cast<std::size_t>(w + 1), 0);
+  for (int64_t y = 0; y < h; ++y) {
+    int64_t run = 0;
+    for (int64_t x = 0; x < w; ++x) {
+      column[static_cast<std::size_t>(x)] += at(x, y);
+      run += column[static_cast<std::size_t>(x)];
+      counts[static_cast<std::size_t>(y * w + x)] = static_cast<uint32_t>(run);
+    }
+  }
+  return counts;
+}
+
+KernelCoverage kernel_coverage(const std::vector<VsglRecord>& kernels, const MipPyramid& pdf_pyramid, float K) {
+  if (kernels.empty()) throw InputError("kernel coverage: no kernels");
+  const VirtualSquare& sq = pdf_pyramid.square;
+  const std::vector<uint32_t> counts = footprint_counts(kernels, sq);
+  KernelCoverage c;
+  double total = 0, gap = 0, overlap = 0;
+  for (uint32_t y = 0; y < sq.height; ++y)
+    for (uint32_t x = 0; x < sq.width; ++x) {
+      const uint32_t n = counts[std::size_t{y} * sq.width + x];
+      c.covered_centres += n;
+      const double q = static_cast<double>(pdf_pyramid.at(0, static_cast<int32_t>(x), static_cast<int32_t>(y)).w);
+      if (!(q > 0.0)) continue;
+      ++c.texels_with_pdf;
+      total += q;
+      if (n == 0) {
+        gap += q;
+        ++c.gap_texels;
+      } else if (n >= 2) {
+        overlap += q;
+        ++c.overlap_texels;
+      }
+    }
+  if (!(total > 0.0)) throw InputError("kernel coverage: the PDF is zero everywhere");
+  c.gap = gap / total;
+  c.overlap = overlap / total;
+  const double n_over_k = static_cast<double>(kernels.size()) / static_cast<double>(K);
+  for (const VsglRecord& k : kernels)
+    c.mass_ratio.push_back(static_cast<double>(modified_kernel_mass(pdf_pyramid, k.center(), k.level())) * n_over_k);
+  c.mass = summarize_values(c.mass_ratio);
+  return c;
+}
+
+float scalar_power(const VsglRecord& v) { return v.power().r + v.power().g + v.power().b; }
+
+double total_flux(const std::vector<glm::vec4>& m0) {
+  double sum = 0;
+  for (const glm::vec4& t : m0) sum += static_cast<double>(t.r) + static_cast<double>(t.g) + static_cast<double>(t.b);
+  return sum;
+}
+
+PowerMetrics power_metrics(const std::vector<VsglRecord>& vsgls, double flux) {
+  if (vsgls.empty()) throw InputError("power metrics: no VSGLs");
+  if (!(flux > 0.0)) throw InputError("power metrics: the view's total flux is not positive");
+  PowerMetrics m;
+  std::vector<double> powers;
+  for (const VsglRecord& v : vsgls) powers.push_back(static_cast<double>(scalar_power(v)));
+  for (double p : powers) m.total_vsgl_power += p;
+  if (!(m.total_vsgl_power > 0.0)) throw InputError("power metrics: the VSGLs carry no power");
+  m.total_flux = flux;
+  m.power_ratio = m.total_vsgl_power / flux;
+  const double mean = m.total_vsgl_power / static_cast<double>(vsgls.size());
+  std::sort(powers.begin(), powers.end());
+  m.max_over_mean = powers.back() / mean;
+  m.p99_over_mean = quantile_sorted(powers, 0.99) / mean;
+  return m;
+}
+
+ImageError image_error(const RadianceImage& image, const RadianceImage& reference) {
+  if (image.width != reference.width || image.height != reference.height)
+    throw InputError("image error: the image is " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                     " but the reference is " + std::to_string(reference.width) + "x" +
+                     std::to_string(reference.height));
+  double err2 = 0, ref2 = 0, ref_lum = 0;
+  std::vector<double> abs_lum;
+  for (std::size_t i = 0; i < reference.pixels.size(); ++i) {
+    const glm::vec4 r = reference.pixels[i], p = image.pixels[i];
+    if (!(r.a > 0.0f)) continue;
+    for (int c = 0; c < 3; ++c) {
+      const double d = static_cast<double>(p[c]) - static_cast<double>(r[c]);
+      err2 += d * d;
+      ref2 += static_cast<double>(r[c]) * static_cast<double>(r[c]);
+    }
+    ref_lum += luminance_d(r);
+    abs_lum.push_back(std::abs(luminance_d(p) - luminance_d(r)));
+  }
+  if (!(ref2 > 0.0) || !(ref_lum > 0.0)) throw InputError("image error: the reference image is black");
+  ImageError e;
+  e.relative_rmse = std::sqrt(err2 / ref2);
+  std::sort(abs_lum.begin(), abs_lum.end());
+  e.p99_pixel_error = quantile_sorted(abs_lum, 0.99) / (ref_lum / static_cast<double>(abs_lum.size()));
+  return e;
+}
+
+void FlickerAccumulator::check_size(const RadianceImage& image) {
+  if (frames_ == 0) {
+    width_ = image.width;
+    height_ = image.height;
+    const std::size_t n = image.pixels.size();
+    first_.assign(n, 0.0);
+    err_first_.assign(n, 0.0);
+    sum_.assign(n, 0.0);
+    sum_sq_.assign(n, 0.0);
+    err_sum_.assign(n, 0.0);
+    err_sum_sq_.assign(n, 0.0);
+    ref_sum_.assign(n, 0.0);
+    surface_.assign(n, 1);
+  } else if (image.width != width_ || image.height != height_) {
+    throw InputError("flicker: frame " + std::to_string(frames_) + " is " + std::to_string(image.width) + "x" +
+                     std::to_string(image.height) + ", the first frame was " + std::to_string(width_) + "x" +
+                     std::to_string(height_));
+  }
+}
+
+void FlickerAccumulator::add_frame(const RadianceImage& image, double total_power) {
+  check_size(image);
+  for (std::size_t i = 0; i < image.pixels.size(); ++i) {
+    if (!(image.pixels[i].a > 0.0f)) surface_[i] = 0;
+    const double y = luminance_d(image.pixels[i]);
+    if (frames_ == 0) first_[i] = y;
+    // Shifted by the first frame: identical frames give exactly zero deviation (and less rounding).
+    const double d = y - first_[i];
+    sum_[i] += d;
+    sum_sq_[i] += d * d;
+  }
+  powers_.push_back(total_power);
+  ++frames_;
+}
+
+void FlickerAccumulator::add_frame(const RadianceImage& image, double total_power, const RadianceImage& reference) {
+  if (reference.width != image.width || reference.height != image.height)
+    throw InputError("flicker: the reference frame's size differs from the frame's");
+  if (reference_frames_ != frames_) throw InputError("flicker: every frame needs a reference, or none");
+  add_frame(image, total_power);
+  for (std::size_t i = 0; i < image.pixels.size(); ++i) {
+    if (!(reference.pixels[i].a > 0.0f)) surface_[i] = 0;
+    const double r = luminance_d(reference.pixels[i]);
+    const double e0 = luminance_d(image.pixels[i]) - r;
+    if (reference_frames_ == 0) err_first_[i] = e0;
+    const double e = e0 - err_first_[i];
+    err_sum_[i] += e;
+    err_sum_sq_[i] += e * e;
+    ref_sum_[i] += r;
+  }
+  ++reference_frames_;
+}
+
+namespace {
+// Population stdev from the sum and the sum of squares of deviations from a shift (the first
+// frame): exactly 0 when every deviation is 0; clamped at 0 against rounding.
+double stdev_of(double sum, double sum_sq, double n) {
+  const double mean = sum / n;
+  return std::sqrt(std::max(sum_sq / n - mean * mean, 0.0));
+}
+}  // namespace
+
+double FlickerAccumulator::weighted_cv() const {
+  if (frames_ < 2) throw InputError("flicker: needs at least 2 frames");
+  const double n = frames_;
+  double num = 0, den = 0;
+  for (std::size_t i = 0; i < sum_.size(); ++i) {
+    if (!surface_[i]) continue;
+    num += stdev_of(sum_[i], sum_sq_[i], n);
+    den += first_[i] + sum_[i] / n;  // the mean luminance
+  }
+  if (!(den > 0.0)) throw InputError("flicker: no pixel is lit in any frame");
+  return num / den;
+}
+
+double FlickerAccumulator::error_cv() const {
+  if (frames_ < 2) throw InputError("flicker: needs at least 2 frames");
+  if (reference_frames_ != frames_) throw InputError("flicker: the error flicker needs a reference for every frame");
+  const double n = frames_;
+  double num = 0, den = 0;
+  for (std::size_t i = 0; i < sum_.size(); ++i) {
+    if (!surface_[i]) continue;
+    num += stdev_of(err_sum_[i], err_sum_sq_[i], n);
+    den += ref_sum_[i] / n;
+  }
+  if (!(den > 0.0)) throw InputError("flicker: the reference is black in every frame");
+  return num / den;
+}
+
+double FlickerAccumulator::power_stdev() const {
+  if (frames_ < 2) throw InputError("flicker: needs at least 2 frames");
+  // Two passes, deviations from the first frame's power: exactly 0 when every frame has the same
+  // power.
+  double sum = 0;
+  for (double p : powers_) sum += p - powers_.front();
+  const double mean = sum / static_cast<double>(powers_.size());
+  double dev = 0;
+  for (double p : powers_) dev += (p - powers_.front() - mean) * (p - powers_.front() - mean);
+  return std::sqrt(dev / static_cast<double>(powers_.size()));
+}
+
+double FlickerAccumulator::power_relative_stdev() const {
+  double sum = 0;
+  for (double p : powers_) sum += p;
+  const double mean = sum / static_cast<double>(powers_.size());
+  if (!(mean > 0.0)) throw InputError("flicker: the mean total power is not positive");
+  return power_stdev() / mean;
+}
+
+uint32_t frame_offset_bits(uint32_t frame) {
+  uint32_t r = 0;
+  for (int b = 0; b < 32; ++b) r |= ((frame >> b) & 1u) << (31 - b);
+  return r;
+}
+
+}  // namespace vsgl

@@ -1,0 +1,105 @@
+#pragma once
+// The paper's quality claims as numbers (issue 8; the 2016 paper's Fig. 1, 5, 6): kernel coverage
+// (gaps and overlaps of FIS footprints), the kernels' PDF mass against K/N, too-bright VSGLs,
+// power conservation, image error against a reference, and temporal flicker. Pure CPU functions
+// over downloaded VSGL records and radiance images, so tests can feed them known answers.
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "harness/reference/fis_reference.hpp"
+#include "harness/quality/radiance_image.hpp"
+#include "harness/math/vsgl_math.hpp"
+
+namespace vsgl {
+
+// mean, population stdev, min, max, 99th percentile (type-7 quantile) of a set of values.
+struct ValueSummary {
+  std::size_t count = 0;
+  double mean = 0, stdev = 0, min = 0, max = 0, p99 = 0;
+};
+// Throws std::invalid_argument for an empty input.
+ValueSummary summarize_values(std::vector<double> values);
+
+// ---- Fig. 1: kernel footprints ---------------------------------------------------------------
+// Kernel i's footprint is the square of side 2^l_i texels centred at x_i * S in the virtual
+// square (SPEC §4); it covers texel t when t's centre lies in [c - h, c + h)^2, h = 2^l_i / 2
+// (half-open, so a level-0 footprint covers exactly one texel centre: the one nearest x_i).
+struct KernelCoverage {
+  double gap = 0;      // PDF-weighted fraction of the in-bounds texels covered by no footprint
+  double overlap = 0;  // ... covered by two or more
+  uint64_t texels_with_pdf = 0;
+  uint64_t gap_texels = 0;      // texels with q > 0 and no footprint
+  uint64_t overlap_texels = 0;  // texels with q > 0 and >= 2 footprints
+  uint64_t covered_centres = 0;  // sum over all in-bounds texels of their footprint count
+  // Kernel i's PDF mass a(l_i) p_bar(x_i, l_i) (Eq. 3's left side) times N / K: 1 is the target.
+  std::vector<double> mass_ratio;
+  ValueSummary mass;
+};
+// Per in-bounds texel, how many footprints cover it (row-major W x H of the square's image).
+std::vector<uint32_t> footprint_counts(const std::vector<VsglRecord>& kernels, const VirtualSquare& square);
+// Throws InputError when a record has no FIS level (k-means records carry -1) or the PDF is zero.
+KernelCoverage kernel_coverage(const std::vector<VsglRecord>& kernels, const MipPyramid& pdf_pyramid, float K);
+
+// ---- Fig. 5: too-bright VSGLs, and power ----------------------------------------------------
+// Scalar power of a VSGL: Phi.r + Phi.g + Phi.b (the light view's moment weight w, SPEC §4).
+float scalar_power(const VsglRecord& v);
+struct PowerMetrics {
+  double total_vsgl_power = 0;  // sum_i Phi_i
+  double total_flux = 0;        // sum over the view's texels of their Phi (rgb summed)
+  double power_ratio = 0;       // sum_i Phi_i / total flux
+  double max_over_mean = 0;     // max_i Phi_i / (sum Phi / N)
+  double p99_over_mean = 0;     // 99th percentile of Phi_i / (sum Phi / N)
+};
+// Throws InputError for no VSGLs, a non-positive total flux or a non-positive VSGL power sum.
+PowerMetrics power_metrics(const std::vector<VsglRecord>& vsgls, double total_flux);
+// Sum of Phi.rgb over the M0 layer of a view (reference_moments()[0]).
+double total_flux(const std::vector<glm::vec4>& m0);
+
+// ---- Error against a reference ---------------------------------------------------------------
+struct ImageError {
+  double relative_rmse = 0;  // sqrt(sum |L - R|^2 / sum |R|^2) over rgb of the pixels with a surface
+  // 99th percentile over those pixels of |Y(L) - Y(R)| / mean Y(R) (luminance, relative to the
+  // reference's mean luminance, so the number is independent of the light's intensity).
+  double p99_pixel_error = 0;
+};
+// Throws InputError for images of different sizes or a black reference.
+ImageError image_error(const RadianceImage& image, const RadianceImage& reference);
+
+// ---- Flicker ---------------------------------------------------------------------------------
+// Accumulates F shaded frames of the same pixels and each frame's total VSGL power. Per pixel,
+// the temporal coefficient of variation of the luminance is sigma_p / mu_p (population stdev);
+// its luminance-weighted mean over the pixels with a surface is sum_p sigma_p / sum_p mu_p.
+class FlickerAccumulator {
+ public:
+  // Throws InputError when a frame's size differs from the first one.
+  void add_frame(const RadianceImage& image, double total_power);
+  // Optional: a per-frame reference of the same pixels, for the error flicker below.
+  void add_frame(const RadianceImage& image, double total_power, const RadianceImage& reference);
+
+  uint32_t frames() const { return frames_; }
+  // Luminance-weighted mean temporal CV (0 when every frame is identical). Throws InputError for
+  // fewer than 2 frames or images without a lit pixel.
+  double weighted_cv() const;
+  // Population stdev of the per-frame total power, and that divided by its mean.
+  double power_stdev() const;
+  double power_relative_stdev() const;
+  // With references: sum_p stdev_t(Y_t(p) - Yref_t(p)) / sum_p mean_t(Yref_t(p)) — the part of the
+  // frame-to-frame change that the reference does not have. Throws InputError without references.
+  double error_cv() const;
+
+ private:
+  void check_size(const RadianceImage& image);
+  uint32_t frames_ = 0, width_ = 0, height_ = 0, reference_frames_ = 0;
+  std::vector<double> first_, sum_, sum_sq_;  // per pixel: first frame's luminance, deviation sums
+  std::vector<double> err_first_, err_sum_, err_sum_sq_, ref_sum_;
+  std::vector<uint8_t> surface_;              // 1 where every frame had a surface
+  std::vector<double> powers_;
+};
+
+// Van der Corput offsets for frame f (bit-reversed f as 32-bit fixed point): 0 for frame 0, then
+// well spread in [0, 1), so F frames cover the lattice's offsets evenly (SPEC §5).
+uint32_t frame_offset_bits(uint32_t frame);
+
+}  // namespace vsgl

@@ -1,0 +1,375 @@
+#include "harness/quality/quality_run.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <memory>
+
+#include "harness/capture/capture_files.hpp"
+#include "harness/vk/buffer.hpp"
+#include "harness/scene/capture_provisioning.hpp"
+#include "harness/vk/command_stream.hpp"
+#include "harness/vk/device.hpp"
+#include "harness/generators/device_view.hpp"
+#include "harness/core/error.hpp"
+#include "harness/reference/fis_reference.hpp"
+#include "harness/generators/generator_registry.hpp"
+#include "harness/quality/quality_metrics.hpp"
+#include "harness/quality/quality_pictures.hpp"
+#include "harness/quality/quality_reference.hpp"
+#include "harness/timing/run_provenance.hpp"
+#include "harness/quality/shading_pass.hpp"
+
+namespace vsgl {
+namespace {
+
+using nlohmann::json;
+using Clock = std::chrono::steady_clock;
+
+// FIS VSGLs have kernel footprints (a level per kernel); coverage and the K sweep are about them.
+bool is_fis(const std::string& name) { return generator_descriptor(name).family == GeneratorFamily::kFis; }
+
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+// What the CPU keeps of one view: the PDF pyramid (M2's .w is q) and the total flux (M0).
+struct ViewData {
+  MipPyramid pdf;
+  double flux = 0;
+};
+
+ViewData view_data(const Capture& capture, ViewKind kind) {
+  const ViewImage& view = capture.view(kind);
+  const glm::vec3 source = kind == ViewKind::kCamera ? capture.meta.camera.position : capture.meta.light.position;
+  const auto moments = reference_moments(view, source);
+  return ViewData{MipPyramid::build(moments[2], view.width, view.height), total_flux(moments[0])};
+}
+
+// One generator run (offset `offset_bits`, kernel parameter K) on an uploaded view; its VSGLs stay
+// on the device for shading and are downloaded for the metrics.
+struct GeneratorRun {
+  std::unique_ptr<VsglGenerator> generator;
+  std::vector<VsglRecord> vsgls;
+};
+
+GeneratorRun run_generator(Device& device, const DeviceView& view, const std::string& name,
+                           const QualityConfig& config, uint32_t vsgl_count, float K, uint32_t offset_bits) {
+  GeneratorConfig gc;
+  gc.vsgl_count = vsgl_count;
+  gc.K = K;
+  gc.bisection_iterations = config.bisection_iterations;
+  gc.kmeans_iterations = config.kmeans_iterations;
+  gc.offset_bits = offset_bits;
+  GeneratorRun run;
+  run.generator = make_generator(name, device, view, gc);
+  run_untimed(device, *run.generator);
+  run.vsgls = download_vector<VsglRecord>(device, run.generator->vsgls(), run.generator->vsgl_count());
+  return run;
+}
+
+double power_sum(const std::vector<VsglRecord>& vsgls) {
+  double s = 0;
+  for (const auto& v : vsgls) s += static_cast<double>(scalar_power(v));
+  return s;
+}
+
+json summary_json(const ValueSummary& s) {
+  return json{{"mean", s.mean}, {"stdev", s.stdev}, {"min", s.min}, {"max", s.max}, {"p99", s.p99}};
+}
+
+json power_json(const PowerMetrics& p) {
+  return json{{"sum_vsgl_power", p.total_vsgl_power}, {"total_flux", p.total_flux}, {"power_ratio", p.power_ratio},
+              {"max_over_mean", p.max_over_mean}, {"p99_over_mean", p.p99_over_mean}};
+}
+
+json coverage_json(const KernelCoverage& c) {
+  return json{{"gap", c.gap},
+              {"overlap", c.overlap},
+              {"gap_plus_overlap", c.gap + c.overlap},
+              {"texels_with_pdf", c.texels_with_pdf},
+              {"gap_texels", c.gap_texels},
+              {"overlap_texels", c.overlap_texels},
+              {"mass_over_target", summary_json(c.mass)}};
+}
+
+json error_json(const ImageError& e) {
+  return json{{"relative_rmse", e.relative_rmse}, {"p99_pixel_error", e.p99_pixel_error}};
+}
+
+// 64-bit FNV-1a over text: one identifier for all channel hashes of a capture.
+std::string text_hash(const std::string& text) {
+  uint64_t h = 1469598103934665603ull;
+  for (unsigned char c : text) {
+    h ^= c;
+    h *= 1099511628211ull;
+  }
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "fnv1a64:%016llx", static_cast<unsigned long long>(h));
+  return buf;
+}
+
+uint32_t stride_for_width(uint32_t width, uint32_t target) {
+  return target == 0 || width <= target ? 1u : width / target;
+}
+
+std::string k_label(float K) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", static_cast<double>(K));
+  return buf;
+}
+
+}  // namespace
+
+std::vector<std::filesystem::path> sequence_frames(const std::filesystem::path& dir, uint32_t max_frames) {
+  std::vector<std::filesystem::path> frames;
+  for (uint32_t f = 0; f < max_frames; ++f) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%04u", f);
+    const auto p = dir / name;
+    if (!std::filesystem::exists(p / "capture.json")) break;
+    frames.push_back(p);
+  }
+  if (frames.size() < 2)
+    throw InputError(dir.string() + ": not a recorded sequence (need frame_0000, frame_0001, ... with capture.json; "
+                     "record one with `vsgl-bench record --frames F --out DIR`)");
+  return frames;
+}
+
+QualityResult run_quality(Device& device, const Capture& capture, const std::filesystem::path& capture_dir,
+                          const QualityConfig& config, const std::function<void(const std::string&)>& progress) {
+  const auto say = [&](const std::string& line) {
+    if (progress) progress(line);
+  };
+  if (config.frames < 2) throw InputError("quality: --frames must be at least 2 (flicker compares frames)");
+  if (config.error_stride == 0) throw InputError("quality: the error stride must be at least 1");
+  if (config.generators.empty()) throw InputError("quality: no generators");
+  for (float K : config.k_sweep)
+    if (!(K > 0.0f) || !std::isfinite(K)) throw InputError("quality: every K of the sweep must be positive");
+  for (const auto& g : config.generators) (void)generator_sources(g);  // unknown names fail here, before any work
+
+  const auto t_start = Clock::now();
+  const std::string scene = capture.meta.scene;
+  QualityResult result;
+  json& out = result.json;
+  json timings = json::object();
+  out["schema"] = "vsgl-quality";
+  out["schema_version"] = kQualitySchemaVersion;
+  out["scene"] = scene;
+  out["capture"] = json{{"path", capture_dir.string()},
+                        {"gbuffer", {capture.gbuffer.width, capture.gbuffer.height}},
+                        {"rsm", {capture.rsm.width, capture.rsm.height}},
+                        {"hashes", capture_hashes_json(capture)}};
+  out["device"] = json{{"name", device.info().name}, {"driver", device.info().driver_name + " " + device.info().driver_info}};
+  out["build"] = build_json(config.source_dir);
+  std::vector<double> ks(config.k_sweep.begin(), config.k_sweep.end());
+  out["config"] = json{{"generators", config.generators},
+                       {"light_vsgls", config.light_vsgls},
+                       {"camera_vsgls", config.camera_vsgls},
+                       {"K", config.K},
+                       {"bisection_iterations", config.bisection_iterations},
+                       {"kmeans_iterations", config.kmeans_iterations},
+                       {"frames", config.frames},
+                       {"frame_offsets", "offset_bits(f) = bit-reversed f (van der Corput), f = 0..F-1"},
+                       {"error_stride", config.error_stride},
+                       {"flicker_width", config.flicker_width},
+                       {"reference_rsm", config.reference_rsm},
+                       {"sequence_reference_rsm", config.sequence_reference_rsm},
+                       {"k_sweep", ks},
+                       {"power_of_a_vsgl", "Phi.r + Phi.g + Phi.b"},
+                       {"luminance", "Rec. 709"}};
+
+  const DeviceView camera = upload_view(device, capture, ViewKind::kCamera);
+  const DeviceView light = upload_view(device, capture, ViewKind::kLight);
+
+  // ---- 1-3: per view and generator: coverage (FIS), too-bright, power ----------------------------
+  MipPyramid light_pdf;
+  auto t0 = Clock::now();
+  json views = json::object();
+  for (ViewKind kind : {ViewKind::kLight, ViewKind::kCamera}) {
+    const ViewData data = view_data(capture, kind);
+    const DeviceView& view = kind == ViewKind::kLight ? light : camera;
+    const uint32_t n = kind == ViewKind::kLight ? config.light_vsgls : config.camera_vsgls;
+    if (kind == ViewKind::kLight) light_pdf = data.pdf;
+    json v = json{{"vsgls", n}, {"total_flux", data.flux}, {"generators", json::object()}};
+    for (const auto& name : config.generators) {
+      const auto tg = Clock::now();
+      const GeneratorRun run = run_generator(device, view, name, config, n, config.K, 0);
+      json g = json{{"power", power_json(power_metrics(run.vsgls, data.flux))}};
+      if (is_fis(name)) {
+        g["coverage"] = coverage_json(kernel_coverage(run.vsgls, data.pdf, config.K));
+        const std::string file = scene + "_coverage_" + view_name(kind) + "_" + name + ".png";
+        result.pictures.push_back(
+            {file,
+             "Fig. 1 analog, " + std::string(view_name(kind)) + ", " + name +
+                 ": PDF in grey (sqrt scale), kernel centres red, footprints (side 2^l texels) orange",
+             coverage_picture(data.pdf, run.vsgls, config.coverage_picture_side)});
+      }
+      v["generators"][name] = g;
+      say(std::string(view_name(kind)) + " " + name + ": metrics in " + std::to_string(seconds_since(tg)) + " s");
+    }
+    views[view_name(kind)] = v;
+  }
+  out["views"] = views;
+  timings["view_metrics"] = seconds_since(t0);
+
+  // ---- 6: reference and errors (light-view VSGLs shading the camera view) ---------------------------
+  t0 = Clock::now();
+  const uint32_t ref_stride = reference_stride(capture.rsm, config.reference_rsm);
+  const std::vector<VsglRecord> vpls = reference_vpls(capture.rsm, capture.meta.light, ref_stride, VplExtent::kTexelFootprint);
+  FixedVsglGenerator reference(device, vpls, "reference_vpls");
+  const RadianceImage ref_image =
+      shade_camera_view(device, camera, reference.vsgls(), reference.vsgl_count(), config.error_stride);
+  const double light_flux = views["light_view"]["total_flux"].get<double>();
+  out["reference"] = json{{"rsm_stride", ref_stride},
+                          {"reference_rsm_side", (capture.rsm.width + ref_stride - 1) / ref_stride},
+                          {"vpls", vpls.size()},
+                          {"power_ratio", power_sum(vpls) / light_flux},
+                          {"image", {ref_image.width, ref_image.height}},
+                          {"method", "Every stride-th RSM texel with positive flux is a VSGL of its own moments "
+                                     "(level 0), flux scaled by stride^2, sigma^2 = A / 12 with A the world area the texel stands for "
+                                     "(bounds the 1/d^2 spikes of point VPLs); shaded at the "
+                                     "generators' pixels (G-buffer stride) by the same shading pass"}};
+  say("reference: " + std::to_string(vpls.size()) + " VPLs, shaded in " + std::to_string(seconds_since(t0)) + " s");
+  const uint32_t tile_factor = 2;  // pictures at half the error resolution, to keep them small
+  const float exposure = auto_exposure(downscale(ref_image, tile_factor));
+  std::vector<Rgb8Image> render_tiles{tone_map(downscale(ref_image, tile_factor), exposure)};
+  std::vector<Rgb8Image> error_tiles{error_map(downscale(ref_image, tile_factor), downscale(ref_image, tile_factor), 1.0f)};
+  json errors = json::object();
+  std::map<std::string, RadianceImage> k1_images;
+  for (const auto& name : config.generators) {
+    const GeneratorRun run = run_generator(device, light, name, config, config.light_vsgls, config.K, 0);
+    const RadianceImage img = shade_camera_view(device, camera, run.generator->vsgls(), run.generator->vsgl_count(),
+                                                config.error_stride);
+    errors[name] = error_json(image_error(img, ref_image));
+    render_tiles.push_back(tone_map(downscale(img, tile_factor), exposure));
+    error_tiles.push_back(error_map(downscale(img, tile_factor), downscale(ref_image, tile_factor), 1.0f));
+    if (is_fis(name)) k1_images[name] = img;
+  }
+  out["reference_error"] = errors;
+  {
+    std::vector<Rgb8Image> tiles = render_tiles;
+    tiles.insert(tiles.end(), error_tiles.begin(), error_tiles.end());
+    std::string order = "reference";
+    for (const auto& g : config.generators) order += ", " + g;
+    result.pictures.push_back({scene + "_renders.png",
+                               "Fig. 5 analog. Top row: " + order +
+                                   " (indirect light, no visibility, one exposure). Bottom row: |dY| / mean Y of the "
+                                   "reference (black 0, red, yellow, white >= 1)",
+                               tile_grid(tiles, static_cast<uint32_t>(render_tiles.size()))});
+  }
+  timings["reference_and_errors"] = seconds_since(t0);
+
+  // ---- 4 + 5: static flicker over offsets, with the K sweep for the FIS generators --------------------
+  t0 = Clock::now();
+  const uint32_t flicker_stride = stride_for_width(capture.gbuffer.width, config.flicker_width);
+  const auto flicker_of = [&](const std::string& name, float K) {
+    FlickerAccumulator acc;
+    for (uint32_t f = 0; f < config.frames; ++f) {
+      const GeneratorRun run = run_generator(device, light, name, config, config.light_vsgls, K, frame_offset_bits(f));
+      acc.add_frame(shade_camera_view(device, camera, run.generator->vsgls(), run.generator->vsgl_count(), flicker_stride),
+                    power_sum(run.vsgls));
+    }
+    return json{{"frames", acc.frames()},
+                {"weighted_cv", acc.weighted_cv()},
+                {"power_stdev", acc.power_stdev()},
+                {"power_relative_stdev", acc.power_relative_stdev()}};
+  };
+  json flicker = json::object();
+  for (const auto& name : config.generators) {
+    const auto tg = Clock::now();
+    flicker[name] = flicker_of(name, config.K);
+    say("static flicker " + name + ": " + std::to_string(seconds_since(tg)) + " s");
+  }
+  out["flicker_static"] = json{{"image", {shaded_extent(capture.gbuffer.width, flicker_stride),
+                                          shaded_extent(capture.gbuffer.height, flicker_stride)}},
+                               {"gbuffer_stride", flicker_stride},
+                               {"generators", flicker}};
+
+  json sweep = json::object();
+  std::vector<Rgb8Image> k_tiles;
+  for (const auto& name : config.generators) {
+    if (!is_fis(name)) continue;
+    json rows = json::array();
+    for (float K : config.k_sweep) {
+      const auto tg = Clock::now();
+      json row = K == config.K ? flicker[name] : flicker_of(name, K);
+      const GeneratorRun run = run_generator(device, light, name, config, config.light_vsgls, K, 0);
+      const RadianceImage img = K == config.K && k1_images.count(name) > 0
+                                    ? k1_images[name]
+                                    : shade_camera_view(device, camera, run.generator->vsgls(),
+                                                        run.generator->vsgl_count(), config.error_stride);
+      row["K"] = K;
+      row["error"] = error_json(image_error(img, ref_image));
+      row["coverage"] = coverage_json(kernel_coverage(run.vsgls, light_pdf, K));
+      row["power"] = power_json(power_metrics(run.vsgls, light_flux));
+      rows.push_back(row);
+      k_tiles.push_back(tone_map(downscale(img, tile_factor), exposure));
+      say("K sweep " + name + " K=" + k_label(K) + ": " + std::to_string(seconds_since(tg)) + " s");
+    }
+    sweep[name] = rows;
+  }
+  out["k_sweep"] = sweep;
+  if (!k_tiles.empty()) {
+    std::string ks_text;
+    for (float K : config.k_sweep) ks_text += (ks_text.empty() ? "" : ", ") + k_label(K);
+    result.pictures.push_back({scene + "_k_sweep.png",
+                               "Fig. 6 analog: one row per FIS generator (fis_tok15, then fis_modified), K = " +
+                                   ks_text + " left to right, same exposure as the renders",
+                               tile_grid(k_tiles, static_cast<uint32_t>(config.k_sweep.size()))});
+  }
+  timings["flicker_and_k_sweep"] = seconds_since(t0);
+
+  // ---- 4b: the animated sequence (moving light and camera), reported separately ---------------------
+  if (config.sequence) {
+    t0 = Clock::now();
+    const auto frames = sequence_frames(*config.sequence, config.frames);
+    std::map<std::string, FlickerAccumulator> acc;
+    FlickerAccumulator ref_acc;
+    json hashes = json::array();
+    uint32_t seq_stride = 1, seq_ref_stride = 1;
+    std::string seq_scene;
+    for (const auto& dir : frames) {
+      const Capture c = load_capture(dir);
+      if (seq_scene.empty()) seq_scene = c.meta.scene;
+      hashes.push_back(text_hash(capture_hashes_json(c).dump()));
+      const DeviceView cam = upload_view(device, c, ViewKind::kCamera);
+      const DeviceView lig = upload_view(device, c, ViewKind::kLight);
+      seq_stride = stride_for_width(c.gbuffer.width, config.flicker_width);
+      seq_ref_stride = reference_stride(c.rsm, config.sequence_reference_rsm);
+      FixedVsglGenerator ref(device, reference_vpls(c.rsm, c.meta.light, seq_ref_stride, VplExtent::kTexelFootprint), "sequence_reference");
+      const RadianceImage ref_img = shade_camera_view(device, cam, ref.vsgls(), ref.vsgl_count(), seq_stride);
+      ref_acc.add_frame(ref_img, 0.0);
+      for (const auto& name : config.generators) {
+        const GeneratorRun run = run_generator(device, lig, name, config, config.light_vsgls, config.K, 0);
+        acc[name].add_frame(shade_camera_view(device, cam, run.generator->vsgls(), run.generator->vsgl_count(), seq_stride),
+                            power_sum(run.vsgls), ref_img);
+      }
+    }
+    json gens = json::object();
+    for (const auto& name : config.generators)
+      gens[name] = json{{"weighted_cv", acc[name].weighted_cv()},
+                        {"error_cv", acc[name].error_cv()},
+                        {"power_relative_stdev", acc[name].power_relative_stdev()}};
+    out["flicker_animated"] =
+        json{{"sequence", config.sequence->string()},
+             {"scene", seq_scene},
+             {"frames", frames.size()},
+             {"frame_content_hashes", hashes},
+             {"gbuffer_stride", seq_stride},
+             {"reference_rsm_stride", seq_ref_stride},
+             {"reference_weighted_cv", ref_acc.weighted_cv()},
+             {"note", "light and camera move: weighted_cv includes the true change (compare with the reference's); "
+                      "error_cv = sum_p stdev_t(Y - Yref) / sum_p mean_t(Yref) is the change the reference does not have"},
+             {"generators", gens}};
+    timings["animated_sequence"] = seconds_since(t0);
+    say("animated sequence: " + std::to_string(frames.size()) + " frames in " + std::to_string(seconds_since(t0)) + " s");
+  }
+  timings["total"] = seconds_since(t_start);
+  out["timings_s"] = timings;
+  return result;
+}
+
+}  // namespace vsgl

@@ -1,0 +1,69 @@
+#pragma once
+// `vsgl-bench quality` (issue 8): the paper's quality claims measured on one capture.
+//   1. kernel coverage of the FIS generators (Fig. 1): gap, overlap, kernel PDF mass vs K/N;
+//   2. too-bright VSGLs (Fig. 5): max and 99th percentile of Phi_i / mean;  3. power: sum Phi / flux;
+//   4. flicker: F frames of the static capture where only the lattice offset o changes (SPEC §5),
+//      and optionally a recorded animated sequence;
+//   5. the K sweep (Fig. 6): flicker and reference error of both FIS generators for each K;
+//   6. error against a VPL reference (harness/quality/quality_reference.hpp).
+// Everything is computed before anything is written; the result is a JSON document (schema
+// "vsgl-quality", version 1) plus pictures, rendered to markdown by quality_report.hpp.
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "harness/capture/capture.hpp"
+#include "harness/generators/generator_registry.hpp"
+#include "harness/quality/png_image.hpp"
+
+namespace vsgl {
+
+class Device;
+
+inline constexpr int kQualitySchemaVersion = 1;
+
+struct QualityConfig {
+  std::vector<std::string> generators = paper_generator_names();
+  uint32_t light_vsgls = 1024;   // the paper's N for the light view
+  uint32_t camera_vsgls = 2048;  // ... and the camera view
+  float K = 1.0f;
+  uint32_t bisection_iterations = 12;
+  uint32_t kmeans_iterations = 4;
+  uint32_t frames = 32;               // static flicker frames (offsets), and at most this many sequence frames
+  uint32_t error_stride = 4;          // G-buffer stride of the reference comparison (1920x1088 -> 480x272)
+  uint32_t flicker_width = 120;       // flicker images are about this wide (stride = W / this)
+  uint32_t reference_rsm = 128;       // reference RSM side (every lit texel a VPL)
+  uint32_t sequence_reference_rsm = 64;  // the per-frame reference of the animated sequence
+  std::vector<float> k_sweep = {1.0f, 2.0f, 4.0f, 8.0f};
+  uint32_t coverage_picture_side = 512;
+  std::optional<std::filesystem::path> sequence;  // DIR with frame_NNNN captures (vsgl-bench record --frames F)
+  std::filesystem::path source_dir;               // for the git commit in the JSON
+};
+
+struct QualityPicture {
+  std::string file;         // file name, e.g. "atrium_coverage_light_fis_tok15.png"
+  std::string description;  // what the tiles are, in order
+  Rgb8Image image;
+};
+
+struct QualityResult {
+  nlohmann::json json;
+  std::vector<QualityPicture> pictures;
+};
+
+// Runs every metric on `capture` (loaded from `capture_dir`). `progress` receives one line per
+// step (may be empty). Throws InputError for bad parameters or inputs (unknown generator, N larger
+// than the samplable texels, a sequence directory without frames, ...).
+QualityResult run_quality(Device& device, const Capture& capture, const std::filesystem::path& capture_dir,
+                          const QualityConfig& config, const std::function<void(const std::string&)>& progress);
+
+// The frame directories of a recorded sequence: DIR/frame_0000, frame_0001, ... in order, at most
+// `max_frames`. Throws InputError when there is none.
+std::vector<std::filesystem::path> sequence_frames(const std::filesystem::path& dir, uint32_t max_frames);
+
+}  // namespace vsgl

@@ -1,0 +1,73 @@
+#include "harness/quality/shading_pass.hpp"
+
+#include "harness/vk/buffer.hpp"
+#include "harness/vk/command_stream.hpp"
+#include "harness/vk/compute_pipeline.hpp"
+#include "harness/vk/device.hpp"
+#include "harness/generators/device_view.hpp"
+#include "harness/core/error.hpp"
+
+namespace vsgl {
+namespace {
+
+// The push-constant block of kernels/shade_vsgls.comp.
+struct ShadePush {
+  uint32_t width, height, out_width, out_height, stride, vsgl_count, pad0, pad1;
+  glm::vec4 camera_position;
+};
+static_assert(sizeof(ShadePush) == 48);
+
+constexpr uint32_t kGroupSide = 16;  // local_size_x = local_size_y of the kernel
+
+}  // namespace
+
+uint32_t shaded_extent(uint32_t side, uint32_t stride) { return (side + stride - 1) / stride; }
+
+RadianceImage shade_camera_view(Device& device, const DeviceView& camera, const Buffer& vsgls, uint32_t vsgl_count,
+                                uint32_t stride) {
+  if (stride == 0) throw InputError("shading pass: the stride must be at least 1");
+  if (camera.kind != ViewKind::kCamera)
+    throw InputError("shading pass: it shades the camera view (G-buffer), not the " + camera.label);
+  if (vsgl_count == 0) throw InputError("shading pass: no VSGLs to shade with");
+  if (vsgls.size() < VkDeviceSize{vsgl_count} * sizeof(VsglRecord))
+    throw InputError("shading pass: the VSGL buffer '" + vsgls.name() + "' holds fewer than " +
+                     std::to_string(vsgl_count) + " records");
+  RadianceImage image;
+  image.width = shaded_extent(camera.square.width, stride);
+  image.height = shaded_extent(camera.square.height, stride);
+  const std::size_t count = std::size_t{image.width} * image.height;
+
+  Buffer radiance(device, count * sizeof(glm::vec4), MemoryUsage::kDeviceLocal, "shade.radiance");
+  ComputePipeline pipeline(device, {"shade_vsgls.comp", 3, sizeof(ShadePush), {}});
+  BindingSet set(device, pipeline, {camera.texels, BufferBinding(vsgls, 0, VkDeviceSize{vsgl_count} * sizeof(VsglRecord)),
+                                    radiance},
+                 "shade.set");
+  const ShadePush push{camera.square.width, camera.square.height, image.width, image.height, stride, vsgl_count,
+                       0, 0, glm::vec4(camera.source_position, 1.0f)};
+  device.submit_and_wait(
+      [&](VkCommandBuffer cmd) {
+        CommandStream stream(cmd);
+        // The VSGLs were written by an earlier submission: order those writes before the reads.
+        stream.full_barrier();
+        stream.dispatch(pipeline, set, push, div_up(image.width, kGroupSide), div_up(image.height, kGroupSide));
+      },
+      "shading pass");
+  image.pixels = download_vector<glm::vec4>(device, radiance, count);
+  return image;
+}
+
+glm::vec4 shade_pixel_reference(const ViewImage& gbuffer, uint32_t x, uint32_t y, glm::vec3 camera_position,
+                                const std::vector<VsglRecord>& vsgls) {
+  if (gbuffer.at(kValid, x, y) <= 0.5f) return glm::vec4(0.0f);
+  const glm::vec3 P(gbuffer.at(kPX, x, y), gbuffer.at(kPY, x, y), gbuffer.at(kPZ, x, y));
+  const glm::vec3 N(gbuffer.at(kNX, x, y), gbuffer.at(kNY, x, y), gbuffer.at(kNZ, x, y));
+  const glm::vec3 rho_d(gbuffer.at(kDR, x, y), gbuffer.at(kDG, x, y), gbuffer.at(kDB, x, y));
+  const glm::vec3 rho_s(gbuffer.at(kSR, x, y), gbuffer.at(kSG, x, y), gbuffer.at(kSB, x, y));
+  const float roughness = gbuffer.at(kRoughness, x, y);
+  const glm::vec3 wo = glm::normalize(camera_position - P);
+  glm::vec3 sum(0.0f);
+  for (const VsglRecord& v : vsgls) sum += vsgl_radiance_surface(v, P, N, wo, rho_d, rho_s, roughness);
+  return glm::vec4(sum, 1.0f);
+}
+
+}  // namespace vsgl

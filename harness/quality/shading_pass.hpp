@@ -1,0 +1,40 @@
+#pragma once
+// The shading pass (SPEC §8 (a)): the camera view lit by a set of VSGLs, without visibility, as a
+// linear radiance image, so a user can look at what a generator produces (the 2016 paper's Fig. 5).
+// Indirect light only: the spot light's direct contribution and every occlusion are left out.
+//
+// Output pixel (i, j) shades G-buffer texel (i k, j k) for an integer stride k >= 1 (k > 1: a
+// quick preview of ceil(W / k) x ceil(H / k) pixels, for CPU drivers such as lavapipe). Its
+// radiance toward the camera is sum_n vsgl_radiance_surface(vsgl_n, P, N, wo, rho_d, rho_s, alpha)
+// with wo = normalize(camera - P), summed in VSGL index order; pixels without geometry are black.
+// GPU kernel: kernels/shade_vsgls.comp; CPU twin: shade_pixel_reference() (same order, float32).
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "harness/capture/capture.hpp"
+#include "harness/math/vsgl_math.hpp"
+#include "harness/quality/radiance_image.hpp"
+
+namespace vsgl {
+
+class Buffer;
+class Device;
+struct DeviceView;
+
+
+// The output extent for a G-buffer side and a stride: ceil(side / stride).
+uint32_t shaded_extent(uint32_t side, uint32_t stride);
+
+// Shades the uploaded camera view (`camera.kind` must be kCamera; the camera position is its
+// source_position) with the first `vsgl_count` records of `vsgls`. Throws InputError for a stride
+// of 0, a light view, or a buffer holding fewer than `vsgl_count` records.
+RadianceImage shade_camera_view(Device& device, const DeviceView& camera, const Buffer& vsgls, uint32_t vsgl_count,
+                                uint32_t stride);
+
+// The CPU twin of one output pixel: G-buffer texel (x, y) of `gbuffer`, seen from `camera_position`.
+glm::vec4 shade_pixel_reference(const ViewImage& gbuffer, uint32_t x, uint32_t y, glm::vec3 camera_position,
+                                const std::vector<VsglRecord>& vsgls);
+
+}  // namespace vsgl

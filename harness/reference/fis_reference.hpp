@@ -1,0 +1,97 @@
+#pragma once
+// The CPU reference of the FIS generators `fis_tok15` and `fis_modified` (SPEC §4-§7): the moment
+// layers ("additional"), their mip pyramids ("mipmapping"), the stratified hierarchical sampler
+// and the level choice and power of each variant ("filtered_sampling").
+//
+// float32 throughout, with the GPU kernels' operation order (kernels/CONVENTIONS.md): the
+// pyramid and the sampler's texel choices match the GPU bit for bit where its division is
+// correctly rounded (lavapipe); levels and powers involve log2/exp2 and trilinear fetches and
+// match to float rounding.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "harness/capture/capture.hpp"
+#include "harness/math/fis_params.hpp"
+#include "harness/math/virtual_square.hpp"
+#include "harness/math/vsgl_math.hpp"
+
+namespace vsgl {
+
+// A mip pyramid of one vec4 layer over the virtual square (SPEC §4), in the GPU's flat layout.
+struct MipPyramid {
+  VirtualSquare square;
+  std::vector<glm::vec4> texels;  // square.total_texels() entries, level after level, row-major
+
+  // Builds levels 1..L from level 0 (W x H texels, row-major): a level-(l+1) texel is
+  // (c00 + c10 + c01 + c11) * 0.25 of its children, in that order, children outside level l's
+  // extent reading as zero. Throws InputError when level0 has not W * H entries.
+  static MipPyramid build(const std::vector<glm::vec4>& level0, uint32_t w, uint32_t h);
+
+  uint32_t levels() const { return square.levels; }  // L
+  uint32_t size() const { return square.size; }      // S
+  // Texel (x, y) of `level`; zero outside the level's in-bounds extent (and beyond the square).
+  glm::vec4 at(uint32_t level, int32_t x, int32_t y) const;
+  // The level-L texel: the mean over the whole virtual square.
+  glm::vec4 top() const { return texels.back(); }
+};
+
+// The "additional" pass on the CPU: layers M0, M1, M2 of every texel of a view (SPEC §4), each
+// W * H vec4s, through texel_moments(). source_pos: the spot light (RSM) or the camera (G-buffer).
+// Throws InputError when the view's planes do not hold W * H texels.
+std::array<std::vector<glm::vec4>, 3> reference_moments(const ViewImage& view, glm::vec3 source_pos);
+
+// Kernel centre u_i of the Fibonacci lattice (SPEC §5):
+//   u.x = (i + 0.5) / N,  u.y = ((i * 2654435769 + offset_bits) mod 2^32 >> 8) * 2^-24.
+glm::vec2 fibonacci_point(uint32_t i, uint32_t N, uint32_t offset_bits);
+
+// One sample of the hierarchical warping.
+struct SamplePoint {
+  glm::uvec2 texel{0u};  // chosen level-0 texel
+  glm::vec2 x{0.0f};     // kernel centre in [0,1]^2 of the square
+  float pdf = 0.0f;      // p(x) = q0(texel) / qL
+  // Smallest |u - split| over the path's decisions (1 when there were none, L = 0): a GPU whose
+  // division is not correctly rounded may pick another child only where this is tiny.
+  float min_margin = 1.0f;
+};
+
+// N kernel centres warped through the PDF pyramid q (the .w channel: the M2 layer's pyramid).
+// Throws InputError for N = 0 and for a PDF that is zero (or not finite) over the whole square.
+std::vector<SamplePoint> reference_samples(const MipPyramid& pdf_pyramid, uint32_t N, uint32_t offset_bits);
+
+// Fractional-level lookup (SPEC §4): bilinear within a level (taps outside the extent read zero),
+// linear between floor(l) and min(floor(l) + 1, L). l is clamped to [0, L].
+glm::vec4 bilinear(const MipPyramid& layer, glm::vec2 x, uint32_t level);
+glm::vec4 fetch(const MipPyramid& layer, glm::vec2 x, float level);
+
+
+// Eq. 1 of the 2016 paper: l = clamp(0.5 log2(K M / (N p)), 0, L).
+float tok15_level(float pdf, uint32_t N, float K, const VirtualSquare& square);
+// The modified kernel's share of the probability, g(l) = (4^l / M) * p_bar(x, l) (Eq. 3).
+float modified_kernel_mass(const MipPyramid& pdf_pyramid, glm::vec2 x, float level);
+// Eq. 3 with K: the level where g(l) = K / N, by bisection on [0, L]; 0 when g(0) >= K / N.
+float modified_level(const MipPyramid& pdf_pyramid, glm::vec2 x, uint32_t N, float K, uint32_t iterations);
+// Largest |l - l_exact| the bisection leaves: L / 2^(iterations + 1).
+float bisection_tolerance(uint32_t levels, uint32_t iterations);
+
+// What distinguishes the two generators (SPEC §6.1: "about ten lines"): the level and the density
+// that divides the power.
+struct FisKernel {
+  float level = 0.0f;
+  float density = 0.0f;  // p(x_i) (Tok15) or p_bar(x_i, l_i) (modified); recorded in the VSGL
+};
+FisKernel fis_kernel(FisVariant variant, const MipPyramid& pdf_pyramid, const SamplePoint& sample,
+                     const FisParams& params);
+// Tok15: M f_bar / max(N p, K) (Eq. 4 scaled by M);  modified: M f_bar / (N p_bar) (Eq. 5).
+glm::vec3 fis_power(FisVariant variant, glm::vec3 mean_flux, const FisKernel& kernel, const FisParams& params,
+                    const VirtualSquare& square);
+
+// The whole generator: N VSGLs from the pyramids of M0, M1, M2 (the PDF is M2's .w). Throws
+// InputError for N = 0, N larger than the texels of nonzero PDF, K <= 0 or not finite, pyramids
+// of different sizes, or an all-zero PDF.
+std::vector<VsglRecord> reference_fis(const std::array<MipPyramid, 3>& moments, FisVariant variant,
+                                      const FisParams& params);
+
+}  // namespace vsgl

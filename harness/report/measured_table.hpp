@@ -1,0 +1,52 @@
+#pragma once
+// A measured paper table and the context of its run, with the accessors the table JSON and the
+// claim checks share (medians of totals, the paper's numbers beside them).
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "harness/core/source_lines.hpp"
+#include "harness/timing/timing_runner.hpp"
+#include "harness/vk/device_info.hpp"
+
+namespace vsgl {
+
+inline constexpr int kTableSchemaVersion = 1;
+
+// One measured paper table (1: atrium, 2: conference).
+struct MeasuredTable {
+  int number = 1;
+  std::string scene;
+  std::string capture_dir;
+  bool recorded_now = false;
+  nlohmann::ordered_json capture;  // {"hashes": ..., sizes, ...}
+  std::vector<std::string> generators;  // in column order
+  TimingResult timing;
+};
+
+// Everything of a run that is not a measurement.
+struct ReportContext {
+  DeviceInfo device;
+  nlohmann::json paper;             // results/paper/paper_tables.json
+  std::string paper_path;
+  nlohmann::ordered_json config;    // views, N, K, iterations, timing options
+  nlohmann::ordered_json build;     // build_json()
+  nlohmann::ordered_json run;       // started, validation, quick, ...
+  std::map<std::string, GeneratorLines> lines;   // per generator
+  std::map<std::string, uint32_t> shaders;       // per generator: kernels (pipelines) it dispatches
+};
+
+inline const char* const kTableViews[] = {"camera_view", "light_view"};
+
+bool has_generator(const MeasuredTable& t, const std::string& g);
+// Throws std::logic_error when the table has no timing of the case.
+const CaseTiming& need_case(const MeasuredTable& t, const std::string& generator, const std::string& view);
+// Per-round sums of the camera- and light-view totals.
+std::vector<double> generator_totals(const MeasuredTable& t, const std::string& g);
+double median_total(const MeasuredTable& t, const std::string& g);
+double median_view(const MeasuredTable& t, const std::string& g, const std::string& view);
+
+}  // namespace vsgl

@@ -1,0 +1,83 @@
+#include "harness/report/run_context.hpp"
+
+#include <ctime>
+
+#include "harness/core/json_reader.hpp"
+#include "harness/generators/generator_registry.hpp"
+#include "harness/report/paper_tables.hpp"
+#include "harness/timing/run_provenance.hpp"
+
+namespace vsgl {
+namespace {
+
+using ojson = nlohmann::ordered_json;
+
+std::string utc_now() {
+  const std::time_t now = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&now, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
+  return buf;
+}
+
+}  // namespace
+
+RunContext make_run_context(const DeviceInfo& device, const TablesOptions& o) {
+  RunContext out;
+  ReportContext& ctx = out.report;
+  ctx.device = device;
+  ctx.paper = load_paper_tables(o.paper_tables);
+  ctx.paper_path = o.paper_tables.string();
+  out.schema = read_json_file(o.schema, "the table schema", " (use --schema FILE)");
+  ctx.build = build_json(o.source_dir);
+  ctx.run = ojson{{"started_utc", utc_now()},
+                  {"validation_layer", o.validation},
+                  {"quick", o.quick},
+                  {"protocol_compliant", o.timing.warmup >= 2 && o.timing.min_repetitions >= 10},
+                  {"clocks_locked_claimed", o.clocks_locked},
+                  {"clocks_note", "Vulkan cannot lock GPU clocks: lock them outside (e.g. `nvidia-smi -lgc <MHz>` on "
+                                  "NVIDIA, `rocm-smi --setperfdeterminism <MHz>` on AMD) and pass --clocks-locked"}};
+  if (!o.debug_slow.empty()) ctx.run["debug_slow"] = o.debug_slow;  // TEST-ONLY: these timings are inflated
+  for (const auto& g : generator_names()) ctx.lines[g] = count_generator_lines(generator_sources(g), o.source_dir);
+  for (const auto& g : o.generators) ctx.shaders[g] = static_cast<uint32_t>(generator_sources(g).kernels.size());
+  return out;
+}
+
+nlohmann::ordered_json config_json(const TablesOptions& o, const Capture& capture) {
+  const TimingOptions& tm = o.timing;
+  ojson views{{"camera_view", ojson{{"source", "gbuffer"},
+                                     {"width", capture.gbuffer.width},
+                                     {"height", capture.gbuffer.height},
+                                     {"vsgl_count", o.camera_vsgls}}},
+              {"light_view", ojson{{"source", "rsm"},
+                                   {"width", capture.rsm.width},
+                                   {"height", capture.rsm.height},
+                                   {"vsgl_count", o.light_vsgls}}}};
+  return ojson{
+      {"views", views},
+      {"K", o.generator.K},
+      {"bisection_iterations", o.generator.bisection_iterations},
+      {"kmeans_iterations", o.generator.kmeans_iterations},
+      {"kmeans_sum", "kmeans_2d/kmeans_3d: one thread per cluster sums sequentially (the paper's); *_segsum: "
+                     "parallel segmented reduction (extra, not in the paper)"},
+      {"offset_bits", o.generator.offset_bits},
+      {"sampler", "Fibonacci lattice + hierarchical sample warping (SPEC §5)"},
+      {"generators", o.generators},
+      {"timing", ojson{{"warmup", tm.warmup},
+                       {"min_repetitions", tm.min_repetitions},
+                       {"max_repetitions", tm.max_repetitions},
+                       {"noise_target", tm.noise_target},
+                       {"time_cap_s", tm.time_cap_s},
+                       {"cold", tm.cold},
+                       {"cold_bytes", tm.cold ? tm.cold_bytes : 0},
+                       {"schedule", "each case recorded once and replayed; warm-up rounds discarded; round-robin "
+                                    "over all (generator, view) cases with a rotating start; stop after "
+                                    "min_repetitions once every case total has IQR/median <= noise_target, or at "
+                                    "time_cap_s, or at max_repetitions"},
+                       {"timestamps", "full barrier + timestamp + full barrier at every phase boundary"},
+                       {"quantiles", "linear interpolation between order statistics (Hyndman-Fan type 7)"},
+                       {"stdev", "sample standard deviation (n - 1)"}}}};
+}
+
+}  // namespace vsgl

@@ -1,0 +1,147 @@
+#include "harness/report/table_claims.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <string>
+
+#include "harness/core/error.hpp"
+#include "harness/generators/generator_registry.hpp"
+
+namespace vsgl {
+namespace {
+
+using ojson = nlohmann::ordered_json;
+
+// The thresholds of the claims, each named once (the criterion texts print them).
+constexpr double kOverheadFloorUs = 10.0;       // claim 1: modified - Tok15 within max(10 us, 1 %)
+constexpr double kOverheadFraction = 0.01;
+constexpr double kKmeansOverModifiedMin = 7.0;  // claim 2: k-means at least 7x the modified FIS
+constexpr double kFisPdfChangeMax = 0.10;       // claim 3: FIS moves at most 10 % from Table 1 to 2
+constexpr double kLinesRatioMin = 4.0;          // claim 6: k-means at least 4x the lines of FIS
+
+std::string number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+ojson claim(const std::string& text, const std::string& id, const std::string& criterion, ojson measured,
+            std::optional<bool> holds, const std::string& note, bool informative) {
+  return ojson{{"id", id},
+               {"claim", text},
+               {"criterion", criterion},
+               {"measured", std::move(measured)},
+               {"holds", holds ? ojson(*holds) : ojson(nullptr)},
+               {"note", note},
+               {"informative_only", informative}};
+}
+
+}  // namespace
+
+nlohmann::ordered_json claims_json(const MeasuredTable& t, const MeasuredTable* other, const ReportContext& ctx) {
+  const auto& texts = ctx.paper.at("claims");
+  if (!texts.is_array() || texts.size() != 6)
+    throw InputError(ctx.paper_path + ": expected the paper's 6 claims, found " + std::to_string(texts.size()));
+  const auto text = [&](std::size_t i) { return texts[i].get<std::string>(); };
+  // A CPU device (lavapipe) says nothing about GPU performance: its verdicts are informative.
+  const bool informative = ctx.device.type == VK_PHYSICAL_DEVICE_TYPE_CPU;
+  const bool tok = has_generator(t, "fis_tok15"), mod = has_generator(t, "fis_modified");
+  ojson out = ojson::array();
+
+  {  // 1: the modified kernel costs only microseconds more.
+    const std::string crit = "|median total(fis_modified) - median total(fis_tok15)| <= max(" + number(kOverheadFloorUs) +
+                             " us, " + number(100 * kOverheadFraction) + "% of the Tok15 total)";
+    if (tok && mod) {
+      const double tok_ms = median_total(t, "fis_tok15");
+      const double diff_us = 1e3 * (median_total(t, "fis_modified") - tok_ms);
+      const double bound_us = std::max(kOverheadFloorUs, kOverheadFraction * 1e3 * tok_ms);
+      out.push_back(claim(text(0), "modified_overhead", crit,
+                          ojson{{"overhead_us", diff_us}, {"bound_us", bound_us}, {"tok15_total_ms", tok_ms}},
+                          std::abs(diff_us) <= bound_us, "", informative));
+    } else {
+      out.push_back(claim(text(0), "modified_overhead", crit, ojson::object(), std::nullopt,
+                          "needs fis_tok15 and fis_modified in this run", informative));
+    }
+  }
+  {  // 2: modified FIS is several times faster than the paper's k-means generators.
+    const std::string crit = "median total(kmeans_2d and kmeans_3d) / median total(fis_modified) >= " +
+                             number(kKmeansOverModifiedMin) + " for each";
+    ojson measured = ojson::object();
+    bool all = true, any = false;
+    if (mod)
+      for (const char* k : {"kmeans_2d", "kmeans_3d"})
+        if (has_generator(t, k)) {
+          const double ratio = median_total(t, k) / median_total(t, "fis_modified");
+          measured[k] = ratio;
+          all = all && ratio >= kKmeansOverModifiedMin;
+          any = true;
+        }
+    out.push_back(claim(text(1), "modified_vs_kmeans_speed", crit, measured, any ? std::optional<bool>(all) : std::nullopt,
+                        any ? "" : "needs fis_modified and a paper k-means generator in this run", informative));
+  }
+  {  // 3: FIS cost does not depend on the PDF, k-means cost does.
+    const std::string crit = "Table 1 -> Table 2 change of the median total: |change| <= " + number(100 * kFisPdfChangeMax) +
+                             "% for both FIS generators, and larger for each paper k-means generator than for either FIS generator";
+    ojson measured = ojson::object();
+    std::optional<bool> holds;
+    std::string note;
+    if (other == nullptr) {
+      note = "needs both tables in one run";
+    } else {
+      const MeasuredTable& t1 = t.number == 1 ? t : *other;
+      const MeasuredTable& t2 = t.number == 1 ? *other : t;
+      double fis_max = -1;
+      bool fis_ok = true, kmeans_ok = true, fis_any = false, kmeans_any = false;
+      for (const char* g : {"fis_tok15", "fis_modified", "kmeans_2d", "kmeans_3d"}) {
+        if (!has_generator(t1, g) || !has_generator(t2, g)) continue;
+        const double change = median_total(t2, g) / median_total(t1, g) - 1.0;
+        measured[g] = change;
+        if (std::string(g).rfind("fis", 0) == 0) {
+          fis_any = true;
+          fis_ok = fis_ok && std::abs(change) <= kFisPdfChangeMax;
+          fis_max = std::max(fis_max, std::abs(change));
+        }
+      }
+      for (const char* g : {"kmeans_2d", "kmeans_3d"})
+        if (measured.contains(g)) {
+          kmeans_any = true;
+          kmeans_ok = kmeans_ok && std::abs(measured[g].get<double>()) > fis_max;
+        }
+      if (fis_any && kmeans_any) holds = fis_ok && kmeans_ok;
+      else note = "needs both FIS generators' or a FIS and a paper k-means generator's timings in both tables";
+      if (fis_any && !kmeans_any) {
+        holds = std::nullopt;
+        note = "FIS part measured (|change| <= " + number(100 * kFisPdfChangeMax) + "%: " + std::string(fis_ok ? "yes" : "no") +
+               "); the k-means part needs kmeans_2d or kmeans_3d";
+      }
+    }
+    out.push_back(claim(text(2), "pdf_independence", crit, measured, holds, note, informative));
+  }
+  out.push_back(claim(text(3), "kernel_overlaps_quality", "not a timing claim", ojson::object(), std::nullopt,
+                      "image quality (Fig. 1, Fig. 5) is checked by `vsgl-bench verify`/quality, not by the tables",
+                      informative));
+  out.push_back(claim(text(4), "k_temporal_coherence", "not a timing claim", ojson::object(), std::nullopt,
+                      "temporal coherence for K > 1 (Fig. 6) is not measured by the tables", informative));
+  {  // 6: lines of code, counted from the sources (whether or not k-means was timed).
+    const std::string crit = "lines_of_code(kmeans_2d and kmeans_3d) / lines_of_code(fis_modified) >= " +
+                             number(kLinesRatioMin) + " for each";
+    ojson measured = ojson::object();
+    bool all = true, any = false;
+    if (ctx.lines.count("fis_modified"))
+      for (const char* k : {"kmeans_2d", "kmeans_3d"})
+        if (ctx.lines.count(k)) {
+          const double ratio = static_cast<double>(ctx.lines.at(k).total) / ctx.lines.at("fis_modified").total;
+          measured[k] = ratio;
+          all = all && ratio >= kLinesRatioMin;
+          any = true;
+        }
+    // Not a timing: the same on every device.
+    out.push_back(claim(text(5), "lines_of_code", crit, measured, any ? std::optional<bool>(all) : std::nullopt,
+                        any ? "" : "needs the line counts of fis_modified and k-means", false));
+  }
+  return out;
+}
+
+}  // namespace vsgl

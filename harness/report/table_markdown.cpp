@@ -1,0 +1,129 @@
+#include "harness/report/table_markdown.hpp"
+
+#include <cstdio>
+#include <sstream>
+#include <vector>
+
+namespace vsgl {
+namespace {
+
+using ojson = nlohmann::ordered_json;
+
+std::string fixed(double v, int digits = 3) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+  return buf;
+}
+std::string paper_cell(const ojson& v, int digits = 3) { return v.is_number() ? fixed(v.get<double>(), digits) : "—"; }
+
+std::string phase_title(const std::string& phase, const std::string& view) {
+  if (phase == "additional") return view == "camera_view" ? "Additional G-buffer" : "Additional RSM";
+  if (phase == "mipmapping") return "Mipmapping";
+  if (phase == "filtered_sampling") return "Filtered sampling";
+  if (phase == "cluster_assignment") return "Cluster assignment";
+  if (phase == "sort") return "Sort";
+  if (phase == "sum") return "Sum";
+  return phase;
+}
+
+void row(std::ostringstream& os, const std::vector<std::string>& cells) {
+  os << "|";
+  for (const auto& c : cells) os << " " << c << " |";
+  os << "\n";
+}
+
+}  // namespace
+
+std::string table_markdown(const ojson& t) {
+  std::ostringstream os;
+  const ojson& gens = t.at("generators");
+  const ojson& views = t.at("config").at("views");
+  os << "## Table " << t.at("table").get<int>() << ": " << t.at("title").get<std::string>() << "\n\n";
+  os << "Scene `" << t.at("capture").at("scene").get<std::string>() << "` on **" << t.at("device").at("name").get<std::string>()
+     << "** (" << t.at("driver").at("name").get<std::string>() << " " << t.at("driver").at("version").get<std::string>()
+     << ", Vulkan " << t.at("api_version").get<std::string>() << "); paper: " << t.at("paper").at("gpu").get<std::string>()
+     << ". Median of " << t.at("timing").at("repetitions").get<int>() << " repetitions (stop: "
+     << t.at("timing").at("stop_reason").get<std::string>() << ", worst IQR/median "
+     << fixed(t.at("timing").at("worst_relative_iqr").get<double>()) << "), ms.\n\n";
+
+  std::vector<std::string> head{""}, rule{"---"};
+  for (const auto& [g, gj] : gens.items()) {
+    head.push_back(gj.at("label").get<std::string>());
+    head.push_back("paper");
+    rule.push_back("---:");
+    rule.push_back("---:");
+  }
+  row(os, head);
+  row(os, rule);
+  for (const char* view : {"camera_view", "light_view"}) {
+    const ojson& vc = views.at(view);
+    std::vector<std::string> title{std::string("**") + (std::string(view) == "camera_view" ? "PDF for BRSM (camera view)" : "PDF (light view)") +
+                                   "**, N = " + std::to_string(vc.at("vsgl_count").get<int>())};
+    for (std::size_t i = 0; i < 2 * gens.size(); ++i) title.emplace_back("");
+    row(os, title);
+    for (std::size_t p = 0; p < 3; ++p) {
+      std::vector<std::string> cells{"phase " + std::to_string(p + 1)};
+      for (const auto& [g, gj] : gens.items()) {
+        const ojson& phases = gj.at("views").at(view).at("phases");
+        if (p >= phases.size()) {
+          cells.emplace_back("");
+          cells.emplace_back("");
+          continue;
+        }
+        auto it = phases.begin();
+        std::advance(it, static_cast<std::ptrdiff_t>(p));
+        cells.push_back(phase_title(it.key(), view) + ": " + fixed(it.value().at("median_ms").get<double>()));
+        cells.push_back(paper_cell(it.value().at("paper_ms")));
+      }
+      row(os, cells);
+    }
+  }
+  std::vector<std::string> total{"**Total**"};
+  for (const auto& [g, gj] : gens.items()) {
+    total.push_back("**" + fixed(gj.at("total").at("median_ms").get<double>()) + "**");
+    total.push_back(paper_cell(gj.at("total").at("paper_ms")));
+  }
+  row(os, total);
+
+  const ojson& r = t.at("ratios");
+  if (!r.empty()) {
+    os << "\n### Ratios the paper argues with\n\n";
+    row(os, {"ratio", "this run", "paper"});
+    row(os, {"---", "---:", "---:"});
+    if (r.contains("modified_minus_tok15_us"))
+      for (const auto& [k, v] : r["modified_minus_tok15_us"].items())
+        row(os, {"modified − Tok15, " + k + " (µs)", fixed(v.at("measured").get<double>(), 1), paper_cell(v.at("paper"), 1)});
+    if (r.contains("kmeans_over_modified"))
+      for (const auto& [k, v] : r["kmeans_over_modified"].items())
+        row(os, {k + " / modified total", fixed(v.at("measured").get<double>(), 2), paper_cell(v.at("paper"), 2)});
+    if (r.contains("table1_to_table2"))
+      for (const auto& [k, v] : r["table1_to_table2"].items())
+        row(os, {k + " total, Table 2 / Table 1", fixed(v.at("measured").get<double>(), 3), paper_cell(v.at("paper"), 3)});
+  }
+
+  os << "\n### Table 3 analog (counted, not typed in)\n\n";
+  row(os, {"generator", "compute shaders", "paper", "dispatch calls (camera / light)", "paper", "lines of code", "paper"});
+  row(os, {"---", "---:", "---:", "---:", "---:", "---:", "---:"});
+  for (const auto& [g, v] : t.at("table3").items()) {
+    row(os, {gens.at(g).at("label").get<std::string>(), std::to_string(v.at("shaders").at("measured").get<int>()),
+             paper_cell(v.at("shaders").at("paper"), 0),
+             std::to_string(v.at("dispatch_calls").at("camera_view").get<int>()) + " / " +
+                 std::to_string(v.at("dispatch_calls").at("light_view").get<int>()),
+             paper_cell(v.at("dispatch_calls").at("paper"), 0), std::to_string(v.at("lines_of_code").at("measured").get<int>()),
+             paper_cell(v.at("lines_of_code").at("paper"), 0)});
+  }
+
+  os << "\n### The paper's claims on this run\n\n";
+  for (const auto& c : t.at("claims")) {
+    const ojson& h = c.at("holds");
+    const std::string verdict = h.is_null() ? "not measured" : (h.get<bool>() ? "holds" : "does not hold");
+    os << "- **" << verdict << "**" << (c.at("informative_only").get<bool>() && !h.is_null() ? " (informative: CPU device)" : "")
+       << " — " << c.at("claim").get<std::string>() << "\n  - criterion: " << c.at("criterion").get<std::string>();
+    if (!c.at("measured").empty()) os << "\n  - measured: `" << c.at("measured").dump() << "`";
+    if (!c.at("note").get<std::string>().empty()) os << "\n  - " << c.at("note").get<std::string>();
+    os << "\n";
+  }
+  return os.str();
+}
+
+}  // namespace vsgl

@@ -1,0 +1,61 @@
+#include "harness/report/table_measurement.hpp"
+
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+#include "harness/generators/device_view.hpp"
+#include "harness/generators/generator_registry.hpp"
+#include "harness/report/run_context.hpp"
+#include "harness/scene/capture_provisioning.hpp"
+#include "harness/timing/timing_runner.hpp"
+#include "harness/vk/device.hpp"
+
+namespace vsgl {
+
+TableMeasurement measure_table(Device& device, const TablesOptions& o, int number,
+                               const std::function<void(const TablesEvent&)>& on_event) {
+  using ojson = nlohmann::ordered_json;
+  const auto say = [&](const std::string& msg) {
+    if (on_event) on_event(TablesEvent{msg, nullptr, number});
+  };
+  TableMeasurement out;
+  MeasuredTable& t = out.table;
+  t.number = number;
+  t.scene = table_scene(number);
+  t.generators = o.generators;
+  const std::filesystem::path dir = o.captures_dir / t.scene;
+  t.capture_dir = dir.string();
+  if (!std::filesystem::exists(dir / "capture.json")) say("recording the missing capture " + dir.string());
+  ProvidedCapture provided = provide_capture(device, t.scene, o.record_sizes, dir);
+  t.recorded_now = provided.recorded;
+  const Capture& capture = provided.capture;
+  t.capture = ojson{{"hashes", capture_hashes_json(capture)},
+                    {"frame", capture.meta.frame},
+                    {"recorded_on", capture.meta.device},
+                    {"tool_version", capture.meta.tool_version},
+                    {"brsm_build_ms", capture.meta.brsm_build_ms}};
+  out.config = config_json(o, capture);
+
+  // Inputs uploaded, generators built and recorded before any timing (SPEC §9).
+  const DeviceView camera = upload_view(device, capture, ViewKind::kCamera);
+  const DeviceView light = upload_view(device, capture, ViewKind::kLight);
+  std::vector<std::unique_ptr<VsglGenerator>> generators;
+  TimingRunner runner(device, o.timing);
+  for (const auto& g : o.generators)
+    for (const DeviceView* view : {&camera, &light}) {
+      GeneratorConfig cfg = o.generator;
+      cfg.vsgl_count = view->kind == ViewKind::kCamera ? o.camera_vsgls : o.light_vsgls;
+      generators.push_back(make_generator(g, device, *view, cfg));
+      if (o.wrap_generator) generators.back() = o.wrap_generator(device, std::move(generators.back()));
+      runner.add(TimingCase{g, view_name(view->kind), generators.back().get()});
+    }
+  say("timing table " + std::to_string(number) + " (" + t.scene + "): " + std::to_string(generators.size()) +
+                  " cases");
+  t.timing = runner.run([&](const TimingProgress& p) {
+    if (on_event) on_event(TablesEvent{"", &p, number});
+  });
+  return out;
+}
+
+}  // namespace vsgl

@@ -1,0 +1,24 @@
+#pragma once
+// Step 2 of `tables`, once per table: provide its capture (record it when missing), upload both
+// views, build and record every generator on each (SPEC §9: inputs uploaded and command buffers
+// recorded before any timing), and time them interleaved with the protocol of timing_runner.hpp.
+#include <functional>
+
+#include <nlohmann/json.hpp>
+
+#include "harness/report/measured_table.hpp"
+#include "harness/report/tables_run.hpp"
+
+namespace vsgl {
+
+class Device;
+
+struct TableMeasurement {
+  MeasuredTable table;
+  nlohmann::ordered_json config;  // config_json() of its capture
+};
+
+TableMeasurement measure_table(Device& device, const TablesOptions& options, int number,
+                               const std::function<void(const TablesEvent&)>& on_event);
+
+}  // namespace vsgl

@@ -1,0 +1,95 @@
+#include "harness/report/tables_run.hpp"
+
+#include <set>
+
+#include "harness/core/atomic_file.hpp"
+#include "harness/core/error.hpp"
+#include "harness/core/json_schema_subset.hpp"
+#include "harness/generators/generator_registry.hpp"
+#include "harness/report/run_context.hpp"
+#include "harness/report/table_json.hpp"
+#include "harness/report/table_markdown.hpp"
+#include "harness/report/table_measurement.hpp"
+#include "harness/vk/device.hpp"
+
+namespace vsgl {
+namespace {
+
+using ojson = nlohmann::ordered_json;
+
+void check_options(const TablesOptions& o) {
+  if (o.out_dir.empty()) throw UsageError("tables needs an output directory");
+  if (o.tables.empty()) throw UsageError("no table to produce");
+  std::set<int> seen;
+  for (int t : o.tables) {
+    table_scene(t);
+    if (!seen.insert(t).second) throw UsageError("table " + std::to_string(t) + " is asked for twice");
+  }
+  if (o.generators.empty()) throw UsageError("no generator to time");
+  const auto known = generator_names();
+  std::set<std::string> gens;
+  for (const auto& g : o.generators) {
+    if (std::find(known.begin(), known.end(), g) == known.end()) generator_sources(g);  // throws naming the known ones
+    if (!gens.insert(g).second) throw UsageError("generator " + g + " is asked for twice");
+  }
+  for (const auto& g : o.debug_slow)
+    if (!gens.contains(g)) throw UsageError("--debug-slow " + g + ": not one of the generators timed");
+  if (!o.debug_slow.empty() && !o.wrap_generator) throw std::logic_error("debug_slow names generators but no wrapper slows them");
+  if (o.camera_vsgls == 0 || o.light_vsgls == 0) throw InputError("N = 0: at least one VSGL is needed");
+  o.timing.check();
+}
+
+}  // namespace
+
+std::string table_scene(int table) {
+  if (table == 1) return "atrium";
+  if (table == 2) return "conference";
+  throw UsageError("there is no paper table " + std::to_string(table) + " with timings (tables are 1 and 2)");
+}
+
+TablesOutcome run_tables(Device& device, const TablesOptions& o, const std::function<void(const TablesEvent&)>& on_event) {
+  check_options(o);
+  require_timestamps(device.info());  // before minutes of recording
+  // 1. Everything that is not a measurement, checked before any timing.
+  const RunContext run = make_run_context(device.info(), o);
+  // 2. Each table: its capture, its generators, their interleaved timing.
+  std::vector<TableMeasurement> measured;
+  for (int number : o.tables) measured.push_back(measure_table(device, o, number, on_event));
+  // 3. The documents, each complete and schema-valid before anything is written.
+  TablesOutcome out;
+  std::filesystem::create_directories(o.out_dir);
+  std::vector<std::pair<std::filesystem::path, std::string>> files;
+  for (std::size_t i = 0; i < measured.size(); ++i) {
+    const MeasuredTable* other = nullptr;  // the other paper table, for the Table 1 -> 2 change
+    for (std::size_t j = 0; j < measured.size(); ++j)
+      if (j != i) other = &measured[j].table;
+    ReportContext table_ctx = run.report;
+    table_ctx.config = measured[i].config;
+    ojson doc;
+    try {
+      doc = table_json(measured[i].table, other, table_ctx);
+      require_finite_numbers(doc);
+    } catch (const std::invalid_argument& e) {
+      throw DeviceError("table " + std::to_string(measured[i].table.number) + ": " + e.what());
+    }
+    const auto problems = validate_against_schema(nlohmann::json::parse(doc.dump()), run.schema);
+    if (!problems.empty()) {
+      std::string all;
+      for (const auto& p : problems) all += "\n  " + p;
+      throw std::logic_error("table " + std::to_string(measured[i].table.number) + " does not conform to " + o.schema.string() + ":" + all);
+    }
+    const std::string stem = "table" + std::to_string(measured[i].table.number);
+    files.emplace_back(o.out_dir / (stem + ".json"), doc.dump(2) + "\n");
+    out.markdown.push_back(table_markdown(doc));
+    if (!o.json_only) files.emplace_back(o.out_dir / (stem + ".md"), out.markdown.back());
+    out.documents.push_back(std::move(doc));
+  }
+  // Nothing is written until every table is complete and valid.
+  for (const auto& [path, text] : files) {
+    write_text_atomic(path, text);
+    out.written.push_back(path);
+  }
+  return out;
+}
+
+}  // namespace vsgl

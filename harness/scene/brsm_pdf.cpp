@@ -1,0 +1,109 @@
+#include "harness/scene/brsm_pdf.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <optional>
+
+#include "harness/vk/buffer.hpp"
+#include "harness/vk/command_stream.hpp"
+#include "harness/vk/compute_pipeline.hpp"
+#include "harness/vk/device.hpp"
+#include "harness/generators/device_view.hpp"
+#include "harness/core/error.hpp"
+#include "harness/generators/fis/fis_generator.hpp"
+#include "harness/vk/timestamp_pool.hpp"
+
+namespace vsgl {
+namespace {
+
+struct BrsmPush {
+  uint32_t width, height, camera_count, pad;
+  glm::vec4 light_position;
+};
+
+struct VplLobe {
+  glm::vec3 axis;
+  float sharpness;
+  float power;
+};
+
+VplLobe vpl_lobe(glm::vec3 P, glm::vec3 N, glm::vec3 flux_d, glm::vec3 flux_s, float roughness, glm::vec3 light) {
+  VplLobe l{};
+  const glm::vec3 phi = flux_d + flux_s;
+  l.power = phi.r + phi.g + phi.b;
+  const glm::vec3 rbar = texel_emission_lobe(P, N, flux_d, flux_s, roughness, light);
+  const float r = glm::length(rbar);
+  l.axis = r > 0.0f ? rbar / r : N;
+  l.sharpness = banerjee_sharpness(r);
+  return l;
+}
+
+}  // namespace
+
+float brsm_texel_weight(const ViewImage& rsm, uint32_t x, uint32_t y, glm::vec3 light_position,
+                        const std::vector<VsglRecord>& camera_vsgls) {
+  if (rsm.at(kValid, x, y) <= 0.5f) return 0.0f;
+  const glm::vec3 P(rsm.at(kPX, x, y), rsm.at(kPY, x, y), rsm.at(kPZ, x, y));
+  const glm::vec3 N(rsm.at(kNX, x, y), rsm.at(kNY, x, y), rsm.at(kNZ, x, y));
+  const glm::vec3 fd(rsm.at(kDR, x, y), rsm.at(kDG, x, y), rsm.at(kDB, x, y));
+  const glm::vec3 fs(rsm.at(kSR, x, y), rsm.at(kSG, x, y), rsm.at(kSB, x, y));
+  const VplLobe lobe = vpl_lobe(P, N, fd, fs, rsm.at(kRoughness, x, y), light_position);
+  if (!(lobe.power > 0.0f)) return 0.0f;
+  float importance = 0.0f;
+  for (const auto& cam : camera_vsgls) {
+    if (glm::dot(N, cam.mu() - P) <= 0.0f) continue;  // behind the VPL: it emits nothing there
+    importance += vsgl_importance_to_vpl(cam, P, lobe.axis, lobe.sharpness);
+  }
+  return lobe.power * importance;
+}
+
+BrsmBuild build_brsm_pdf(Device& device, Capture& capture, uint32_t camera_vsgls) {
+  const auto wall_start = std::chrono::steady_clock::now();
+  const DeviceView camera = upload_view(device, capture, ViewKind::kCamera);
+  FisParams params;
+  params.vsgl_count = std::min(camera_vsgls, camera.samplable_texels);
+  FisGenerator camera_fis(device, camera, FisVariant::kModified, params);
+
+  const ViewImage& rsm = capture.rsm;
+  const auto rsm_texels = interleave_view(rsm);
+  Buffer rsm_buffer(device, rsm_texels.size() * sizeof(glm::vec4), MemoryUsage::kDeviceLocal, "brsm.rsm_texels");
+  upload(device, rsm_buffer, rsm_texels.data(), rsm_texels.size() * sizeof(glm::vec4));
+  Buffer pdf(device, rsm.texels() * sizeof(float), MemoryUsage::kDeviceLocal, "brsm.pdf");
+  ComputePipeline pipeline(device, {"brsm_pdf.comp", 3, sizeof(BrsmPush), {}});
+  BindingSet set(device, pipeline, {rsm_buffer, camera_fis.vsgls(), pdf}, "brsm.set");
+
+  std::optional<TimestampPool> timestamps;
+  if (device.info().timestamps()) timestamps.emplace(device, 2, "brsm.timestamps");
+  device.submit_and_wait(
+      [&](VkCommandBuffer cmd) {
+        CommandStream stream(cmd);
+        if (timestamps) {
+          timestamps->reset(cmd);
+          timestamps->write(cmd);
+        }
+        record_untimed(camera_fis, stream);
+        const BrsmPush push{rsm.width, rsm.height, params.vsgl_count, 0, glm::vec4(capture.meta.light.position, 1.0f)};
+        stream.dispatch(pipeline, set, push, div_up(rsm.width, 16), div_up(rsm.height, 16));
+        if (timestamps) timestamps->write(cmd);
+      },
+      "brsm pdf");
+
+  BrsmBuild out;
+  out.camera_vsgls = params.vsgl_count;
+  if (timestamps) {
+    const auto ticks = timestamps->read_ticks();
+    out.gpu_ms = timestamps->interval_ns(ticks[0], ticks[1]) * 1e-6;
+  } else {
+    out.gpu_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - wall_start).count();
+  }
+  auto& plane = capture.rsm.planes[kPdf];
+  plane = download_vector<float>(device, pdf, rsm.texels());
+  if (std::none_of(plane.begin(), plane.end(), [](float q) { return q > 0.0f; }))
+    throw InputError("the BRSM PDF of scene '" + capture.meta.scene +
+                     "' is zero everywhere: no texel lit by the spot light is seen by the camera");
+  capture.rsm.has_pdf = true;
+  capture.meta.brsm_build_ms = out.gpu_ms;
+  return out;
+}
+
+}  // namespace vsgl

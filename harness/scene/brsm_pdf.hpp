@@ -1,0 +1,33 @@
+#pragma once
+// The BRSM PDF of a capture's RSM (SPEC §8, [REH*11] with the VSGL evaluation of [Tok15]):
+// camera-view VSGLs made by fis_modified from the G-buffer (power = reflectance) are evaluated at
+// every RSM texel through the texel's emission lobe, times the texel's power. Built once when a
+// capture is recorded, so every light-view generator consumes the same PDF.
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+#include "harness/capture/capture.hpp"
+#include "harness/math/vsgl_math.hpp"
+
+namespace vsgl {
+
+class Device;
+
+inline constexpr uint32_t kBrsmCameraVsgls = 2048;  // the paper's N for the camera view
+
+struct BrsmBuild {
+  double gpu_ms = 0;        // camera-view fis_modified + the BRSM pass, from timestamps
+  uint32_t camera_vsgls = 0;
+};
+
+// Fills capture.rsm's PDF plane (has_pdf = true) and capture.meta.brsm_build_ms. Uses
+// min(kBrsmCameraVsgls, samplable G-buffer texels) camera VSGLs. Throws InputError when the
+// result is all zero (no lit texel is seen by the camera).
+BrsmBuild build_brsm_pdf(Device& device, Capture& capture, uint32_t camera_vsgls = kBrsmCameraVsgls);
+
+// The CPU twin of one texel's weight (kernels/include/brsm_importance.glsl), for tests and verify.
+float brsm_texel_weight(const ViewImage& rsm, uint32_t x, uint32_t y, glm::vec3 light_position,
+                        const std::vector<VsglRecord>& camera_vsgls);
+
+}  // namespace vsgl

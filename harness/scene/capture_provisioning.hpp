@@ -1,0 +1,45 @@
+#pragma once
+// Making a capture exist on disk: the one code path of `vsgl-bench record` (rasterize, build the
+// BRSM PDF once per capture (SPEC §8), write atomically), shared by `tables`, which records the
+// paper's captures when they are missing and otherwise loads and validates them.
+#include <filesystem>
+#include <string>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "harness/capture/capture.hpp"
+#include "harness/capture/capture_files.hpp"
+#include "harness/scene/capture_recorder.hpp"
+
+namespace vsgl {
+
+class Device;
+
+struct RecordedCapture {
+  Capture capture;
+  double render_and_brsm_ms = 0;  // wall time: rasterization + BRSM PDF
+  double brsm_gpu_ms = 0;         // GPU time of the BRSM PDF build
+  uint32_t brsm_camera_vsgls = 0;
+  double write_ms = 0;
+};
+
+// Renders frame `frame` of `frames` of scene `scene`, builds its BRSM PDF and writes it to `dir`.
+// Throws InputError for an unknown scene, and what write_capture() throws.
+RecordedCapture record_scene_capture(Device& device, const std::string& scene, const RecordSizes& sizes, uint32_t frame,
+                                     uint32_t frames, const std::filesystem::path& dir);
+
+struct ProvidedCapture {
+  Capture capture;
+  bool recorded = false;  // true when it was missing and recorded now
+};
+
+// Loads the capture in `dir` (load_capture: every hash checked against the sidecar). When `dir`
+// has no capture.json it records scene `scene` there first. A capture that exists but is broken
+// is an error (InputError), never silently re-recorded.
+ProvidedCapture provide_capture(Device& device, const std::string& scene, const RecordSizes& sizes,
+                                const std::filesystem::path& dir);
+
+// Every channel hash of both views, as the sidecar has them: {"gbuffer": {channel: hash}, "rsm": ...}.
+nlohmann::json capture_hashes_json(const Capture& capture);
+
+}  // namespace vsgl

@@ -1,0 +1,35 @@
+#include "harness/verify/check_result.hpp"
+
+#include <cstdio>
+#include <iomanip>
+#include <sstream>
+#include <nlohmann/json.hpp>
+
+namespace vsgl {
+
+std::string format_check(const CheckResult& r) {
+  char line[512];
+  std::snprintf(line, sizeof line, "%s  %-11s %-14s %-16s %10.3g <= %-9.3g %s", r.passed() ? "PASS" : "FAIL",
+                r.view.c_str(), r.generator.c_str(), r.check.c_str(), r.measured, r.tolerance, r.detail.c_str());
+  return line;
+}
+
+nlohmann::json to_json(const CheckResult& r) {
+  return {{"view", r.view},         {"generator", r.generator}, {"check", r.check},
+          {"measured", r.measured}, {"tolerance", r.tolerance}, {"passed", r.passed()},
+          {"detail", r.detail}};
+}
+
+std::string check_number(double value, int digits) {
+  std::ostringstream os;
+  os << std::setprecision(digits) << value;
+  return os.str();
+}
+
+bool all_passed(const std::vector<CheckResult>& results) {
+  for (const auto& r : results)
+    if (!r.passed()) return false;
+  return true;
+}
+
+}  // namespace vsgl

@@ -1,0 +1,279 @@
+#include "harness/verify/fis_verification.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "harness/vk/command_stream.hpp"
+#include "harness/vk/device.hpp"
+#include "harness/generators/device_view.hpp"
+#include "harness/generators/fis/fis_generator.hpp"
+#include "harness/reference/fis_reference.hpp"
+
+namespace vsgl {
+namespace {
+
+// A GPU sampler may choose another child than the CPU only where the CPU's decision was a near tie
+// (a GPU's division need not be correctly rounded); such samples are excused and counted.
+constexpr float kTieMargin = 1e-5f;
+
+std::string num(double v, int digits = 3) { return check_number(v, digits); }
+
+struct GpuRun {
+  std::array<MipPyramid, 3> pyramid;  // as computed on the device
+  std::vector<VsglRecord> vsgls;
+};
+
+GpuRun run_on_device(Device& device, const DeviceView& view, FisVariant variant, const FisParams& params) {
+  FisGenerator gen(device, view, variant, params);
+  run_untimed(device, gen);
+  const VirtualSquare& sq = view.square;
+  const auto all = download_vector<glm::vec4>(device, gen.pyramid(), 3 * std::size_t{sq.total_texels()});
+  GpuRun run;
+  for (uint32_t layer = 0; layer < 3; ++layer) {
+    run.pyramid[layer].square = sq;
+    run.pyramid[layer].texels.assign(all.begin() + layer * std::ptrdiff_t{sq.total_texels()},
+                                     all.begin() + (layer + 1) * std::ptrdiff_t{sq.total_texels()});
+  }
+  run.vsgls = download_vector<VsglRecord>(device, gen.vsgls(), params.vsgl_count);
+  return run;
+}
+
+// max |a - b| / max |b| over one layer's texels and components (SPEC §11's normalized error).
+double normalized_error(const std::vector<glm::vec4>& a, const std::vector<glm::vec4>& b, std::size_t count) {
+  double diff = 0, scale = 0;
+  for (std::size_t i = 0; i < count; ++i)
+    for (int c = 0; c < 4; ++c) {
+      diff = std::max(diff, std::abs(double{a[i][c]} - double{b[i][c]}));
+      scale = std::max(scale, std::abs(double{b[i][c]}));
+    }
+  return scale > 0 ? diff / scale : diff;
+}
+
+class ViewVerifier {
+ public:
+  ViewVerifier(Device& device, const Capture& capture, ViewKind kind, const VerifyConfig& config)
+      : device_(device), capture_(capture), view_(upload_view(device, capture, kind)), config_(config) {
+    params_.vsgl_count = std::min(kind == ViewKind::kCamera ? config.camera_vsgls : config.light_vsgls,
+                                  view_.samplable_texels);
+    params_.K = config.K;
+    params_.bisection_iterations = config.bisection_iterations;
+  }
+
+  void run(std::vector<CheckResult>& out) {
+    const auto cpu_moments = reference_moments(capture_.view(view_.kind), view_.source_position);
+    for (FisVariant variant : {FisVariant::kTok15, FisVariant::kModified}) {
+      const GpuRun gpu = run_on_device(device_, view_, variant, params_);
+      std::array<MipPyramid, 3> chain;  // the CPU mip chain of the device's level 0
+      for (uint32_t layer = 0; layer < 3; ++layer) {
+        const auto& t = gpu.pyramid[layer].texels;
+        chain[layer] = MipPyramid::build({t.begin(), t.begin() + view_.square.level_texels(0)}, view_.square.width,
+                                         view_.square.height);
+      }
+      const std::string gen = fis_variant_name(variant);
+      check_moments(out, gen, gpu, cpu_moments);
+      check_pyramid(out, gen, gpu, chain);
+      const auto samples = reference_samples(chain[2], params_.vsgl_count, params_.offset_bits);
+      check_sampler(out, gen, gpu, samples);
+      check_levels(out, variant, gpu, chain, samples);
+      check_generator(out, variant, gpu, chain, samples);
+      check_total_power(out, gen, gpu, chain);
+    }
+    check_histogram(out);
+  }
+
+ private:
+  CheckResult result(const std::string& generator, const std::string& check) const {
+    CheckResult r;
+    r.view = view_.label;
+    r.generator = generator;
+    r.check = check;
+    return r;
+  }
+
+  // "additional": level 0 against the CPU moments; transcendental functions differ in the last bits.
+  void check_moments(std::vector<CheckResult>& out, const std::string& gen, const GpuRun& gpu,
+                     const std::array<std::vector<glm::vec4>, 3>& cpu) const {
+    CheckResult r = result(gen, "moments");
+    for (uint32_t layer = 0; layer < 3; ++layer)
+      r.measured = std::max(r.measured, normalized_error(gpu.pyramid[layer].texels, cpu[layer],
+                                                         view_.square.level_texels(0)));
+    r.tolerance = 1e-5;
+    r.detail = "normalized max error of the 3 moment layers vs the CPU additional pass";
+    out.push_back(r);
+  }
+
+  // "mipmapping": every level against the CPU chain of the same level 0 (float sums: 1e-6).
+  void check_pyramid(std::vector<CheckResult>& out, const std::string& gen, const GpuRun& gpu,
+                     const std::array<MipPyramid, 3>& chain) const {
+    CheckResult r = result(gen, "pyramid");
+    for (uint32_t layer = 0; layer < 3; ++layer)
+      r.measured = std::max(r.measured, normalized_error(gpu.pyramid[layer].texels, chain[layer].texels,
+                                                         chain[layer].texels.size()));
+    r.tolerance = 1e-6;
+    r.detail = "normalized max error over all " + num(view_.square.levels + 1) + " levels of 3 layers";
+    out.push_back(r);
+  }
+
+  bool excused(const SamplePoint& s, const VsglRecord& v) const {
+    const glm::uvec2 texel(glm::vec2(v.center_pdf) * static_cast<float>(view_.square.size));
+    return texel != s.texel && s.min_margin < kTieMargin;
+  }
+
+  void check_sampler(std::vector<CheckResult>& out, const std::string& gen, const GpuRun& gpu,
+                     const std::vector<SamplePoint>& samples) const {
+    CheckResult r = result(gen, "sampler");
+    uint32_t wrong = 0, ties = 0;
+    double max_dx = 0;
+    for (uint32_t i = 0; i < samples.size(); ++i) {
+      const VsglRecord& v = gpu.vsgls[i];
+      const glm::uvec2 texel(glm::vec2(v.center_pdf) * static_cast<float>(view_.square.size));
+      if (texel != samples[i].texel) {
+        (samples[i].min_margin < kTieMargin ? ties : wrong) += 1;
+        continue;
+      }
+      max_dx = std::max(max_dx, double{glm::length(glm::vec2(v.center_pdf) - samples[i].x)});
+    }
+    r.measured = wrong + (max_dx > 1e-6 ? 1 : 0);
+    r.tolerance = 0;
+    r.detail = "kernel centres in another texel than the CPU's (near ties excused: " + num(ties) +
+               "); max |dx| " + num(max_dx, 2);
+    out.push_back(r);
+  }
+
+  // Eq. 1 levels (Tok15) or the Eq. 3 residual (modified), recomputed on the CPU from the device's
+  // own kernel centres and pyramid.
+  void check_levels(std::vector<CheckResult>& out, FisVariant variant, const GpuRun& gpu,
+                    const std::array<MipPyramid, 3>& chain, const std::vector<SamplePoint>& samples) const {
+    const VirtualSquare& sq = view_.square;
+    const float L = static_cast<float>(sq.levels);
+    if (variant == FisVariant::kTok15) {
+      CheckResult r = result(fis_variant_name(variant), "eq1_levels");
+      for (uint32_t i = 0; i < samples.size(); ++i) {
+        const float expected = tok15_level(gpu.vsgls[i].center_pdf.z, params_.vsgl_count, params_.K, sq);
+        r.measured = std::max(r.measured, double{std::abs(gpu.vsgls[i].axis_level.w - expected)});
+      }
+      r.tolerance = 1e-4;
+      r.detail = "max |l_i - clamp(0.5 log2(K M / (N p(x_i))), 0, L)| over every VSGL";
+      out.push_back(r);
+      return;
+    }
+    CheckResult r = result(fis_variant_name(variant), "eq3_residual");
+    const float tol = bisection_tolerance(sq.levels, params_.bisection_iterations);
+    const float target = params_.K / static_cast<float>(params_.vsgl_count);
+    uint32_t interior = 0, violations = 0;
+    double worst = 0;
+    for (uint32_t i = 0; i < samples.size(); ++i) {
+      const float l = gpu.vsgls[i].axis_level.w;
+      if (l <= 0.0f || l >= L) continue;  // at a bound Eq. 3 has no root inside [0, L]
+      ++interior;
+      const glm::vec2 x(gpu.vsgls[i].center_pdf);
+      // A slack of 1e-5 relative covers float rounding of the device's own evaluation of g.
+      const float lo = modified_kernel_mass(chain[2], x, std::max(0.0f, l - tol));
+      const float hi = modified_kernel_mass(chain[2], x, std::min(L, l + tol));
+      if (!(lo <= target * (1.0f + 1e-5f) && target <= hi * (1.0f + 1e-5f))) ++violations;
+      worst = std::max(worst, std::abs(double{modified_kernel_mass(chain[2], x, l)} / double{target} - 1.0));
+    }
+    r.measured = violations;
+    r.tolerance = 0;
+    r.detail = "VSGLs (of " + num(interior, 9) + " not at a bound) whose root of a(l) p(x_i,l) = K/N lies outside l_i +- " +
+               num(tol, 2) + "; max |a p / (K/N) - 1| = " + num(worst);
+    out.push_back(r);
+  }
+
+  // The whole filtered-sampling pass against reference_fis on the same pyramid.
+  void check_generator(std::vector<CheckResult>& out, FisVariant variant, const GpuRun& gpu,
+                       const std::array<MipPyramid, 3>& chain, const std::vector<SamplePoint>& samples) const {
+    CheckResult r = result(fis_variant_name(variant), "vsgls");
+    const auto expected = reference_fis(chain, variant, params_);
+    double worst_power = 0, worst_level = 0;
+    for (uint32_t i = 0; i < expected.size(); ++i) {
+      if (excused(samples[i], gpu.vsgls[i])) continue;
+      const glm::vec3 a = gpu.vsgls[i].power(), b = expected[i].power();
+      const double scale = double{std::max({b.r, b.g, b.b})} + 1e-30;
+      worst_power = std::max(worst_power, double{glm::length(a - b)} / scale);
+      worst_level = std::max(worst_level, double{std::abs(gpu.vsgls[i].axis_level.w - expected[i].axis_level.w)});
+    }
+    // A bisection step may flip on a last-bit difference: the level then moves by one step and the
+    // power by the footprint's change over it.
+    r.measured = worst_power;
+    r.tolerance = 5e-3;
+    r.detail = "max relative power error vs the CPU generator (max level difference " + num(worst_level, 2) + ")";
+    out.push_back(r);
+  }
+
+  void check_total_power(std::vector<CheckResult>& out, const std::string& gen, const GpuRun& gpu,
+                         const std::array<MipPyramid, 3>& chain) const {
+    CheckResult r = result(gen, "total_power");
+    double sum = 0;
+    for (const auto& v : gpu.vsgls) sum += double{v.power().r} + double{v.power().g} + double{v.power().b};
+    const glm::vec4 top = chain[0].top();  // mean over the square
+    const double total = (double{top.r} + double{top.g} + double{top.b}) * view_.square.square_texels();
+    const double ratio = sum / total;
+    r.measured = std::abs(ratio - 1.0);
+    r.tolerance = total_power_tolerance(capture_.meta.scene, gen, view_.label);
+    r.detail = std::string("|sum of VSGL power / total ") +
+               (view_.kind == ViewKind::kCamera ? "reflectance" : "flux") + " - 1|; ratio " + num(ratio, 5);
+    out.push_back(r);
+  }
+
+  // Many kernel centres drawn on the device follow the PDF: total variation distance between their
+  // histogram on an 8x8 grid of the square and the PDF's mass in each cell.
+  void check_histogram(std::vector<CheckResult>& out) const {
+    FisParams p = params_;
+    p.vsgl_count = std::min(config_.histogram_samples, view_.samplable_texels);
+    const GpuRun gpu = run_on_device(device_, view_, FisVariant::kModified, p);
+    const VirtualSquare& sq = view_.square;
+    const uint32_t grid_level = sq.levels >= 3 ? sq.levels - 3 : 0;
+    const uint32_t cells = sq.size >> grid_level;  // 8 (fewer for tiny squares)
+    std::vector<double> observed(std::size_t{cells} * cells, 0.0);
+    for (const auto& v : gpu.vsgls) {
+      const glm::uvec2 c = glm::min(glm::uvec2(glm::vec2(v.center_pdf) * static_cast<float>(cells)), cells - 1);
+      observed[std::size_t{c.y} * cells + c.x] += 1.0 / p.vsgl_count;
+    }
+    const auto& q = gpu.pyramid[2];
+    const double qL = double{q.top().w};
+    double tv = 0;
+    for (uint32_t y = 0; y < cells; ++y)
+      for (uint32_t x = 0; x < cells; ++x) {
+        const double expected = double{q.at(grid_level, static_cast<int32_t>(x), static_cast<int32_t>(y)).w} / qL /
+                                (static_cast<double>(cells) * cells);
+        tv += 0.5 * std::abs(observed[std::size_t{y} * cells + x] - expected);
+      }
+    CheckResult r = result("sampler", "histogram");
+    r.measured = tv;
+    r.tolerance = 4.0 / std::sqrt(static_cast<double>(p.vsgl_count)) * 0.25;
+    r.detail = "total variation distance, " + num(p.vsgl_count, 9) + " kernel centres on a " + num(cells) + "x" +
+               num(cells) + " grid vs the PDF";
+    out.push_back(r);
+  }
+
+  Device& device_;
+  const Capture& capture_;
+  DeviceView view_;
+  VerifyConfig config_;
+  FisParams params_;
+};
+
+}  // namespace
+
+double total_power_tolerance(const std::string& scene, const std::string& generator, const std::string& view) {
+  // Measured on lavapipe (|ratio - 1|, camera / light view):
+  //   atrium      fis_tok15 0.0050 / 0.0123   fis_modified 0.00003 / 0.0292
+  //   conference  fis_tok15 0.0057 / 0.0065   fis_modified 0.0005  / 0.0042
+  // The light view's BRSM PDF is not proportional to the flux, so there even the modified
+  // estimator (exact when p follows the power) is an estimate. Tolerances leave ~2x headroom.
+  if (scene == "atrium" || scene == "conference") return view == "light_view" ? 0.06 : 0.02;
+  (void)generator;
+  return 0.15;  // other scenes (tiny, users' own): coarse captures, few texels per kernel
+}
+
+std::vector<CheckResult> verify_fis(Device& device, const Capture& capture, const VerifyConfig& config) {
+  std::vector<CheckResult> out;
+  for (ViewKind kind : {ViewKind::kCamera, ViewKind::kLight}) {
+    ViewVerifier verifier(device, capture, kind, config);
+    verifier.run(out);
+  }
+  return out;
+}
+
+}  // namespace vsgl

@@ -1,0 +1,125 @@
+#include "harness/vk/compute_pipeline.hpp"
+
+#include <cstring>
+
+#include "harness/vk/buffer.hpp"
+#include "harness/vk/device.hpp"
+#include "harness/core/error.hpp"
+#include "harness/vk/shader_registry.hpp"
+#include "harness/vk/vk_check.hpp"
+
+namespace vsgl {
+
+uint32_t float_bits(float f) {
+  uint32_t u = 0;
+  std::memcpy(&u, &f, sizeof u);
+  return u;
+}
+
+ComputePipeline::ComputePipeline(Device& device, const ComputePipelineDesc& desc) : desc_(desc) {
+  VkDevice dev = device.get();
+  const auto spirv = find_shader(desc.shader);
+
+  std::vector<VkDescriptorSetLayoutBinding> bindings(desc.storage_buffers);
+  for (uint32_t i = 0; i < desc.storage_buffers; ++i) {
+    bindings[i].binding = i;
+    bindings[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    bindings[i].descriptorCount = 1;
+    bindings[i].stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
+  }
+  VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+  set_info.bindingCount = desc.storage_buffers;
+  set_info.pBindings = bindings.data();
+  VkDescriptorSetLayout set_layout = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateDescriptorSetLayout(dev, &set_info, nullptr, &set_layout));
+  set_layout_ = UniqueHandle<VkDescriptorSetLayout>(dev, set_layout, vkDestroyDescriptorSetLayout);
+  device.set_name(set_layout, VK_OBJECT_TYPE_DESCRIPTOR_SET_LAYOUT, desc.shader + ".set_layout");
+
+  VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, desc.push_constant_bytes};
+  VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+  layout_info.setLayoutCount = 1;
+  layout_info.pSetLayouts = &set_layout;
+  layout_info.pushConstantRangeCount = desc.push_constant_bytes > 0 ? 1 : 0;
+  layout_info.pPushConstantRanges = &push;
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  VK_CHECK(vkCreatePipelineLayout(dev, &layout_info, nullptr, &layout));
+  layout_ = UniqueHandle<VkPipelineLayout>(dev, layout, vkDestroyPipelineLayout);
+  device.set_name(layout, VK_OBJECT_TYPE_PIPELINE_LAYOUT, desc.shader + ".layout");
+
+  VkShaderModuleCreateInfo module_info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+  module_info.codeSize = spirv.size() * sizeof(uint32_t);
+  module_info.pCode = spirv.data();
+  VkShaderModule module = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateShaderModule(dev, &module_info, nullptr, &module));
+  UniqueHandle<VkShaderModule> module_owner(dev, module, vkDestroyShaderModule);
+  device.set_name(module, VK_OBJECT_TYPE_SHADER_MODULE, desc.shader);
+
+  std::vector<VkSpecializationMapEntry> entries;
+  std::vector<uint32_t> values;
+  for (const auto& c : desc.constants) {
+    entries.push_back({c.id, static_cast<uint32_t>(values.size() * sizeof(uint32_t)), sizeof(uint32_t)});
+    values.push_back(c.value);
+  }
+  VkSpecializationInfo spec{};
+  spec.mapEntryCount = static_cast<uint32_t>(entries.size());
+  spec.pMapEntries = entries.data();
+  spec.dataSize = values.size() * sizeof(uint32_t);
+  spec.pData = values.data();
+
+  VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+  info.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+  info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+  info.stage.module = module;
+  info.stage.pName = "main";
+  info.stage.pSpecializationInfo = entries.empty() ? nullptr : &spec;
+  info.layout = layout;
+  VkPipeline pipeline = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateComputePipelines(dev, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
+  pipeline_ = UniqueHandle<VkPipeline>(dev, pipeline, vkDestroyPipeline);
+  device.set_name(pipeline, VK_OBJECT_TYPE_PIPELINE, desc.shader);
+}
+
+BindingSet::BindingSet(Device& device, const ComputePipeline& pipeline, std::initializer_list<BufferBinding> buffers,
+                       const std::string& name)
+    : BindingSet(device, pipeline, std::vector<BufferBinding>(buffers), name) {}
+
+BindingSet::BindingSet(Device& device, const ComputePipeline& pipeline, const std::vector<BufferBinding>& buffers,
+                       const std::string& name) {
+  VkDevice dev = device.get();
+  const uint32_t n = pipeline.desc().storage_buffers;
+  if (buffers.size() != n)
+    throw std::logic_error("binding set '" + name + "' has " + std::to_string(buffers.size()) + " buffers, " +
+                           pipeline.desc().shader + " takes " + std::to_string(n));
+  VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, n == 0 ? 1 : n};
+  VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+  pool_info.maxSets = 1;
+  pool_info.poolSizeCount = 1;
+  pool_info.pPoolSizes = &size;
+  VkDescriptorPool pool = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateDescriptorPool(dev, &pool_info, nullptr, &pool));
+  pool_ = UniqueHandle<VkDescriptorPool>(dev, pool, vkDestroyDescriptorPool);
+  device.set_name(pool, VK_OBJECT_TYPE_DESCRIPTOR_POOL, name + ".pool");
+
+  VkDescriptorSetLayout layout = pipeline.set_layout();
+  VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+  alloc.descriptorPool = pool;
+  alloc.descriptorSetCount = 1;
+  alloc.pSetLayouts = &layout;
+  VK_CHECK(vkAllocateDescriptorSets(dev, &alloc, &set_));
+  device.set_name(set_, VK_OBJECT_TYPE_DESCRIPTOR_SET, name);
+
+  std::vector<VkDescriptorBufferInfo> infos(n);
+  std::vector<VkWriteDescriptorSet> writes(n);
+  for (uint32_t i = 0; i < n; ++i) {
+    infos[i] = {buffers[i].buffer->get(), buffers[i].offset, buffers[i].range};
+    writes[i] = VkWriteDescriptorSet{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    writes[i].dstSet = set_;
+    writes[i].dstBinding = i;
+    writes[i].descriptorCount = 1;
+    writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    writes[i].pBufferInfo = &infos[i];
+  }
+  if (n > 0) vkUpdateDescriptorSets(dev, n, writes.data(), 0, nullptr);
+}
+
+}  // namespace vsgl

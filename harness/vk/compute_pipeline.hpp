@@ -1,0 +1,74 @@
+#pragma once
+// A compute pipeline built from an embedded kernel: storage buffers at bindings 0..n-1 of set 0,
+// an optional push-constant block, and specialization constants (local sizes, iteration counts).
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <initializer_list>
+#include <string>
+#include <vector>
+
+#include "harness/vk/unique_handle.hpp"
+
+namespace vsgl {
+
+class Buffer;
+class Device;
+
+struct SpecializationConstant {
+  uint32_t id;
+  uint32_t value;  // 32-bit int/uint/bool; floats via float_bits()
+};
+uint32_t float_bits(float f);
+
+struct ComputePipelineDesc {
+  std::string shader;             // embedded name, e.g. "mip_level.comp"
+  uint32_t storage_buffers = 0;   // bindings 0..n-1
+  uint32_t push_constant_bytes = 0;
+  std::vector<SpecializationConstant> constants;
+};
+
+class ComputePipeline {
+ public:
+  ComputePipeline(Device& device, const ComputePipelineDesc& desc);
+  ComputePipeline(ComputePipeline&&) noexcept = default;
+  ComputePipeline& operator=(ComputePipeline&&) noexcept = default;
+
+  VkPipeline get() const { return pipeline_.get(); }
+  VkPipelineLayout layout() const { return layout_.get(); }
+  VkDescriptorSetLayout set_layout() const { return set_layout_.get(); }
+  const ComputePipelineDesc& desc() const { return desc_; }
+
+ private:
+  ComputePipelineDesc desc_;
+  UniqueHandle<VkDescriptorSetLayout> set_layout_;
+  UniqueHandle<VkPipelineLayout> layout_;
+  UniqueHandle<VkPipeline> pipeline_;
+};
+
+// A range of a buffer bound to one binding (whole buffer by default).
+struct BufferBinding {
+  const Buffer* buffer;
+  VkDeviceSize offset = 0;
+  VkDeviceSize range = VK_WHOLE_SIZE;
+  BufferBinding(const Buffer& b) : buffer(&b) {}  // NOLINT(google-explicit-constructor): reads naturally
+  BufferBinding(const Buffer& b, VkDeviceSize off, VkDeviceSize r) : buffer(&b), offset(off), range(r) {}
+};
+
+// One descriptor set (with its own small pool) binding buffers to a pipeline's bindings in order.
+class BindingSet {
+ public:
+  BindingSet(Device& device, const ComputePipeline& pipeline, std::initializer_list<BufferBinding> buffers,
+             const std::string& name);
+  BindingSet(Device& device, const ComputePipeline& pipeline, const std::vector<BufferBinding>& buffers,
+             const std::string& name);
+  BindingSet(BindingSet&&) noexcept = default;
+  BindingSet& operator=(BindingSet&&) noexcept = default;
+  VkDescriptorSet get() const { return set_; }
+
+ private:
+  UniqueHandle<VkDescriptorPool> pool_;
+  VkDescriptorSet set_ = VK_NULL_HANDLE;
+};
+
+}  // namespace vsgl
