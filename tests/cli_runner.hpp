@@ -12,8 +12,8 @@ struct CliResult {
   std::string output;  // stdout and stderr together
 };
 
-inline CliResult run_cli(const std::string& arguments) {
-  const std::string command = std::string(VSGL_BENCH_EXE) + " " + arguments + " 2>&1";
+inline CliResult run_program(const std::string& executable, const std::string& arguments) {
+  const std::string command = executable + " " + arguments + " 2>&1";
   CliResult result{-1, {}};
   FILE* pipe = popen(command.c_str(), "r");
   if (pipe == nullptr) return result;
@@ -23,5 +23,7 @@ inline CliResult run_cli(const std::string& arguments) {
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return result;
 }
+
+inline CliResult run_cli(const std::string& arguments) { return run_program(VSGL_BENCH_EXE, arguments); }
 
 }  // namespace vsgl::test

@@ -10,19 +10,13 @@
 #include "harness/capture/exr_io.hpp"
 #include "harness/core/atomic_file.hpp"
 #include "harness/core/error.hpp"
+#include "harness/core/text_format.hpp"
 
 namespace vsgl {
 namespace {
 
 // Normals farther than this from unit length on a valid texel are rejected (SPEC §12).
 constexpr double kUnitNormalTolerance = 1e-3;
-
-std::string number_text(double value) {
-  std::ostringstream out;
-  out.precision(9);
-  out << value;
-  return out.str();
-}
 
 std::string texel_text(std::size_t index, uint32_t width) {
   return "texel (" + std::to_string(index % width) + ", " + std::to_string(index / width) + ")";

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "harness/core/error.hpp"
+#include "harness/core/text_format.hpp"
 #include "harness/core/json_reader.hpp"
 
 namespace vsgl {
@@ -24,13 +25,6 @@ constexpr const char* kNoPdfName = "none";
 // A light direction farther than this from unit length is rejected.
 constexpr double kUnitTolerance = 1e-3;
 
-
-std::string number_text(double value) {
-  std::ostringstream out;
-  out.precision(9);
-  out << value;
-  return out.str();
-}
 
 // ---- Sidecar writing ---------------------------------------------------------------------------
 

@@ -1,12 +1,12 @@
 #include "harness/core/json_reader.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <fstream>
 #include <iterator>
 #include <limits>
 
 #include "harness/core/error.hpp"
+#include "harness/core/text_format.hpp"
 
 namespace vsgl {
 
@@ -105,9 +105,7 @@ template <typename Json>
 float BasicJsonReader<Json>::number32(const json& value, const std::string& path) const {
   const double v = number(value, path);
   if (std::abs(v) > static_cast<double>(std::numeric_limits<float>::max())) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.9g", v);
-    fail(path, "(" + std::string(text) + ") is out of float32 range");
+    fail(path, "(" + number_text(v) + ") is out of float32 range");
   }
   return static_cast<float>(v);
 }

@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <optional>
 #include <string>
 
 #include "harness/core/error.hpp"
+#include "harness/core/text_format.hpp"
 #include "harness/generators/generator_registry.hpp"
 
 namespace vsgl {
@@ -21,11 +21,7 @@ constexpr double kKmeansOverModifiedMin = 7.0;  // claim 2: k-means at least 7x 
 constexpr double kFisPdfChangeMax = 0.10;       // claim 3: FIS moves at most 10 % from Table 1 to 2
 constexpr double kLinesRatioMin = 4.0;          // claim 6: k-means at least 4x the lines of FIS
 
-std::string number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
+std::string number(double v) { return number_text(v, 6); }
 
 ojson claim(const std::string& text, const std::string& id, const std::string& criterion, ojson measured,
             std::optional<bool> holds, const std::string& note, bool informative) {

@@ -1,5 +1,7 @@
 #include "harness/verify/check_result.hpp"
 
+#include "harness/core/text_format.hpp"
+
 #include <cstdio>
 #include <iomanip>
 #include <sstream>
@@ -20,11 +22,7 @@ nlohmann::json to_json(const CheckResult& r) {
           {"detail", r.detail}};
 }
 
-std::string check_number(double value, int digits) {
-  std::ostringstream os;
-  os << std::setprecision(digits) << value;
-  return os.str();
-}
+std::string check_number(double value, int digits) { return number_text(value, digits); }
 
 bool all_passed(const std::vector<CheckResult>& results) {
   for (const auto& r : results)
