@@ -5,20 +5,15 @@
 // VSGLs stream through shared memory in tiles so each is read once per workgroup.
 #include "vsgl_math.glsl"
 #include "brsm_importance.glsl"
+#include "interface/brsm.h"
 
-layout(local_size_x = 16, local_size_y = 16) in;
-const uint TILE = 256u;  // = threads per group: each thread loads one VSGL of a tile
+layout(local_size_x_id = 0, local_size_y_id = 1) in;  // kBrsmGroupSize (interface/brsm.h)
+const uint TILE = gl_WorkGroupSize.x * gl_WorkGroupSize.y;  // = threads per group: each thread loads one VSGL of a tile
 
 layout(std430, binding = 0) readonly buffer View { vec4 view_texels[]; };  // the RSM, DeviceView layout
 layout(std430, binding = 1) readonly buffer CameraVsgls { Vsgl camera_vsgls[]; };
 layout(std430, binding = 2) writeonly buffer Pdf { float pdf[]; };
-layout(push_constant) uniform Push {
-  uint width;
-  uint height;
-  uint camera_count;
-  uint pad;
-  vec4 light_position;
-} pc;
+layout(push_constant) uniform PushBlock { BrsmPush pc; };
 
 shared Vsgl tile[TILE];
 

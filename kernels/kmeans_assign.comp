@@ -7,18 +7,15 @@
 // box that has cells beyond it (less a float margin, since a centre's cell index is rounded), or
 // the box covers the whole grid. Every centre not yet visited lies beyond such a face, so the
 // result equals brute force over all centres, with the same float distance (kmeans_distance2).
-layout(local_size_x = 256) in;
+#include "interface/kmeans.h"
+layout(local_size_x_id = 0) in;  // kKmeansWideGroupSize (interface/kmeans.h)
 layout(std430, binding = 0) readonly buffer Grid { uint grid_words[]; };
 #include "kmeans_grid.glsl"
 layout(std430, binding = 1) readonly buffer Centres { vec4 centres[]; };
 layout(std430, binding = 2) readonly buffer CellItems { uint cell_items[]; };
 layout(std430, binding = 3) readonly buffer Features { vec4 features[]; };
 layout(std430, binding = 4) writeonly buffer Assignment { uint assignment[]; };
-layout(push_constant) uniform Push {
-  uint texels;  // W * H
-  uint count;   // N
-  uint max_cells;
-} pc;
+layout(push_constant) uniform PushBlock { KmeansAssignPush pc; };
 
 KmeansGrid grid;
 vec3 feature;

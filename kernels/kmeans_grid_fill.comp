@@ -3,15 +3,13 @@
 // k-means grid build, step 3 of 3: each centre's id into its cell's slice of the cell list (the
 // counts were scanned into cell starts). The order inside a cell depends on the atomics, but the
 // search's result does not: it keeps the smallest (distance, id) pair.
-layout(local_size_x = 64) in;
+#include "interface/kmeans.h"
+layout(local_size_x_id = 0) in;  // kKmeansNarrowGroupSize (interface/kmeans.h)
 layout(std430, binding = 0) buffer Grid { uint grid_words[]; };
 #include "kmeans_grid.glsl"
 layout(std430, binding = 1) readonly buffer Centres { vec4 centres[]; };
 layout(std430, binding = 2) writeonly buffer CellItems { uint cell_items[]; };
-layout(push_constant) uniform Push {
-  uint count;  // N
-  uint max_cells;
-} pc;
+layout(push_constant) uniform PushBlock { KmeansGridPush pc; };
 
 void main() {
   uint k = kmeans_flat_invocation();

@@ -4,15 +4,12 @@
 // order (fis_mip_level.comp), so that the seeds are exactly the FIS kernel centres (SPEC §5).
 // The pyramid has a single layer holding q in .w; pyramid_total = 0 makes every layer index of
 // pyramid.glsl address it.
-layout(local_size_x = 16, local_size_y = 16) in;
+#include "interface/kmeans.h"
+layout(local_size_x_id = 0, local_size_y_id = 1) in;  // kKmeansImageGroupSize (interface/kmeans.h)
 layout(std430, binding = 0) buffer Pyramid { vec4 pyramid_texels[]; };
 #include "pyramid.glsl"
 
-layout(push_constant) uniform Push {
-  uint width;
-  uint height;
-  uint source_level;
-} pc;
+layout(push_constant) uniform PushBlock { KmeansMipPush pc; };
 
 void main() {
   pyramid_init(pc.width, pc.height);

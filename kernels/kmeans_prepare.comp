@@ -9,18 +9,13 @@
 #include "kmeans_common.glsl"
 #include "vsgl_math.glsl"
 
-layout(local_size_x = 16, local_size_y = 16) in;
+#include "interface/kmeans.h"
+layout(local_size_x_id = 0, local_size_y_id = 1) in;  // kKmeansImageGroupSize (interface/kmeans.h)
 layout(std430, binding = 0) readonly buffer View { vec4 view_texels[]; };
 layout(std430, binding = 1) writeonly buffer Features { vec4 features[]; };
 layout(std430, binding = 2) writeonly buffer PdfPyramid { vec4 pdf_level0[]; };
 layout(std430, binding = 3) buffer Grid { uint grid_words[]; };
-layout(push_constant) uniform Push {
-  uint width;
-  uint height;
-  uint camera_view;  // 1: G-buffer (w = luminance of reflectance), 0: RSM (w = flux sum)
-  uint space3d;      // 0: kmeans_2d (pixels), 1: kmeans_3d (world position)
-  vec4 source_position;
-} pc;
+layout(push_constant) uniform PushBlock { KmeansPreparePush pc; };
 
 shared uint group_bounds[6];
 

@@ -3,13 +3,11 @@
 // After the sort: each cluster's [begin, end) in the sorted pairs, by binary search of its key
 // and the next (an empty cluster gets begin == end at its place in the order). One thread per cluster.
 #include "kmeans_common.glsl"
-layout(local_size_x = 64) in;
+#include "interface/kmeans.h"
+layout(local_size_x_id = 0) in;  // kKmeansNarrowGroupSize (interface/kmeans.h)
 layout(std430, binding = 0) readonly buffer Sorted { uvec2 sorted_pairs[]; };
 layout(std430, binding = 1) writeonly buffer Ranges { uvec2 ranges[]; };
-layout(push_constant) uniform Push {
-  uint count;     // sorted elements (W * H)
-  uint clusters;  // N
-} pc;
+layout(push_constant) uniform PushBlock { KmeansRangesPush pc; };
 
 // First position whose key is >= key.
 uint lower_bound(uint key) {

@@ -1,22 +1,19 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // Exclusive prefix sum of uints, level k of a multi-level scan (used by the radix sort's digit
-// histograms and the grid's cell counts): each group scans one block of 1024 values in place
+// histograms and the grid's cell counts): each group scans one block of GROUP * ITEMS values in place
 // and writes the block's total to level k+1 (in the aux buffer). kmeans_scan_add.comp then adds
 // the scanned totals back. Integer sums: the result is exact and order-independent.
 #include "kmeans_common.glsl"
-layout(local_size_x = 256) in;
+#include "interface/kmeans.h"
+layout(local_size_x_id = 0) in;  // kKmeansWideGroupSize (interface/kmeans.h)
 layout(std430, binding = 0) buffer Target { uint target_words[]; };
 layout(std430, binding = 1) buffer Aux { uint aux_words[]; };
-layout(push_constant) uniform Push {
-  uint in_aux;     // 0: this level is in the target buffer, 1: in the aux buffer
-  uint in_offset;  // first element of this level
-  uint count;      // elements of this level
-  uint out_offset; // where the block totals go (aux buffer)
-} pc;
+layout(push_constant) uniform PushBlock { KmeansScanPush pc; };
 
-const uint ITEMS = 4u;
-shared uint partial[256];
+const uint ITEMS = kKmeansScanItems;
+const uint GROUP = gl_WorkGroupSize.x;
+shared uint partial[GROUP];
 
 uint load(uint i) {
   if (i >= pc.count) return 0u;
@@ -30,17 +27,17 @@ void store(uint i, uint v) {
 void main() {
   uint block = kmeans_flat_group();
   uint t = gl_LocalInvocationIndex;
-  uint base = block * 256u * ITEMS + t * ITEMS;
+  uint base = block * GROUP * ITEMS + t * ITEMS;
   uint v[ITEMS];
   uint sum = 0u;
   for (uint k = 0u; k < ITEMS; ++k) {
     v[k] = load(base + k);
     sum += v[k];
   }
-  // Inclusive scan of the 256 thread sums (Hillis-Steele).
+  // Inclusive scan of the GROUP thread sums (Hillis-Steele).
   partial[t] = sum;
   barrier();
-  for (uint stride = 1u; stride < 256u; stride <<= 1u) {
+  for (uint stride = 1u; stride < GROUP; stride <<= 1u) {
     uint add = t >= stride ? partial[t - stride] : 0u;
     barrier();
     partial[t] += add;
@@ -52,5 +49,5 @@ void main() {
     running += v[k];
   }
   // (Groups beyond the last block exist only when the dispatch was folded into rows.)
-  if (t == 255u && block * 256u * ITEMS < pc.count) aux_words[pc.out_offset + block] = partial[255];
+  if (t == GROUP - 1u && block * GROUP * ITEMS < pc.count) aux_words[pc.out_offset + block] = partial[GROUP - 1u];
 }

@@ -5,18 +5,13 @@
 // kmeans_2d: the kernel centre in pixels (x_i * S, inside the chosen texel); kmeans_3d: the world
 // position of the chosen texel. One thread per cluster.
 #include "kmeans_common.glsl"
-layout(local_size_x = 64) in;
+#include "interface/kmeans.h"
+layout(local_size_x_id = 0) in;  // kKmeansNarrowGroupSize (interface/kmeans.h)
 layout(std430, binding = 0) readonly buffer Pyramid { vec4 pyramid_texels[]; };
 #include "hierarchical_warp.glsl"
 layout(std430, binding = 1) readonly buffer View { vec4 view_texels[]; };
 layout(std430, binding = 2) writeonly buffer Centres { vec4 centres[]; };
-layout(push_constant) uniform Push {
-  uint width;
-  uint height;
-  uint count;        // N
-  uint offset_bits;  // lattice offset o (SPEC §5)
-  uint space3d;
-} pc;
+layout(push_constant) uniform PushBlock { KmeansSeedPush pc; };
 
 void main() {
   uint i = kmeans_flat_invocation();

@@ -4,7 +4,8 @@
 // (at most size / CHUNK + 1, in chunk order) and builds the VSGL (SPEC §7).
 #include "kmeans_common.glsl"
 #include "vsgl_math.glsl"
-layout(local_size_x = 64) in;
+#include "interface/kmeans.h"
+layout(local_size_x_id = 0) in;  // kKmeansNarrowGroupSize (interface/kmeans.h)
 layout(std430, binding = 0) readonly buffer Ranges { uvec2 ranges[]; };
 layout(std430, binding = 1) readonly buffer Pieces { vec4 pieces[]; };  // 4 vec4 per slot
 layout(std430, binding = 2) readonly buffer Centres { vec4 centres[]; };

@@ -5,7 +5,8 @@
 // builds the cluster's VSGL (SPEC §7).
 #include "kmeans_common.glsl"
 #include "vsgl_math.glsl"
-layout(local_size_x = 64) in;
+#include "interface/kmeans.h"
+layout(local_size_x_id = 0) in;  // kKmeansNarrowGroupSize (interface/kmeans.h)
 layout(std430, binding = 0) readonly buffer View { vec4 view_texels[]; };
 layout(std430, binding = 1) readonly buffer Sorted { uvec2 sorted_pairs[]; };
 layout(std430, binding = 2) readonly buffer Ranges { uvec2 ranges[]; };

@@ -4,14 +4,12 @@
 // moves the centre to the q-weighted mean of its features. A cluster with no texel, or whose
 // texels all have q = 0, keeps its centre (SPEC §6.2).
 #include "kmeans_common.glsl"
-layout(local_size_x = 64) in;
+#include "interface/kmeans.h"
+layout(local_size_x_id = 0) in;  // kKmeansNarrowGroupSize (interface/kmeans.h)
 layout(std430, binding = 0) readonly buffer Ranges { uvec2 ranges[]; };
 layout(std430, binding = 1) readonly buffer Pieces { vec4 pieces[]; };
 layout(std430, binding = 2) buffer Centres { vec4 centres[]; };
-layout(push_constant) uniform Push {
-  uint clusters;  // N
-  uint chunk;
-} pc;
+layout(push_constant) uniform PushBlock { KmeansUpdatePush pc; };
 
 void main() {
   uint k = kmeans_flat_invocation();

@@ -8,14 +8,12 @@
 // Fixed order, no float atomics: the centres are reproducible run to run, and the CPU reference
 // (kmeans_update_centres in harness/reference/kmeans_reference.cpp) repeats the same order bit for bit.
 #include "kmeans_common.glsl"
-layout(local_size_x = 64) in;
+#include "interface/kmeans.h"
+layout(local_size_x_id = 0) in;  // kKmeansNarrowGroupSize (interface/kmeans.h)
 layout(std430, binding = 0) readonly buffer Sorted { uvec2 sorted_pairs[]; };
 layout(std430, binding = 1) readonly buffer Features { vec4 features[]; };
 layout(std430, binding = 2) writeonly buffer Pieces { vec4 pieces[]; };
-layout(push_constant) uniform Push {
-  uint count;  // sorted elements (W * H)
-  uint chunk;  // CHUNK
-} pc;
+layout(push_constant) uniform PushBlock { KmeansPiecesPush pc; };
 
 vec4 weighted_feature(uint texel) {
   vec4 f = features[texel];

@@ -8,24 +8,15 @@
 // Output: linear radiance (rgb, 1) per valid pixel, (0, 0, 0, 0) where the G-buffer has no surface.
 #include "vsgl_math.glsl"
 #include "sg_eval.glsl"
+#include "interface/shading.h"
 
-layout(local_size_x = 16, local_size_y = 16) in;
-const uint TILE = 256u;  // = threads per group
+layout(local_size_x_id = 0, local_size_y_id = 1) in;  // kShadeGroupSize (interface/shading.h)
+const uint TILE = gl_WorkGroupSize.x * gl_WorkGroupSize.y;  // = threads per group
 
 layout(std430, binding = 0) readonly buffer View { vec4 view_texels[]; };  // the G-buffer, DeviceView layout
 layout(std430, binding = 1) readonly buffer Lights { Vsgl vsgls[]; };
 layout(std430, binding = 2) writeonly buffer Radiance { vec4 radiance[]; };
-layout(push_constant) uniform Push {
-  uint width;       // G-buffer W x H
-  uint height;
-  uint out_width;   // ceil(W / stride) x ceil(H / stride)
-  uint out_height;
-  uint stride;
-  uint vsgl_count;
-  uint pad0;
-  uint pad1;
-  vec4 camera_position;
-} pc;
+layout(push_constant) uniform PushBlock { ShadePush pc; };
 
 shared Vsgl tile[TILE];
 

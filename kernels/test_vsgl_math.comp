@@ -3,8 +3,9 @@
 // Test-only kernel: evaluates the VSGL maths of kernels/include/ for a batch of cases so that
 // tests/test_vsgl_math_gpu.cpp can compare the GLSL with its C++ twin (harness/math/vsgl_math.hpp).
 #include "sg_eval.glsl"
+#include "interface/testing.h"
 
-layout(local_size_x_id = 0) in;
+layout(local_size_x_id = 0) in;  // kTestGroupSize (interface/testing.h)
 
 // One case (std430; C++: TwinCase in the test).
 struct TwinCase {
@@ -38,7 +39,7 @@ struct TwinResult {
 
 layout(std430, binding = 0) readonly buffer Cases { TwinCase cases[]; };
 layout(std430, binding = 1) writeonly buffer Results { TwinResult results[]; };
-layout(push_constant) uniform Push { uint count; } pc;
+layout(push_constant) uniform PushBlock { TestCountPush pc; };
 
 void main() {
   uint i = gl_GlobalInvocationID.x;

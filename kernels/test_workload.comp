@@ -1,12 +1,11 @@
 #version 450
+#extension GL_GOOGLE_include_directive : require
 // A known amount of work for the timing tests: each invocation runs `iterations` steps of an
 // integer hash and stores the result, so the dispatch cannot be optimized away.
-layout(local_size_x_id = 0) in;
+#include "interface/testing.h"
+layout(local_size_x_id = 0) in;  // kTestGroupSize (interface/testing.h)
 layout(std430, binding = 0) writeonly buffer Out { uint values[]; };
-layout(push_constant) uniform Push {
-  uint count;
-  uint iterations;
-} pc;
+layout(push_constant) uniform PushBlock { TestWorkloadPush pc; };
 
 void main() {
   uint i = gl_GlobalInvocationID.x;

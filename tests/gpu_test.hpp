@@ -15,6 +15,7 @@
 #include "harness/vk/command_stream.hpp"
 #include "harness/vk/compute_pipeline.hpp"
 #include "harness/vk/device.hpp"
+#include "kernels/include/interface/testing.h"
 
 namespace vsgl::test {
 
@@ -63,11 +64,12 @@ inline bool division_is_correctly_rounded() {
     Buffer in(dev, pairs.size() * sizeof(float), MemoryUsage::kDeviceLocal, "test.division.pairs");
     Buffer out(dev, kCount * sizeof(float), MemoryUsage::kDeviceLocal, "test.division.quotients");
     upload(dev, in, pairs.data(), pairs.size() * sizeof(float));
-    ComputePipeline pipeline(dev, {"test_division.comp", 2, sizeof(uint32_t), {}});
+    ComputePipeline pipeline(dev, {"test_division.comp", 2, sizeof(gpu::TestCountPush),
+                                    work_group_size_1d(gpu::kTestGroupSize)});
     BindingSet set(dev, pipeline, {in, out}, "test.division.set");
     dev.submit_and_wait([&](VkCommandBuffer cmd) {
       CommandStream stream(cmd);
-      stream.dispatch(pipeline, set, kCount, div_up(kCount, 64));
+      stream.dispatch(pipeline, set, gpu::TestCountPush{kCount}, div_up(kCount, gpu::kTestGroupSize));
     });
     const auto q = download_vector<float>(dev, out, kCount);
     for (uint32_t i = 0; i < kCount; ++i)

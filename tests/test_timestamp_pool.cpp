@@ -9,16 +9,15 @@
 #include "harness/vk/timestamp_pool.hpp"
 #include "harness/vk/unique_handle.hpp"
 #include "harness/vk/vk_check.hpp"
+#include "kernels/include/interface/testing.h"
 
 namespace vsgl {
 namespace {
 
 using test::GpuTest;
 
-struct WorkloadPush {
-  uint32_t count;
-  uint32_t iterations;
-};
+using gpu::kTestGroupSize;
+using WorkloadPush = gpu::TestWorkloadPush;
 
 TEST(TimestampArithmetic, WrapMaskAndPeriod) {
   EXPECT_EQ(TimestampPool::mask_for_bits(64), ~uint64_t{0});
@@ -46,7 +45,7 @@ TEST_F(TimestampPoolTest, EachIntervalTimesItsOwnPhase) {
   ASSERT_TRUE(dev.info().timestamps());
   const uint32_t count = 1u << 16;
   Buffer out(dev, count * sizeof(uint32_t), MemoryUsage::kDeviceLocal, "test.workload.out");
-  ComputePipeline pipeline(dev, {"test_workload.comp", 1, sizeof(WorkloadPush), {{0, 64}}});
+  ComputePipeline pipeline(dev, {"test_workload.comp", 1, sizeof(WorkloadPush), work_group_size_1d(kTestGroupSize)});
   BindingSet set(dev, pipeline, {out}, "test.workload.set");
   TimestampPool pool(dev, 4, "test.timestamps");
 
@@ -55,11 +54,11 @@ TEST_F(TimestampPoolTest, EachIntervalTimesItsOwnPhase) {
       CommandStream stream(cmd);
       pool.reset(cmd);
       pool.write(cmd);
-      stream.dispatch(pipeline, set, WorkloadPush{count, 8}, div_up(count, 64));
+      stream.dispatch(pipeline, set, WorkloadPush{count, 8}, div_up(count, kTestGroupSize));
       pool.write(cmd);
-      stream.dispatch(pipeline, set, WorkloadPush{count, heavy_iterations}, div_up(count, 64));
+      stream.dispatch(pipeline, set, WorkloadPush{count, heavy_iterations}, div_up(count, kTestGroupSize));
       pool.write(cmd);
-      stream.dispatch(pipeline, set, WorkloadPush{count, 8}, div_up(count, 64));
+      stream.dispatch(pipeline, set, WorkloadPush{count, 8}, div_up(count, kTestGroupSize));
       pool.write(cmd);
       EXPECT_EQ(stream.dispatch_count(), 3u);
     });
@@ -92,9 +91,9 @@ TEST_F(TimestampPoolTest, PipelineStatisticsCountTheDispatchedInvocations) {
   Device& dev = device();
   if (!dev.pipeline_statistics_enabled()) GTEST_SKIP() << "device has no pipeline statistics queries";
   const uint32_t count = 1000;  // not a multiple of the group size: the tail group still runs
-  const uint32_t local = 64;
+  const uint32_t local = kTestGroupSize;
   Buffer out(dev, count * sizeof(uint32_t), MemoryUsage::kDeviceLocal, "test.stats.out");
-  ComputePipeline pipeline(dev, {"test_workload.comp", 1, sizeof(WorkloadPush), {{0, local}}});
+  ComputePipeline pipeline(dev, {"test_workload.comp", 1, sizeof(WorkloadPush), work_group_size_1d(local)});
   BindingSet set(dev, pipeline, {out}, "test.stats.set");
 
   VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};

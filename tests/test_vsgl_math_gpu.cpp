@@ -23,6 +23,7 @@
 #include "harness/vk/command_stream.hpp"
 #include "harness/vk/compute_pipeline.hpp"
 #include "harness/math/vsgl_math.hpp"
+#include "kernels/include/interface/testing.h"
 
 namespace vsgl {
 namespace {
@@ -58,10 +59,6 @@ struct TwinResult {
   glm::vec4 scalars;
 };
 static_assert(sizeof(TwinResult) == 9 * 16);
-
-struct Push {
-  uint32_t count;
-};
 
 constexpr float kAbsoluteFloor = 1e-30f;
 constexpr float kRelative = 1e-4f;
@@ -171,12 +168,12 @@ TEST_F(VsglMathGpuTest, GlslMatchesTheCppTwins) {
   Buffer in(dev, sizeof(TwinCase) * count, MemoryUsage::kDeviceLocal, "test.vsgl_math.cases");
   Buffer out(dev, sizeof(TwinResult) * count, MemoryUsage::kDeviceLocal, "test.vsgl_math.results");
   upload(dev, in, cases.data(), sizeof(TwinCase) * count);
-  const uint32_t local = 64;
-  ComputePipeline pipeline(dev, {"test_vsgl_math.comp", 2, sizeof(Push), {{0, local}}});
+  const uint32_t local = gpu::kTestGroupSize;
+  ComputePipeline pipeline(dev, {"test_vsgl_math.comp", 2, sizeof(gpu::TestCountPush), work_group_size_1d(local)});
   BindingSet set(dev, pipeline, {in, out}, "test.vsgl_math.set");
   dev.submit_and_wait([&](VkCommandBuffer cmd) {
     CommandStream stream(cmd);
-    stream.dispatch(pipeline, set, Push{count}, div_up(count, local));
+    stream.dispatch(pipeline, set, gpu::TestCountPush{count}, div_up(count, local));
   });
   const auto results = download_vector<TwinResult>(dev, out, count);
 

@@ -6,21 +6,9 @@
 #include "harness/vk/device.hpp"
 #include "harness/generators/device_view.hpp"
 #include "harness/core/error.hpp"
+#include "kernels/include/interface/shading.h"
 
 namespace vsgl {
-namespace {
-
-// The push-constant block of kernels/shade_vsgls.comp.
-struct ShadePush {
-  uint32_t width, height, out_width, out_height, stride, vsgl_count, pad0, pad1;
-  glm::vec4 camera_position;
-};
-static_assert(sizeof(ShadePush) == 48);
-
-constexpr uint32_t kGroupSide = 16;  // local_size_x = local_size_y of the kernel
-
-}  // namespace
-
 uint32_t shaded_extent(uint32_t side, uint32_t stride) { return (side + stride - 1) / stride; }
 
 RadianceImage shade_camera_view(Device& device, const DeviceView& camera, const Buffer& vsgls, uint32_t vsgl_count,
@@ -38,18 +26,20 @@ RadianceImage shade_camera_view(Device& device, const DeviceView& camera, const 
   const std::size_t count = std::size_t{image.width} * image.height;
 
   Buffer radiance(device, count * sizeof(glm::vec4), MemoryUsage::kDeviceLocal, "shade.radiance");
-  ComputePipeline pipeline(device, {"shade_vsgls.comp", 3, sizeof(ShadePush), {}});
+  ComputePipeline pipeline(device, {"shade_vsgls.comp", 3, sizeof(gpu::ShadePush),
+                                    work_group_size_2d(gpu::kShadeGroupSize, gpu::kShadeGroupSize)});
   BindingSet set(device, pipeline, {camera.texels, BufferBinding(vsgls, 0, VkDeviceSize{vsgl_count} * sizeof(VsglRecord)),
                                     radiance},
                  "shade.set");
-  const ShadePush push{camera.square.width, camera.square.height, image.width, image.height, stride, vsgl_count,
+  const gpu::ShadePush push{camera.square.width, camera.square.height, image.width, image.height, stride, vsgl_count,
                        0, 0, glm::vec4(camera.source_position, 1.0f)};
   device.submit_and_wait(
       [&](VkCommandBuffer cmd) {
         CommandStream stream(cmd);
         // The VSGLs were written by an earlier submission: order those writes before the reads.
         stream.full_barrier();
-        stream.dispatch(pipeline, set, push, div_up(image.width, kGroupSide), div_up(image.height, kGroupSide));
+        stream.dispatch(pipeline, set, push, div_up(image.width, gpu::kShadeGroupSize),
+                        div_up(image.height, gpu::kShadeGroupSize));
       },
       "shading pass");
   image.pixels = download_vector<glm::vec4>(device, radiance, count);

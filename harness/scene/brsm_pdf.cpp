@@ -12,14 +12,10 @@
 #include "harness/core/error.hpp"
 #include "harness/generators/fis/fis_generator.hpp"
 #include "harness/vk/timestamp_pool.hpp"
+#include "kernels/include/interface/brsm.h"
 
 namespace vsgl {
 namespace {
-
-struct BrsmPush {
-  uint32_t width, height, camera_count, pad;
-  glm::vec4 light_position;
-};
 
 struct VplLobe {
   glm::vec3 axis;
@@ -69,7 +65,8 @@ BrsmBuild build_brsm_pdf(Device& device, Capture& capture, uint32_t camera_vsgls
   Buffer rsm_buffer(device, rsm_texels.size() * sizeof(glm::vec4), MemoryUsage::kDeviceLocal, "brsm.rsm_texels");
   upload(device, rsm_buffer, rsm_texels.data(), rsm_texels.size() * sizeof(glm::vec4));
   Buffer pdf(device, rsm.texels() * sizeof(float), MemoryUsage::kDeviceLocal, "brsm.pdf");
-  ComputePipeline pipeline(device, {"brsm_pdf.comp", 3, sizeof(BrsmPush), {}});
+  ComputePipeline pipeline(device, {"brsm_pdf.comp", 3, sizeof(gpu::BrsmPush),
+                                    work_group_size_2d(gpu::kBrsmGroupSize, gpu::kBrsmGroupSize)});
   BindingSet set(device, pipeline, {rsm_buffer, camera_fis.vsgls(), pdf}, "brsm.set");
 
   std::optional<TimestampPool> timestamps;
@@ -82,8 +79,10 @@ BrsmBuild build_brsm_pdf(Device& device, Capture& capture, uint32_t camera_vsgls
           timestamps->write(cmd);
         }
         record_untimed(camera_fis, stream);
-        const BrsmPush push{rsm.width, rsm.height, params.vsgl_count, 0, glm::vec4(capture.meta.light.position, 1.0f)};
-        stream.dispatch(pipeline, set, push, div_up(rsm.width, 16), div_up(rsm.height, 16));
+        const gpu::BrsmPush push{rsm.width, rsm.height, params.vsgl_count, 0,
+                                 glm::vec4(capture.meta.light.position, 1.0f)};
+        stream.dispatch(pipeline, set, push, div_up(rsm.width, gpu::kBrsmGroupSize),
+                        div_up(rsm.height, gpu::kBrsmGroupSize));
         if (timestamps) timestamps->write(cmd);
       },
       "brsm pdf");

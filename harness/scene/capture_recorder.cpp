@@ -14,6 +14,7 @@
 #include "harness/core/version.hpp"
 #include "harness/capture/view_matrices.hpp"
 #include "harness/vk/vk_check.hpp"
+#include "kernels/include/interface/raster.h"
 
 namespace vsgl {
 namespace {
@@ -21,14 +22,7 @@ namespace {
 constexpr uint32_t kTargets = 5;  // position+valid, normal, diffuse, specular+roughness, pdf
 constexpr VkFormat kColorFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
 
-// Mirrors RasterPush in kernels/include/scene_raster.glsl.
-struct RasterPush {
-  glm::mat4 view_projection;
-  glm::vec4 source_position_mode;
-  glm::vec4 spot_axis_cos_cone;
-  glm::vec4 intensity_texel_area;
-};
-static_assert(sizeof(RasterPush) == 112);
+using gpu::RasterPush;  // kernels/include/interface/raster.h
 
 VkFormat pick_depth_format(const Device& device) {
   for (VkFormat f : {VK_FORMAT_D32_SFLOAT, VK_FORMAT_X8_D24_UNORM_PACK32, VK_FORMAT_D16_UNORM}) {

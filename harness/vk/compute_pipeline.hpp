@@ -21,6 +21,12 @@ struct SpecializationConstant {
 };
 uint32_t float_bits(float f);
 
+// The work-group size of a kernel declared `layout(local_size_x_id = 0) in;` (1D) or
+// `layout(local_size_x_id = 0, local_size_y_id = 1) in;` (2D); a 1D kernel may give id 1 to
+// another constant.
+inline std::vector<SpecializationConstant> work_group_size_1d(uint32_t x) { return {{0, x}}; }
+inline std::vector<SpecializationConstant> work_group_size_2d(uint32_t x, uint32_t y) { return {{0, x}, {1, y}}; }
+
 struct ComputePipelineDesc {
   std::string shader;             // embedded name, e.g. "mip_level.comp"
   uint32_t storage_buffers = 0;   // bindings 0..n-1

@@ -9,21 +9,15 @@
 // No subgroup operations: the kernels work for any subgroup size.
 #include "kmeans_common.glsl"
 
-layout(local_size_x = 256) in;
+#include "interface/kmeans.h"
+layout(local_size_x_id = 0) in;  // kKmeansRadixGroupSize: one thread per digit
 layout(std430, binding = 0) readonly buffer Assignment { uint assignment[]; };
 layout(std430, binding = 1) readonly buffer Source { uvec2 source_pairs[]; };
 layout(std430, binding = 2) writeonly buffer Destination { uvec2 destination_pairs[]; };
 layout(std430, binding = 3) buffer Histogram { uint histogram[]; };
-layout(push_constant) uniform Push {
-  uint count;     // elements (W * H)
-  uint clusters;  // N: the key of "no cluster"
-  uint shift;     // bit offset of this pass's digit
-  uint from_assignment;
-  uint tiles;     // groups holding elements
-  uint rounds;    // 256-element rounds per tile
-} pc;
+layout(push_constant) uniform PushBlock { KmeansRadixPush pc; };
 
-const uint RADIX = 256u;
+const uint RADIX = kKmeansRadix;
 
 uvec2 radix_pair(uint e) { return pc.from_assignment != 0u ? uvec2(assignment[e], e) : source_pairs[e]; }
 uint radix_digit(uvec2 pair) { return (kmeans_sort_key(pair.x, pc.clusters) >> pc.shift) & (RADIX - 1u); }

@@ -8,62 +8,45 @@
 #include "harness/generators/device_view.hpp"
 #include "harness/core/error.hpp"
 #include "harness/math/vsgl_math.hpp"
+#include "kernels/include/interface/kmeans.h"
 
 namespace vsgl {
 namespace {
 
-// Work sizes; they must match the kernels' local sizes.
-constexpr uint32_t kTile = 16;          // 16x16 threads: per-texel passes over the image
-constexpr uint32_t kWide = 256;         // fill, assign, scan, radix
-constexpr uint32_t kNarrow = 64;        // per-centre / per-cluster / per-chunk passes
-constexpr uint32_t kScanBlock = 1024;   // kmeans_scan_blocks.comp: 256 threads x 4 values
-constexpr uint32_t kRadix = 256;        // 8-bit digits
+// Work-group sizes and push constants: kernels/include/interface/kmeans.h, shared with the kernels.
+constexpr uint32_t kTile = gpu::kKmeansImageGroupSize;  // kTile x kTile: per-texel passes over the image
+constexpr uint32_t kWide = gpu::kKmeansWideGroupSize;   // fill, assign, scan
+constexpr uint32_t kNarrow = gpu::kKmeansNarrowGroupSize;  // per-centre / per-cluster / per-chunk passes
+constexpr uint32_t kRadix = gpu::kKmeansRadix;          // 8-bit digits
+constexpr uint32_t kRadixGroup = gpu::kKmeansRadixGroupSize;  // one radix-kernel thread per digit
+constexpr uint32_t kScanBlock = kWide * gpu::kKmeansScanItems;  // values per kmeans_scan_blocks group
 constexpr uint32_t kRadixRounds = 8;    // 2048 elements per tile
-// Radix scatter's shared memory: a cursor per digit and a 256-bit mask per digit.
+// Radix scatter's shared memory: a cursor per digit and a kRadix-bit mask per digit.
 constexpr uint32_t kRadixSharedBytes = (kRadix + kRadix * (kRadix / 32)) * 4;
+// The largest work group of the k-means kernels.
+constexpr uint32_t kLargestGroup = std::max({kTile * kTile, kWide, kNarrow, kRadixGroup});
 // kernels/include/kmeans_grid.glsl: KMEANS_CELLS_PER_CENTRE cells per centre are aimed at; ceil()
 // of the per-axis counts can multiply that by up to 2^3.
 constexpr uint32_t kCellsPerCentre = 2;
 constexpr uint32_t kGridCounts = 8;  // KMEANS_GRID_COUNTS: words before the cell counts
 
-struct FillPush {
-  uint32_t offset, count, value;
-};
-struct PreparePush {
-  uint32_t width, height, camera_view, space3d;
-  glm::vec4 source_position;
-};
-struct MipPush {
-  uint32_t width, height, source_level;
-};
-struct SeedPush {
-  uint32_t width, height, count, offset_bits, space3d;
-};
-struct GridPush {
-  uint32_t count, max_cells;
-};
-struct AssignPush {
-  uint32_t texels, count, max_cells;
-};
-struct ScanPush {
-  uint32_t in_aux, in_offset, count, out_offset;
-};
-struct RadixPush {
-  uint32_t count, clusters, shift, from_assignment, tiles, rounds;
-};
-struct RangesPush {
-  uint32_t count, clusters;
-};
-struct PiecesPush {
-  uint32_t count, chunk;
-};
-struct UpdatePush {
-  uint32_t clusters, chunk;
-};
-struct SumPush {  // kernels/include/kmeans_sum_push.glsl
-  uint32_t width, height, texels, clusters, chunk, camera_view, space3d, square_size;
-  glm::vec4 source_position;
-};
+using gpu::KmeansAssignPush;
+using gpu::KmeansFillPush;
+using gpu::KmeansGridPush;
+using gpu::KmeansMipPush;
+using gpu::KmeansPiecesPush;
+using gpu::KmeansPreparePush;
+using gpu::KmeansRadixPush;
+using gpu::KmeansRangesPush;
+using gpu::KmeansScanPush;
+using gpu::KmeansSeedPush;
+using gpu::KmeansSumPush;
+using gpu::KmeansUpdatePush;
+
+// A k-means kernel: its storage buffers, push constants and 1D work-group size.
+ComputePipelineDesc kernel_1d(const char* shader, uint32_t buffers, uint32_t push_bytes, uint32_t group) {
+  return {shader, buffers, push_bytes, work_group_size_1d(group)};
+}
 
 KmeansParams checked(const KmeansParams& p, const DeviceView& view, KmeansSpace space) {
   const std::string name = kmeans_generator_name(space, p.segmented_sum);
@@ -79,8 +62,8 @@ uint32_t device_checked_texels(const Device& device, const DeviceView& view) {
     throw DeviceError("k-means: the radix sort needs " + std::to_string(kRadixSharedBytes) +
                       " bytes of shared memory per workgroup; " + device.info().name + " offers " +
                       std::to_string(device.info().max_shared_memory));
-  if (device.info().max_workgroup_invocations < kWide)
-    throw DeviceError("k-means: workgroups of " + std::to_string(kWide) + " invocations are not supported by " +
+  if (device.info().max_workgroup_invocations < kLargestGroup)
+    throw DeviceError("k-means: workgroups of " + std::to_string(kLargestGroup) + " invocations are not supported by " +
                       device.info().name);
   return view.square.width * view.square.height;
 }
@@ -135,20 +118,20 @@ KmeansGenerator::KmeansGenerator(Device& device, const DeviceView& view, KmeansS
       centre_pieces_(device, bytes<glm::vec4>(pieces_), MemoryUsage::kDeviceLocal, name() + ".centre_pieces"),
       vsgls_(device, bytes<VsglRecord>(params.vsgl_count), MemoryUsage::kDeviceLocal,
              name() + "." + view.label + ".vsgls"),
-      fill_(device, {"kmeans_fill.comp", 1, sizeof(FillPush), {}}),
-      prepare_(device, {"kmeans_prepare.comp", 4, sizeof(PreparePush), {}}),
-      pdf_mip_(device, {"kmeans_pdf_mip.comp", 1, sizeof(MipPush), {}}),
-      seed_(device, {"kmeans_seed.comp", 3, sizeof(SeedPush), {}}),
-      grid_count_(device, {"kmeans_grid_count.comp", 2, sizeof(GridPush), {}}),
-      grid_fill_(device, {"kmeans_grid_fill.comp", 3, sizeof(GridPush), {}}),
-      assign_(device, {"kmeans_assign.comp", 5, sizeof(AssignPush), {}}),
-      scan_blocks_(device, {"kmeans_scan_blocks.comp", 2, sizeof(ScanPush), {}}),
-      scan_add_(device, {"kmeans_scan_add.comp", 2, sizeof(ScanPush), {}}),
-      radix_histogram_(device, {"kmeans_radix_histogram.comp", 4, sizeof(RadixPush), {}}),
-      radix_scatter_(device, {"kmeans_radix_scatter.comp", 4, sizeof(RadixPush), {}}),
-      ranges_pipeline_(device, {"kmeans_ranges.comp", 2, sizeof(RangesPush), {}}),
-      update_pieces_(device, {"kmeans_update_pieces.comp", 3, sizeof(PiecesPush), {}}),
-      update_centres_(device, {"kmeans_update_centres.comp", 3, sizeof(UpdatePush), {}}),
+      fill_(device, kernel_1d("kmeans_fill.comp", 1, sizeof(KmeansFillPush), kWide)),
+      prepare_(device, {"kmeans_prepare.comp", 4, sizeof(KmeansPreparePush), work_group_size_2d(kTile, kTile)}),
+      pdf_mip_(device, {"kmeans_pdf_mip.comp", 1, sizeof(KmeansMipPush), work_group_size_2d(kTile, kTile)}),
+      seed_(device, kernel_1d("kmeans_seed.comp", 3, sizeof(KmeansSeedPush), kNarrow)),
+      grid_count_(device, kernel_1d("kmeans_grid_count.comp", 2, sizeof(KmeansGridPush), kNarrow)),
+      grid_fill_(device, kernel_1d("kmeans_grid_fill.comp", 3, sizeof(KmeansGridPush), kNarrow)),
+      assign_(device, kernel_1d("kmeans_assign.comp", 5, sizeof(KmeansAssignPush), kWide)),
+      scan_blocks_(device, kernel_1d("kmeans_scan_blocks.comp", 2, sizeof(KmeansScanPush), kWide)),
+      scan_add_(device, kernel_1d("kmeans_scan_add.comp", 2, sizeof(KmeansScanPush), kWide)),
+      radix_histogram_(device, kernel_1d("kmeans_radix_histogram.comp", 4, sizeof(KmeansRadixPush), kRadixGroup)),
+      radix_scatter_(device, kernel_1d("kmeans_radix_scatter.comp", 4, sizeof(KmeansRadixPush), kRadixGroup)),
+      ranges_pipeline_(device, kernel_1d("kmeans_ranges.comp", 2, sizeof(KmeansRangesPush), kNarrow)),
+      update_pieces_(device, kernel_1d("kmeans_update_pieces.comp", 3, sizeof(KmeansPiecesPush), kNarrow)),
+      update_centres_(device, kernel_1d("kmeans_update_centres.comp", 3, sizeof(KmeansUpdatePush), kNarrow)),
       fill_grid_set_(device, fill_, {grid_}, name() + ".fill"),
       prepare_set_(device, prepare_, {view.texels, features_, pdf_pyramid_, grid_}, name() + ".prepare"),
       pdf_mip_set_(device, pdf_mip_, {pdf_pyramid_}, name() + ".pdf_mip"),
@@ -173,15 +156,15 @@ KmeansGenerator::KmeansGenerator(Device& device, const DeviceView& view, KmeansS
       update_centres_set_(device, update_centres_, {ranges_, centre_pieces_, centres_}, name() + ".update_centres") {
   if (params_.segmented_sum) {
     sum_pieces_.emplace(device, bytes<glm::vec4>(4ull * pieces_), MemoryUsage::kDeviceLocal, name() + ".sum_pieces");
-    segsum_pieces_.emplace(device, ComputePipelineDesc{"kmeans_segsum_pieces.comp", 3, sizeof(SumPush), {}});
-    segsum_clusters_.emplace(device, ComputePipelineDesc{"kmeans_segsum_clusters.comp", 4, sizeof(SumPush), {}});
+    segsum_pieces_.emplace(device, kernel_1d("kmeans_segsum_pieces.comp", 3, sizeof(KmeansSumPush), kNarrow));
+    segsum_clusters_.emplace(device, kernel_1d("kmeans_segsum_clusters.comp", 4, sizeof(KmeansSumPush), kNarrow));
     segsum_pieces_set_.emplace(device, *segsum_pieces_, std::initializer_list<BufferBinding>{view.texels, sorted_, *sum_pieces_},
                                name() + ".segsum_pieces");
     segsum_clusters_set_.emplace(device, *segsum_clusters_,
                                  std::initializer_list<BufferBinding>{ranges_, *sum_pieces_, centres_, vsgls_},
                                  name() + ".segsum_clusters");
   } else {
-    sum_.emplace(device, ComputePipelineDesc{"kmeans_sum.comp", 5, sizeof(SumPush), {}});
+    sum_.emplace(device, kernel_1d("kmeans_sum.comp", 5, sizeof(KmeansSumPush), kNarrow));
     sum_set_.emplace(device, *sum_, std::initializer_list<BufferBinding>{view.texels, sorted_, ranges_, centres_, vsgls_},
                      name() + ".sum");
   }
@@ -231,7 +214,7 @@ void KmeansGenerator::record_sort(CommandStream& stream) { record_radix_sort(str
 
 void KmeansGenerator::record_sum(CommandStream& stream) {
   const VirtualSquare& sq = view_.square;
-  const SumPush push{sq.width,
+  const KmeansSumPush push{sq.width,
                      sq.height,
                      texels_,
                      params_.vsgl_count,
@@ -254,27 +237,28 @@ void KmeansGenerator::record_sum(CommandStream& stream) {
 void KmeansGenerator::record_seeding(CommandStream& stream) {
   const VirtualSquare& sq = view_.square;
   const uint32_t space3d = space_ == KmeansSpace::k3d ? 1u : 0u;
-  dispatch_flat(stream, fill_, fill_grid_set_, FillPush{0, kGridCounts, 0u}, 1);  // bounds := empty
+  dispatch_flat(stream, fill_, fill_grid_set_, KmeansFillPush{0, kGridCounts, 0u}, 1);  // bounds := empty
   stream.compute_barrier();
-  const PreparePush prepare{sq.width, sq.height, view_.kind == ViewKind::kCamera ? 1u : 0u, space3d,
+  const KmeansPreparePush prepare{sq.width, sq.height, view_.kind == ViewKind::kCamera ? 1u : 0u, space3d,
                             glm::vec4(view_.source_position, 0.0f)};
   stream.dispatch(prepare_, prepare_set_, prepare, div_up(sq.width, kTile), div_up(sq.height, kTile));
   for (uint32_t l = 0; l < sq.levels; ++l) {
     stream.compute_barrier();
-    stream.dispatch(pdf_mip_, pdf_mip_set_, MipPush{sq.width, sq.height, l}, div_up(sq.level_width(l + 1), kTile),
+    stream.dispatch(pdf_mip_, pdf_mip_set_, KmeansMipPush{sq.width, sq.height, l}, div_up(sq.level_width(l + 1), kTile),
                     div_up(sq.level_height(l + 1), kTile));
   }
   stream.compute_barrier();
-  dispatch_flat(stream, seed_, seed_set_, SeedPush{sq.width, sq.height, params_.vsgl_count, params_.offset_bits, space3d},
+  dispatch_flat(stream, seed_, seed_set_,
+                KmeansSeedPush{sq.width, sq.height, params_.vsgl_count, params_.offset_bits, space3d},
                 div_up(params_.vsgl_count, kNarrow));
 }
 
 // The uniform grid over the centres: clear -> count per cell -> exclusive scan -> scatter ids.
 void KmeansGenerator::record_grid_build(CommandStream& stream) {
   const uint32_t words = 2 * max_cells_ + 1;
-  dispatch_flat(stream, fill_, fill_grid_set_, FillPush{kGridCounts, words, 0u}, div_up(words, kWide));
+  dispatch_flat(stream, fill_, fill_grid_set_, KmeansFillPush{kGridCounts, words, 0u}, div_up(words, kWide));
   stream.compute_barrier();
-  const GridPush push{params_.vsgl_count, max_cells_};
+  const KmeansGridPush push{params_.vsgl_count, max_cells_};
   dispatch_flat(stream, grid_count_, grid_count_set_, push, div_up(params_.vsgl_count, kNarrow));
   stream.compute_barrier();
   record_scan(stream, grid_scan_, scan_blocks_grid_set_, scan_add_grid_set_);
@@ -283,7 +267,7 @@ void KmeansGenerator::record_grid_build(CommandStream& stream) {
 }
 
 void KmeansGenerator::record_assign(CommandStream& stream) {
-  dispatch_flat(stream, assign_, assign_set_, AssignPush{texels_, params_.vsgl_count, max_cells_},
+  dispatch_flat(stream, assign_, assign_set_, KmeansAssignPush{texels_, params_.vsgl_count, max_cells_},
                 div_up(texels_, kWide));
 }
 
@@ -293,12 +277,12 @@ void KmeansGenerator::record_scan(CommandStream& stream, const ScanPlan& plan, c
   for (std::size_t k = 0; k < lv.size(); ++k) {
     if (k > 0) stream.compute_barrier();
     const uint32_t out = k + 1 < lv.size() ? lv[k + 1].offset : plan.total_slot;
-    dispatch_flat(stream, scan_blocks_, blocks, ScanPush{lv[k].in_aux, lv[k].offset, lv[k].count, out},
+    dispatch_flat(stream, scan_blocks_, blocks, KmeansScanPush{lv[k].in_aux, lv[k].offset, lv[k].count, out},
                   div_up(lv[k].count, kScanBlock));
   }
   for (std::size_t k = lv.size() - 1; k-- > 0;) {
     stream.compute_barrier();
-    dispatch_flat(stream, scan_add_, add, ScanPush{lv[k].in_aux, lv[k].offset, lv[k].count, lv[k + 1].offset},
+    dispatch_flat(stream, scan_add_, add, KmeansScanPush{lv[k].in_aux, lv[k].offset, lv[k].count, lv[k + 1].offset},
                   div_up(lv[k].count, kScanBlock));
   }
 }
@@ -308,7 +292,7 @@ void KmeansGenerator::record_scan(CommandStream& stream, const ScanPlan& plan, c
 void KmeansGenerator::record_radix_sort(CommandStream& stream) {
   for (uint32_t p = 0; p < radix_passes_; ++p) {
     const bool to_sorted = (radix_passes_ - 1 - p) % 2 == 0;
-    const RadixPush push{texels_, params_.vsgl_count, 8 * p, p == 0 ? 1u : 0u, radix_tiles_, radix_rounds_};
+    const KmeansRadixPush push{texels_, params_.vsgl_count, 8 * p, p == 0 ? 1u : 0u, radix_tiles_, radix_rounds_};
     if (p > 0) stream.compute_barrier();
     dispatch_flat(stream, radix_histogram_, to_sorted ? histogram_to_sorted_set_ : histogram_to_scratch_set_, push,
                   radix_tiles_);
@@ -319,15 +303,15 @@ void KmeansGenerator::record_radix_sort(CommandStream& stream) {
                   radix_tiles_);
   }
   stream.compute_barrier();
-  dispatch_flat(stream, ranges_pipeline_, ranges_set_, RangesPush{texels_, params_.vsgl_count},
+  dispatch_flat(stream, ranges_pipeline_, ranges_set_, KmeansRangesPush{texels_, params_.vsgl_count},
                 div_up(params_.vsgl_count, kNarrow));
 }
 
 void KmeansGenerator::record_centre_update(CommandStream& stream) {
-  dispatch_flat(stream, update_pieces_, update_pieces_set_, PiecesPush{texels_, kKmeansChunk},
+  dispatch_flat(stream, update_pieces_, update_pieces_set_, KmeansPiecesPush{texels_, kKmeansChunk},
                 div_up(div_up(texels_, kKmeansChunk), kNarrow));
   stream.compute_barrier();
-  dispatch_flat(stream, update_centres_, update_centres_set_, UpdatePush{params_.vsgl_count, kKmeansChunk},
+  dispatch_flat(stream, update_centres_, update_centres_set_, KmeansUpdatePush{params_.vsgl_count, kKmeansChunk},
                 div_up(params_.vsgl_count, kNarrow));
 }
 

@@ -10,16 +10,10 @@
 #include "harness/vk/compute_pipeline.hpp"
 #include "harness/vk/device.hpp"
 #include "harness/vk/device_info.hpp"
+#include "kernels/include/interface/testing.h"
 
 namespace vsgl {
 namespace {
-
-constexpr uint32_t kLocalSize = 64;
-
-struct WorkloadPush {  // kernels/test_workload.comp
-  uint32_t count;
-  uint32_t iterations;
-};
 
 class DebugSlowGenerator final : public VsglGenerator {
  public:
@@ -28,7 +22,8 @@ class DebugSlowGenerator final : public VsglGenerator {
         work_(work),
         out_(device, static_cast<VkDeviceSize>(work.invocations) * sizeof(uint32_t), MemoryUsage::kDeviceLocal,
              inner_->name() + ".debug_slow.out"),
-        pipeline_(device, {"test_workload.comp", 1, sizeof(WorkloadPush), {{0, kLocalSize}}}),
+        pipeline_(device,
+                  {"test_workload.comp", 1, sizeof(gpu::TestWorkloadPush), work_group_size_1d(gpu::kTestGroupSize)}),
         set_(device, pipeline_, {out_}, inner_->name() + ".debug_slow.set") {}
 
   std::string name() const override { return inner_->name(); }
@@ -42,8 +37,8 @@ class DebugSlowGenerator final : public VsglGenerator {
     inner_->record(stream, [&](VkCommandBuffer cmd) {
       if (calls++ == last) {  // inside the last phase, after the generator's own work
         stream.full_barrier();
-        stream.dispatch(pipeline_, set_, WorkloadPush{work_.invocations, work_.iterations},
-                        div_up(work_.invocations, kLocalSize));
+        stream.dispatch(pipeline_, set_, gpu::TestWorkloadPush{work_.invocations, work_.iterations},
+                        div_up(work_.invocations, gpu::kTestGroupSize));
       }
       boundary(cmd);
     });
