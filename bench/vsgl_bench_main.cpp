@@ -42,6 +42,7 @@ commands:
       --max-repetitions M     ... or after M repetitions                           [1000]
       --quick                 3 repetitions, no noise target (CI smoke runs; marked in the JSON)
       --cold                  overwrite a 256 MiB buffer before every sample (cold caches)
+      --copy-mib M            buffers of the copy-bandwidth measurement (less only if memory is short) [256]
       --camera-vsgls N, --light-vsgls N, --K K, --iterations I   [2048, 1024, 1, 12]
       --kmeans-iterations I   Lloyd iterations of the k-means generators            [4]
       --json-only             write no markdown file (the console still shows the tables)

@@ -36,6 +36,7 @@ TEST_F(CompareDebugSlowTest, SlowedGeneratorAndOnlyItIsSlower) {
   o.quick = true;
   o.timing.min_repetitions = 8;  // >= the verdict's 5 samples
   o.timing.max_repetitions = 8;
+  o.copy_bandwidth.bytes = 1u << 20;  // small: this test is about compare
   o.out_dir = root / "base";
   run_tables(device(), o);
   o.out_dir = root / "slow";

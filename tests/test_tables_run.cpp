@@ -4,12 +4,14 @@
 // Also the schema validator itself and the line counter on hand-made inputs.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <limits>
 #include <regex>
 
 #include "gpu_test.hpp"
+#include "harness/compare/regression_run.hpp"
 #include "harness/core/error.hpp"
 #include "harness/generators/generator_registry.hpp"
 #include "harness/core/json_schema_subset.hpp"
@@ -46,6 +48,8 @@ TablesOptions tiny_options(const fs::path& root) {
   o.quick = true;
   o.timing.min_repetitions = 3;
   o.timing.max_repetitions = 3;
+  o.copy_bandwidth.bytes = 1u << 20;  // the measurement's shape, not the SPEC's 256 MiB
+  o.copy_bandwidth.copies = 3;
   return o;
 }
 
@@ -99,10 +103,41 @@ TEST_F(TablesRunTest, TinyRunProducesCompleteFiniteTablesThatMatchTheSchema) {
     EXPECT_TRUE(doc["ratios"]["kmeans_over_modified"].contains("kmeans_3d"));
     EXPECT_TRUE(doc["ratios"]["table1_to_table2"].contains("fis_modified"));
     EXPECT_EQ(doc["claims"].size(), 6u);
-    EXPECT_TRUE(doc["claims"][0]["holds"].is_boolean());
+    // Three rounds cannot give a 95 % interval of the paired overhead: no verdict from them.
+    EXPECT_EQ(doc["claims"][0]["id"], "modified_overhead");
+    EXPECT_TRUE(doc["claims"][0]["holds"].is_null());
+    EXPECT_EQ(doc["claims"][0]["note"].get<std::string>().rfind("inconclusive", 0), 0u);
+    const auto& paired = doc["ratios"]["paired_modified_minus_tok15"];
+    for (const char* view : {"camera_view", "light_view"})
+      for (const char* what : {"total", "filtered_sampling"}) {
+        const auto& d = paired[view][what];
+        EXPECT_EQ(d["rounds"], 3);
+        EXPECT_LE(d["ci_low_us"].get<double>(), d["hodges_lehmann_us"].get<double>());
+        EXPECT_LE(d["hodges_lehmann_us"].get<double>(), d["ci_high_us"].get<double>());
+        EXPECT_FALSE(d["reaches_nominal"].get<bool>());
+      }
+    // The physical limit: a copy bandwidth of this run and each streaming pass's fraction of it.
+    const auto& copy = doc["bandwidth"]["copy"];
+    EXPECT_EQ(copy["buffer_bytes"], 1u << 20);
+    const double copy_bps = copy["bytes_per_s"].get<double>();
+    EXPECT_TRUE(std::isfinite(copy_bps) && copy_bps > 0.0);
+    for (const char* g : {"fis_tok15", "fis_modified"})
+      for (const char* view : {"camera_view", "light_view"})
+        for (const char* pass : {"additional", "mipmapping"}) {
+          const auto& v = doc["bandwidth"]["passes"][g][view][pass];
+          EXPECT_DOUBLE_EQ(v["fraction_of_copy"].get<double>(), v["achieved_bytes_per_s"].get<double>() / copy_bps)
+              << g << " " << view << " " << pass;
+        }
+    EXPECT_FALSE(doc["bandwidth"]["passes"].contains("kmeans_2d"));  // no streaming pass to bound
     EXPECT_EQ(doc["capture"]["hashes"]["gbuffer"].size(), 15u);
   }
   EXPECT_NE(out.markdown[0].find("Filtered sampling"), std::string::npos);
+  EXPECT_NE(out.markdown[0].find("paired by round"), std::string::npos);
+  EXPECT_NE(out.markdown[0].find("Copy bandwidth"), std::string::npos);
+  // `compare` still loads the tables (it reads the statistics blocks, not the new ones).
+  const BenchRun loaded = load_bench_run_path(root / "out");
+  EXPECT_EQ(loaded.tables.size(), 2u);
+  EXPECT_EQ(loaded.series.size(), 2u * 4u * 9u);
   EXPECT_NE(out.markdown[0].find("| 0.816 |"), std::string::npos);  // the paper's column
 
   // A second run loads the captures (no recording) and finds them identical.

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cstring>
 #include <set>
 
 #include "gpu_test.hpp"
@@ -15,6 +16,9 @@
 #include "harness/core/error.hpp"
 #include "harness/generators/generator_registry.hpp"
 #include "harness/scene/scene.hpp"
+#include "harness/vk/buffer.hpp"
+#include "harness/vk/command_stream.hpp"
+#include "harness/vk/compute_pipeline.hpp"
 #include "harness/vk/timestamp_pool.hpp"
 #include "harness/timing/timing_runner.hpp"
 
@@ -193,6 +197,85 @@ TEST_F(TimingRunnerTest, StopsAtTheNoiseTargetOrTheCapButNeverBeforeTheMinimum) 
   const TimingResult rb = b.run();
   EXPECT_EQ(rb.repetitions, 3u);
   EXPECT_EQ(rb.stop_reason, "time_cap");
+}
+
+// A one-phase case whose work is chosen per round by the host: kernels/test_workload.comp dispatched
+// indirectly from a host-visible buffer that the test rewrites between rounds, so the same
+// recording does little work in some rounds and ~1000x more in others.
+struct WorkloadPush {  // kernels/test_workload.comp
+  uint32_t count;
+  uint32_t iterations;
+};
+
+class RoundWorkload final : public VsglGenerator {
+ public:
+  static constexpr uint32_t kLocal = 64;
+  static constexpr uint32_t kMaxGroups = 256;
+  RoundWorkload(Device& device, const Buffer& groups, const std::string& name)
+      : name_(name),
+        groups_(groups),
+        out_(device, VkDeviceSize{kMaxGroups} * kLocal * sizeof(uint32_t), MemoryUsage::kDeviceLocal, name + ".out"),
+        pipeline_(device, {"test_workload.comp", 1, sizeof(WorkloadPush), {{0, kLocal}}}),
+        set_(device, pipeline_, {out_}, name + ".set") {}
+  std::string name() const override { return name_; }
+  std::vector<std::string> phases() const override { return {"work"}; }
+  const Buffer& vsgls() const override { return out_; }
+  uint32_t vsgl_count() const override { return 0; }
+  void record(CommandStream& stream, const std::function<void(VkCommandBuffer)>& boundary) override {
+    VkCommandBuffer cmd = stream.get();
+    boundary(cmd);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.get());
+    VkDescriptorSet ds = set_.get();
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.layout(), 0, 1, &ds, 0, nullptr);
+    const WorkloadPush push{kMaxGroups * kLocal, 4096};
+    vkCmdPushConstants(cmd, pipeline_.layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
+    vkCmdDispatchIndirect(cmd, groups_.get(), 0);
+    boundary(cmd);
+  }
+
+ private:
+  std::string name_;
+  const Buffer& groups_;
+  Buffer out_;
+  ComputePipeline pipeline_;
+  BindingSet set_;
+};
+
+// The pairing guarantee of timing_runner.hpp: sample i of every case is round i. Rounds 1, 3, 4
+// (of 0..5) are heavy for both cases, the others light; each case's heavy-round samples must
+// carry that pattern, which a case whose samples were shifted against the rounds, reordered or
+// short of one would not. Judged on sums over three rounds (a 256x difference in work), so a
+// descheduled light replay on a loaded machine cannot flip it.
+TEST_F(TimingRunnerTest, SampleIOfEveryCaseIsRoundI) {
+  Buffer groups(device(), sizeof(VkDispatchIndirectCommand), MemoryUsage::kUpload, "test.round_groups",
+                VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT);
+  const auto set_groups = [&](uint32_t x) {
+    const VkDispatchIndirectCommand c{x, 1, 1};
+    std::memcpy(groups.mapped(), &c, sizeof c);
+  };
+  const std::set<uint32_t> heavy{1, 3, 4};
+  const uint32_t rounds = 6;
+  RoundWorkload a(device(), groups, "pair_a"), b(device(), groups, "pair_b");
+  TimingOptions options;
+  options.min_repetitions = rounds;
+  options.max_repetitions = rounds;
+  TimingRunner runner(device(), options);
+  runner.add(TimingCase{"pair_a", "light_view", &a});
+  runner.add(TimingCase{"pair_b", "light_view", &b});
+  set_groups(1);  // warm-up and round 0: light
+  const TimingResult r = runner.run([&](const TimingProgress& p) {
+    // Called after every warm-up and every round; p.rounds rounds are done, the next is p.rounds.
+    set_groups(heavy.contains(p.rounds) ? RoundWorkload::kMaxGroups : 1);
+  });
+  ASSERT_EQ(r.repetitions, rounds);
+  for (const CaseTiming& c : r.cases) {
+    SCOPED_TRACE(c.generator);
+    ASSERT_EQ(c.total_ms.size(), rounds);
+    ASSERT_EQ(c.phase_ms.at(0).size(), rounds);
+    double heavy_ms = 0, light_ms = 0;
+    for (uint32_t i = 0; i < rounds; ++i) (heavy.contains(i) ? heavy_ms : light_ms) += c.total_ms[i];
+    EXPECT_GT(heavy_ms, 3.0 * light_ms) << "heavy rounds " << heavy_ms << " ms, light rounds " << light_ms << " ms";
+  }
 }
 
 }  // namespace

@@ -59,6 +59,7 @@ int run_tables(Args& args) {
   const auto noise = args.value("--noise-target");
   const auto cap = args.value("--time-cap");
   o.timing.cold = args.flag("--cold");
+  o.copy_bandwidth.bytes = uint64_t{args.u32("--copy-mib", 256, 1)} << 20;
   o.json_only = args.flag("--json-only");
   o.clocks_locked = args.flag("--clocks-locked");
   o.debug_slow = args.list("--debug-slow", "");  // TEST-ONLY (harness/generators/testing/debug_slowdown.hpp)

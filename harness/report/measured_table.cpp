@@ -36,4 +36,21 @@ double median_view(const MeasuredTable& t, const std::string& g, const std::stri
   return summarize(need_case(t, g, view).total_ms).median;
 }
 
+const std::vector<double>& case_samples(const MeasuredTable& t, const std::string& g, const std::string& view,
+                                        const std::string& phase) {
+  const CaseTiming& c = need_case(t, g, view);
+  if (phase == "total") return c.total_ms;
+  for (std::size_t p = 0; p < c.phases.size(); ++p)
+    if (c.phases[p] == phase) return c.phase_ms[p];
+  throw std::logic_error(g + " has no phase '" + phase + "'");
+}
+
+PairedInterval paired_overhead(const MeasuredTable& t, const std::string& view, const std::string& phase) {
+  const std::string mod = "fis_modified", tok = "fis_tok15";
+  if (view.empty())
+    return paired_interval(subtract_samples(generator_totals(t, mod), generator_totals(t, tok)), kPairedConfidence);
+  return paired_interval(subtract_samples(case_samples(t, mod, view, phase), case_samples(t, tok, view, phase)),
+                         kPairedConfidence);
+}
+
 }  // namespace vsgl

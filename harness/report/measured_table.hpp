@@ -9,12 +9,19 @@
 #include <nlohmann/json.hpp>
 
 #include "harness/core/source_lines.hpp"
+#include "harness/core/statistics.hpp"
+#include "harness/timing/copy_bandwidth.hpp"
 #include "harness/timing/timing_runner.hpp"
 #include "harness/vk/device_info.hpp"
 
 namespace vsgl {
 
-inline constexpr int kTableSchemaVersion = 1;
+inline constexpr int kTableSchemaVersion = 2;
+
+struct ViewExtent {
+  uint32_t width = 0;
+  uint32_t height = 0;
+};
 
 // One measured paper table (1: atrium, 2: conference).
 struct MeasuredTable {
@@ -24,7 +31,9 @@ struct MeasuredTable {
   bool recorded_now = false;
   nlohmann::ordered_json capture;  // {"hashes": ..., sizes, ...}
   std::vector<std::string> generators;  // in column order
+  std::map<std::string, ViewExtent> views;  // "camera_view" / "light_view": the capture's sizes
   TimingResult timing;
+  CopyBandwidth copy_bandwidth;  // measured in the same run, just before the timing
 };
 
 // Everything of a run that is not a measurement.
@@ -48,5 +57,16 @@ const CaseTiming& need_case(const MeasuredTable& t, const std::string& generator
 std::vector<double> generator_totals(const MeasuredTable& t, const std::string& g);
 double median_total(const MeasuredTable& t, const std::string& g);
 double median_view(const MeasuredTable& t, const std::string& g, const std::string& view);
+// Per-round samples (ms) of one case's phase, or of its total for phase "total".
+// Throws std::logic_error when the table lacks the case or the phase.
+const std::vector<double>& case_samples(const MeasuredTable& t, const std::string& g, const std::string& view,
+                                        const std::string& phase);
+
+// The paper's overhead, per round (SPEC §9): fis_modified − fis_tok15 of the same round (the
+// pairing guarantee of timing_runner.hpp), in ms, as a Hodges-Lehmann estimate with its 95 %
+// interval. `view` empty: the generator totals (both views of the round); else that view's
+// `phase` ("total" or a phase name).
+inline constexpr double kPairedConfidence = 0.95;
+PairedInterval paired_overhead(const MeasuredTable& t, const std::string& view = "", const std::string& phase = "total");
 
 }  // namespace vsgl

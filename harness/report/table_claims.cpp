@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <stdexcept>
 #include <string>
 
 #include "harness/core/error.hpp"
@@ -36,6 +37,14 @@ ojson claim(const std::string& text, const std::string& id, const std::string& c
 
 }  // namespace
 
+OverheadVerdict judge_overhead(double low_us, double high_us, double bound_us, bool reaches_nominal) {
+  if (!(low_us <= high_us) || !(bound_us > 0)) throw std::invalid_argument("an overhead interval needs low <= high and a positive bound");
+  if (!reaches_nominal) return {std::nullopt, std::string(kInconclusivePrefix) + ": the interval falls short of 95% confidence"};
+  if (low_us >= -bound_us && high_us <= bound_us) return {true, ""};
+  if (low_us > bound_us || high_us < -bound_us) return {false, ""};
+  return {std::nullopt, kInconclusiveNote};
+}
+
 nlohmann::ordered_json claims_json(const MeasuredTable& t, const MeasuredTable* other, const ReportContext& ctx) {
   const auto& texts = ctx.paper.at("claims");
   if (!texts.is_array() || texts.size() != 6)
@@ -46,16 +55,33 @@ nlohmann::ordered_json claims_json(const MeasuredTable& t, const MeasuredTable* 
   const bool tok = has_generator(t, "fis_tok15"), mod = has_generator(t, "fis_modified");
   ojson out = ojson::array();
 
-  {  // 1: the modified kernel costs only microseconds more.
-    const std::string crit = "|median total(fis_modified) - median total(fis_tok15)| <= max(" + number(kOverheadFloorUs) +
-                             " us, " + number(100 * kOverheadFraction) + "% of the Tok15 total)";
+  {  // 1: the modified kernel costs only microseconds more. Judged on the 95 % interval of the
+     // per-round differences of the generator totals (SPEC §9), never on one noisy number: holds
+     // when the whole interval lies within the bound, fails when it lies wholly outside.
+    const std::string crit = "95% interval of the per-round difference total(fis_modified) - total(fis_tok15) "
+                             "(Hodges-Lehmann, Wilcoxon signed-rank) within +-max(" + number(kOverheadFloorUs) +
+                             " us, " + number(100 * kOverheadFraction) + "% of the median Tok15 total); outside it: "
+                             "does not hold; straddling it: inconclusive";
     if (tok && mod) {
       const double tok_ms = median_total(t, "fis_tok15");
-      const double diff_us = 1e3 * (median_total(t, "fis_modified") - tok_ms);
       const double bound_us = std::max(kOverheadFloorUs, kOverheadFraction * 1e3 * tok_ms);
+      const PairedInterval p = paired_overhead(t);
+      const OverheadVerdict v = judge_overhead(1e3 * p.low, 1e3 * p.high, bound_us, p.reaches_nominal());
+      std::string note = v.note;
+      if (!p.reaches_nominal())
+        note = std::string(kInconclusivePrefix) + ": " + std::to_string(p.count) + " rounds reach only " +
+               number(100 * p.confidence) + "% confidence (95% needs at least 6 rounds)";
       out.push_back(claim(text(0), "modified_overhead", crit,
-                          ojson{{"overhead_us", diff_us}, {"bound_us", bound_us}, {"tok15_total_ms", tok_ms}},
-                          std::abs(diff_us) <= bound_us, "", informative));
+                          ojson{{"overhead_us", 1e3 * p.hodges_lehmann},
+                                {"ci_low_us", 1e3 * p.low},
+                                {"ci_high_us", 1e3 * p.high},
+                                {"confidence", p.confidence},
+                                {"rounds", p.count},
+                                {"median_of_round_differences_us", 1e3 * p.median},
+                                {"difference_of_medians_us", 1e3 * (median_total(t, "fis_modified") - tok_ms)},
+                                {"bound_us", bound_us},
+                                {"tok15_total_ms", tok_ms}},
+                          v.holds, note, informative));
     } else {
       out.push_back(claim(text(0), "modified_overhead", crit, ojson::object(), std::nullopt,
                           "needs fis_tok15 and fis_modified in this run", informative));

@@ -1,11 +1,28 @@
 #pragma once
 // The paper's six claims (results/paper/paper_tables.json "claims"), each checked on a measured
 // table with its threshold named once below; on a CPU device the timing verdicts are informative.
+#include <optional>
+#include <string>
+
 #include <nlohmann/json.hpp>
 
 #include "harness/report/measured_table.hpp"
 
 namespace vsgl {
+
+// A claim whose interval straddles its bound is neither held nor refuted: holds = null with
+// this note (or one that starts with the prefix and says why, e.g. too few rounds).
+inline constexpr const char* kInconclusivePrefix = "inconclusive";
+inline constexpr const char* kInconclusiveNote = "inconclusive at this noise";
+
+struct OverheadVerdict {
+  std::optional<bool> holds;
+  std::string note;
+};
+// Claim 1's rule on an interval [low, high] of the overhead and the bound +-bound_us: inside ->
+// holds, wholly outside -> does not hold, straddling or short of its confidence -> inconclusive.
+// Throws std::invalid_argument for low > high or a bound that is not positive.
+OverheadVerdict judge_overhead(double low_us, double high_us, double bound_us, bool reaches_nominal);
 
 // `other` is the other paper table of the same run (claim 3 compares them), or nullptr.
 nlohmann::ordered_json claims_json(const MeasuredTable& t, const MeasuredTable* other, const ReportContext& ctx);

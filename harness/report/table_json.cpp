@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "harness/core/statistics.hpp"
+#include "harness/generators/fis/fis_traffic.hpp"
 #include "harness/generators/generator_registry.hpp"
 #include "harness/report/paper_tables.hpp"
 #include "harness/report/table_claims.hpp"
@@ -46,6 +47,47 @@ ojson generator_json(const MeasuredTable& t, const std::string& g, const ReportC
                {"total", stats_json(generator_totals(t, g), paper_total(ctx.paper, t.number, g))}};
 }
 
+// One paired difference (ms in, µs out) with the paper's difference beside it.
+ojson paired_json(const PairedInterval& p, std::optional<double> paper_ms) {
+  return ojson{{"rounds", p.count},
+               {"median_us", 1e3 * p.median},
+               {"hodges_lehmann_us", 1e3 * p.hodges_lehmann},
+               {"ci_low_us", 1e3 * p.low},
+               {"ci_high_us", 1e3 * p.high},
+               {"confidence", p.confidence},
+               {"reaches_nominal", p.reaches_nominal()},
+               {"critical_value", p.exact ? "exact" : "normal"},
+               {"paper_us", paper_ms ? ojson(1e3 * *paper_ms) : ojson(nullptr)}};
+}
+
+std::optional<double> paper_difference(std::optional<double> modified, std::optional<double> tok15) {
+  return modified && tok15 ? std::optional<double>(*modified - *tok15) : std::nullopt;
+}
+
+// SPEC §9: the overhead from per-round differences, so that drift and the noise of the shared
+// passes cancel. Views: the total and the one pass the two generators do not share.
+ojson paired_block(const MeasuredTable& t, const ReportContext& ctx) {
+  const std::string table = std::to_string(t.number);
+  ojson o{{"estimator", "Hodges-Lehmann (median of the Walsh averages of the per-round differences)"},
+          {"interval", "distribution-free, Wilcoxon signed-rank critical value (exact up to " +
+                           std::to_string(kSignedRankExactMax) + " rounds, normal approximation above)"},
+          {"nominal_confidence", kPairedConfidence}};
+  for (const char* view : kTableViews) {
+    ojson v = ojson::object();
+    v["total"] = paired_json(paired_overhead(t, view, "total"),
+                             paper_difference(paper_view_total(ctx.paper, t.number, "fis_modified", view),
+                                              paper_view_total(ctx.paper, t.number, "fis_tok15", view)));
+    v["filtered_sampling"] =
+        paired_json(paired_overhead(t, view, "filtered_sampling"),
+                    paper_difference(paper_number(ctx.paper, {"tables", table, "fis_modified", view, "filtered_sampling"}),
+                                     paper_number(ctx.paper, {"tables", table, "fis_tok15", view, "filtered_sampling"})));
+    o[view] = v;
+  }
+  o["total"] = paired_json(paired_overhead(t), paper_difference(paper_total(ctx.paper, t.number, "fis_modified"),
+                                                                paper_total(ctx.paper, t.number, "fis_tok15")));
+  return o;
+}
+
 ojson ratios_json(const MeasuredTable& t, const MeasuredTable* other, const ReportContext& ctx) {
   ojson r = ojson::object();
   const bool tok = has_generator(t, "fis_tok15"), mod = has_generator(t, "fis_modified");
@@ -60,7 +102,8 @@ ojson ratios_json(const MeasuredTable& t, const MeasuredTable* other, const Repo
     const auto pt = paper_total(ctx.paper, t.number, "fis_tok15"), pm = paper_total(ctx.paper, t.number, "fis_modified");
     o["total"] = measured_paper(1e3 * (median_total(t, "fis_modified") - median_total(t, "fis_tok15")),
                                 pt && pm ? std::optional<double>(1e3 * (*pm - *pt)) : std::nullopt);
-    r["modified_minus_tok15_us"] = o;
+    r["modified_minus_tok15_us"] = o;  // difference of the medians, kept beside the paired one
+    r["paired_modified_minus_tok15"] = paired_block(t, ctx);
   }
   if (mod) {
     ojson o = ojson::object();
@@ -86,6 +129,51 @@ ojson ratios_json(const MeasuredTable& t, const MeasuredTable* other, const Repo
     if (!o.empty()) r["table1_to_table2"] = o;
   }
   return r;
+}
+
+// SPEC §9, the physical limit: the device's copy bandwidth, and for the passes of each FIS
+// generator that only stream data the least bytes they must move (generators/fis/fis_traffic.hpp)
+// over their median time, as a fraction of it.
+ojson bandwidth_json(const MeasuredTable& t) {
+  const CopyBandwidth& c = t.copy_bandwidth;
+  ojson copy{{"method", "vkCmdCopyBuffer between two device-local buffers; timestamps between copies; median"},
+             {"requested_bytes", c.requested_bytes},
+             {"buffer_bytes", c.bytes},
+             {"reduced_because", c.reduced_because},
+             {"bytes_per_copy", 2 * c.bytes},
+             {"warmup_copies", c.warmup},
+             {"samples_ms", c.samples_ms},
+             {"median_ms", c.median_ms},
+             {"bytes_per_s", c.bytes_per_s}};
+  const auto pass = [&](const PassBytes& b, double median_ms) {
+    const double achieved = static_cast<double>(b.total()) / (median_ms * 1e-3);
+    return ojson{{"min_bytes_read", b.read},
+                 {"min_bytes_written", b.written},
+                 {"min_bytes", b.total()},
+                 {"median_ms", median_ms},
+                 {"achieved_bytes_per_s", achieved},
+                 {"fraction_of_copy", achieved / c.bytes_per_s}};
+  };
+  ojson passes = ojson::object();
+  for (const auto& g : t.generators) {
+    if (generator_descriptor(g).family != GeneratorFamily::kFis) continue;
+    ojson views = ojson::object();
+    for (const char* view : kTableViews) {
+      const ViewExtent& e = t.views.at(view);
+      const FisPassBytes bytes = fis_minimum_bytes(e.width, e.height);
+      const double mip_ms = summarize(case_samples(t, g, view, "mipmapping")).median;
+      ojson mip = pass(bytes.mipmapping, mip_ms);
+      const ojson level = pass(bytes.mipmapping_level_by_level, mip_ms);
+      mip["level_by_level_bytes"] = level["min_bytes"];
+      mip["level_by_level_fraction_of_copy"] = level["fraction_of_copy"];
+      views[view] = ojson{{"additional", pass(bytes.additional, summarize(case_samples(t, g, view, "additional")).median)},
+                          {"mipmapping", mip}};
+    }
+    passes[g] = views;
+  }
+  return ojson{{"copy", copy},
+               {"model", fis_traffic_model()},
+               {"passes", passes}};
 }
 
 ojson table3_json(const MeasuredTable& t, const ReportContext& ctx) {
@@ -137,6 +225,7 @@ nlohmann::ordered_json table_json(const MeasuredTable& t, const MeasuredTable* o
   for (const auto& g : t.generators) gens[g] = generator_json(t, g, ctx);
   doc["generators"] = gens;
   doc["ratios"] = ratios_json(t, other, ctx);
+  doc["bandwidth"] = bandwidth_json(t);
   doc["table3"] = table3_json(t, ctx);
   doc["claims"] = claims_json(t, other, ctx);
   return doc;

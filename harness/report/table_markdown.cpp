@@ -4,6 +4,8 @@
 #include <sstream>
 #include <vector>
 
+#include "harness/report/table_claims.hpp"
+
 namespace vsgl {
 namespace {
 
@@ -25,6 +27,11 @@ std::string phase_title(const std::string& phase, const std::string& view) {
   if (phase == "sum") return "Sum";
   return phase;
 }
+
+std::string signed_fixed(double v, int digits) { return (v > 0 ? "+" : "") + fixed(v, digits); }
+
+// Bytes and bytes/s in decimal units (GB = 1e9), as bandwidths are quoted.
+std::string gigabytes(double bytes, int digits = 2) { return fixed(bytes * 1e-9, digits); }
 
 void row(std::ostringstream& os, const std::vector<std::string>& cells) {
   os << "|";
@@ -101,6 +108,54 @@ std::string table_markdown(const ojson& t) {
         row(os, {k + " total, Table 2 / Table 1", fixed(v.at("measured").get<double>(), 3), paper_cell(v.at("paper"), 3)});
   }
 
+  if (r.contains("paired_modified_minus_tok15")) {
+    const ojson& p = r["paired_modified_minus_tok15"];
+    os << "\n### Overhead of the modified FIS, paired by round (µs)\n\n"
+       << "Per-round differences fis_modified − fis_tok15 (same round, so drift and the shared passes' noise "
+          "cancel): median, Hodges–Lehmann estimate and its "
+       << fixed(100 * p.at("nominal_confidence").get<double>(), 0)
+       << " % distribution-free interval (Wilcoxon signed-rank).\n\n";
+    row(os, {"difference", "median", "Hodges–Lehmann", "interval", "confidence", "rounds", "paper"});
+    row(os, {"---", "---:", "---:", "---:", "---:", "---:", "---:"});
+    const auto line = [&](const std::string& name, const ojson& d) {
+      const double conf = d.at("confidence").get<double>();
+      row(os, {name, signed_fixed(d.at("median_us").get<double>(), 1), signed_fixed(d.at("hodges_lehmann_us").get<double>(), 1),
+               "[" + signed_fixed(d.at("ci_low_us").get<double>(), 1) + ", " + signed_fixed(d.at("ci_high_us").get<double>(), 1) + "]",
+               fixed(100 * conf, 1) + " %" + (d.at("reaches_nominal").get<bool>() ? "" : " (short)"),
+               std::to_string(d.at("rounds").get<int>()), paper_cell(d.at("paper_us"), 1)});
+    };
+    for (const char* view : {"camera_view", "light_view"}) {
+      line(std::string(view) + " total", p.at(view).at("total"));
+      line(std::string(view) + " filtered sampling", p.at(view).at("filtered_sampling"));
+    }
+    line("generator total", p.at("total"));
+  }
+
+  const ojson& bw = t.at("bandwidth");
+  const ojson& copy = bw.at("copy");
+  os << "\n### Physical limit: copy bandwidth and the streaming passes\n\n"
+     << "Copy bandwidth (vkCmdCopyBuffer, read + written): **" << gigabytes(copy.at("bytes_per_s").get<double>())
+     << " GB/s** (buffers of " << fixed(copy.at("buffer_bytes").get<double>() / (1 << 20), 0) << " MiB, median of "
+     << copy.at("samples_ms").size() << " copies";
+  if (!copy.at("reduced_because").get<std::string>().empty())
+    os << "; smaller than the " << fixed(copy.at("requested_bytes").get<double>() / (1 << 20), 0)
+       << " MiB asked: " << copy.at("reduced_because").get<std::string>();
+  os << "). Each pass's least traffic (" << bw.at("model").get<std::string>() << ") over its median time:\n\n";
+  if (!bw.at("passes").empty()) {
+    row(os, {"generator", "view", "pass", "least traffic (MB)", "median (ms)", "achieved (GB/s)", "of copy bandwidth"});
+    row(os, {"---", "---", "---", "---:", "---:", "---:", "---:"});
+    for (const auto& [g, pass_views] : bw.at("passes").items())
+      for (const auto& [view, passes] : pass_views.items())
+        for (const auto& [pass, v] : passes.items()) {
+          std::string fraction = fixed(100 * v.at("fraction_of_copy").get<double>(), 1) + " %";
+          if (v.contains("level_by_level_fraction_of_copy"))
+            fraction += " (level by level: " + fixed(100 * v.at("level_by_level_fraction_of_copy").get<double>(), 1) + " %)";
+          row(os, {gens.at(g).at("label").get<std::string>(), view, pass,
+                   fixed(v.at("min_bytes").get<double>() * 1e-6, 1), fixed(v.at("median_ms").get<double>()),
+                   gigabytes(v.at("achieved_bytes_per_s").get<double>()), fraction});
+        }
+  }
+
   os << "\n### Table 3 analog (counted, not typed in)\n\n";
   row(os, {"generator", "compute shaders", "paper", "dispatch calls (camera / light)", "paper", "lines of code", "paper"});
   row(os, {"---", "---:", "---:", "---:", "---:", "---:", "---:"});
@@ -116,8 +171,11 @@ std::string table_markdown(const ojson& t) {
   os << "\n### The paper's claims on this run\n\n";
   for (const auto& c : t.at("claims")) {
     const ojson& h = c.at("holds");
-    const std::string verdict = h.is_null() ? "not measured" : (h.get<bool>() ? "holds" : "does not hold");
-    os << "- **" << verdict << "**" << (c.at("informative_only").get<bool>() && !h.is_null() ? " (informative: CPU device)" : "")
+    const std::string note = c.at("note").get<std::string>();
+    const std::string verdict = !h.is_null()                          ? (h.get<bool>() ? "holds" : "does not hold")
+                                : note.rfind(kInconclusivePrefix, 0) == 0 ? "inconclusive"
+                                                                          : "not measured";
+    os << "- **" << verdict << "**" << (c.at("informative_only").get<bool>() && !c.at("measured").empty() ? " (informative: CPU device)" : "")
        << " — " << c.at("claim").get<std::string>() << "\n  - criterion: " << c.at("criterion").get<std::string>();
     if (!c.at("measured").empty()) os << "\n  - measured: `" << c.at("measured").dump() << "`";
     if (!c.at("note").get<std::string>().empty()) os << "\n  - " << c.at("note").get<std::string>();

@@ -1,5 +1,6 @@
 #include "harness/report/table_measurement.hpp"
 
+#include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <vector>
@@ -8,6 +9,7 @@
 #include "harness/generators/generator_registry.hpp"
 #include "harness/report/run_context.hpp"
 #include "harness/scene/capture_provisioning.hpp"
+#include "harness/timing/copy_bandwidth.hpp"
 #include "harness/timing/timing_runner.hpp"
 #include "harness/vk/device.hpp"
 
@@ -36,6 +38,20 @@ TableMeasurement measure_table(Device& device, const TablesOptions& o, int numbe
                     {"tool_version", capture.meta.tool_version},
                     {"brsm_build_ms", capture.meta.brsm_build_ms}};
   out.config = config_json(o, capture);
+  t.views["camera_view"] = ViewExtent{capture.gbuffer.width, capture.gbuffer.height};
+  t.views["light_view"] = ViewExtent{capture.rsm.width, capture.rsm.height};
+
+  // The copy bandwidth first, while no view or pyramid holds device memory (its buffers are
+  // freed before the uploads), so a small device falls back as little as possible.
+  const auto mib = [](uint64_t bytes) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.4g MiB", static_cast<double>(bytes) / (1 << 20));
+    return std::string(buf);
+  };
+  say("measuring copy bandwidth (two device-local buffers of " + mib(o.copy_bandwidth.bytes) + ")");
+  t.copy_bandwidth = measure_copy_bandwidth(device, o.copy_bandwidth);
+  if (!t.copy_bandwidth.reduced_because.empty())
+    say("copy bandwidth measured with buffers of " + mib(t.copy_bandwidth.bytes) + ": " + t.copy_bandwidth.reduced_because);
 
   // Inputs uploaded, generators built and recorded before any timing (SPEC §9).
   const DeviceView camera = upload_view(device, capture, ViewKind::kCamera);

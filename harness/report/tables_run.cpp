@@ -37,6 +37,7 @@ void check_options(const TablesOptions& o) {
   if (!o.debug_slow.empty() && !o.wrap_generator) throw std::logic_error("debug_slow names generators but no wrapper slows them");
   if (o.camera_vsgls == 0 || o.light_vsgls == 0) throw InputError("N = 0: at least one VSGL is needed");
   o.timing.check();
+  o.copy_bandwidth.check();
 }
 
 }  // namespace

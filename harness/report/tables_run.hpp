@@ -12,6 +12,7 @@
 
 #include "harness/scene/capture_recorder.hpp"
 #include "harness/generators/generator_registry.hpp"
+#include "harness/timing/copy_bandwidth.hpp"
 #include "harness/timing/timing_runner.hpp"
 
 namespace vsgl {
@@ -27,6 +28,7 @@ struct TablesOptions {
   uint32_t light_vsgls = 1024;   // N on the RSM (the paper's)
   GeneratorConfig generator;     // K, iterations (vsgl_count is set per view)
   TimingOptions timing;
+  CopyBandwidthOptions copy_bandwidth;  // the physical limit beside the passes (SPEC §9), per table
   RecordSizes record_sizes;      // for captures recorded because they were missing
   std::filesystem::path source_dir = VSGL_SOURCE_DIR;  // lines of code, git commit
   std::filesystem::path paper_tables = std::filesystem::path(VSGL_SOURCE_DIR) / "results/paper/paper_tables.json";

@@ -14,6 +14,9 @@
 //     noise IQR/median <= `noise_target`, or when the timed rounds have run `time_cap_s`
 //     seconds of wall time, or after `max_repetitions` rounds — whichever comes first. The
 //     reason is reported. The cap never cuts the minimum: `min_repetitions` rounds always run.
+//  Pairing guarantee: every round appends exactly one sample to every case (a failure ends the
+//  run), so sample i of any two cases — of any phase or total — comes from round i. Paired
+//  statistics (the modified − Tok15 difference per round, SPEC §9) rely on this.
 // Defaults: warm-up 2, min 10, noise 0.02, cap 60 s on GPUs; 20 s on CPU devices (lavapipe), whose
 // timings inform only correctness, not performance; max 1000 rounds (bounds the raw samples kept).
 // Optional cold mode: before every timed replay a separate submission overwrites a large buffer
@@ -63,8 +66,8 @@ struct CaseTiming {
   std::string generator;
   std::string view;
   std::vector<std::string> phases;
-  std::vector<std::vector<double>> phase_ms;  // [phase][repetition]
-  std::vector<double> total_ms;               // first to last timestamp, per repetition
+  std::vector<std::vector<double>> phase_ms;  // [phase][round]: index i is round i in every case
+  std::vector<double> total_ms;               // first to last timestamp, [round]
   uint32_t dispatch_count = 0;                // vkCmdDispatch calls recorded (CommandStream)
 };
 
