@@ -44,13 +44,31 @@ TEST(QualityCli, TinyCaptureWritesJsonMarkdownAndPictures) {
   std::ifstream in(dir / "quality.json");
   const auto j = nlohmann::json::parse(in);
   EXPECT_EQ(j["schema"], "vsgl-quality");
-  EXPECT_EQ(j["schema_version"], 1);
+  EXPECT_EQ(j["schema_version"], 2);
   EXPECT_TRUE(j["capture"]["hashes"]["rsm"].contains("pdf")) << j["capture"]["hashes"].dump();
   EXPECT_EQ(j["flicker_static"]["generators"]["fis_modified"]["frames"], 3);
   EXPECT_EQ(j["flicker_animated"]["frames"], 3);
   EXPECT_EQ(j["k_sweep"]["fis_tok15"].size(), 2u);
   ASSERT_GE(j["claims"].size(), 6u);
   for (const auto& c : j["claims"]) EXPECT_TRUE(c.contains("verdict")) << c.dump();
+  // Issue 15: the PDF's frequency content per view; per FIS generator the coverage beside its
+  // lattice floor, the excess the difference of the two; the Fig. 1 verdict names its margin.
+  for (const char* view : {"light_view", "camera_view"}) {
+    const auto& v = j["views"][view];
+    EXPECT_GE(v["pdf_frequency"]["mean_square"].get<double>(), 1.0) << view;
+    for (const char* g : {"fis_tok15", "fis_modified"}) {
+      const auto& c = v["generators"][g]["coverage"];
+      for (const char* fp : {"box", "eq3"}) {
+        const double e = c[fp]["count_error"], f = c["lattice_floor"][fp]["count_error"];
+        EXPECT_NEAR(c["excess"][fp]["count_error"].get<double>(), e - f, 1e-12) << view << " " << g << " " << fp;
+        EXPECT_GT(f, 0.0) << view << " " << g << " " << fp;
+      }
+    }
+  }
+  bool fig1_on_excess = false;
+  for (const auto& c : j["claims"])
+    if (c.contains("margin") && c["footprint"] == "eq3") fig1_on_excess = true;
+  EXPECT_TRUE(fig1_on_excess) << j["claims"].dump();
   const double power = j["views"]["light_view"]["generators"]["fis_modified"]["power"]["power_ratio"];
   EXPECT_GT(power, 0.5);
   EXPECT_LT(power, 1.5);

@@ -162,6 +162,154 @@ TEST(QualityCoverage, CheckerboardPdfTok15FarFromTargetModifiedOnIt) {
   EXPECT_LT(m.gap + m.overlap, t.gap + t.overlap);
 }
 
+// ---- issue 15: the Eq. 3 footprint, the lattice floor, the PDF's frequency content -----------
+
+// A flat light view (RSM) W x H: valid inside `valid`, PDF q(x, y) (0 where invalid), uniform flux.
+ViewImage synthetic_rsm(uint32_t w, uint32_t h, const std::function<bool(uint32_t, uint32_t)>& valid,
+                        const std::function<float(uint32_t, uint32_t)>& q) {
+  ViewImage v;
+  v.resize(ViewKind::kLight, w, h);
+  for (uint32_t y = 0; y < h; ++y)
+    for (uint32_t x = 0; x < w; ++x) {
+      if (!valid(x, y)) continue;
+      v.at(kValid, x, y) = 1.0f;
+      v.at(kPX, x, y) = static_cast<float>(x);
+      v.at(kPZ, x, y) = static_cast<float>(y);
+      v.at(kNY, x, y) = 1.0f;
+      v.at(kDR, x, y) = v.at(kDG, x, y) = v.at(kDB, x, y) = 1.0f;
+      v.at(kRoughness, x, y) = 0.5f;
+      v.at(kPdf, x, y) = q(x, y);
+    }
+  return v;
+}
+
+std::array<MipPyramid, 3> pyramids_of(const ViewImage& v) {
+  const auto m = reference_moments(v, glm::vec3(0.0f, 10.0f, 0.0f));
+  return {MipPyramid::build(m[0], v.width, v.height), MipPyramid::build(m[1], v.width, v.height),
+          MipPyramid::build(m[2], v.width, v.height)};
+}
+
+// The generator's coverage on a view and on the view's uniform copy (the lattice floor).
+struct FloorRun {
+  FootprintCoverage generator, floor;
+  CoverageExcess excess;
+};
+FloorRun with_floor(const ViewImage& view, FisVariant variant, uint32_t n) {
+  FisParams params;
+  params.vsgl_count = n;
+  const auto real = pyramids_of(view);
+  const auto flat = pyramids_of(uniform_pdf_view(view));
+  FloorRun r;
+  r.generator = footprint_coverage(reference_fis(real, variant, params), real[2], params.K);
+  r.floor = footprint_coverage(reference_fis(flat, variant, params), flat[2], params.K);
+  r.excess = coverage_excess(r.generator, r.floor);
+  return r;
+}
+
+TEST(QualityFootprint, Eq3FootprintCarriesTheKernelMassOfTheLookup) {
+  // 48 x 40 (a padded square of 64), a PDF with structure at every scale.
+  constexpr uint32_t kW = 48, kH = 40;
+  const auto v = synthetic_view(64, [](uint32_t x, uint32_t y) {
+    return x < kW && y < kH ? 1.0f + static_cast<float>((x * 7 + y * 13) % 5) + 0.1f * static_cast<float>(x) : 0.0f;
+  });
+  const MipPyramid pdf = MipPyramid::build(
+      layer(kW, kH, [&](uint32_t x, uint32_t y) { return glm::vec4(0.0f, 0.0f, 0.0f, v[2].at(0, x, y).w); }), kW, kH);
+  const double M = pdf.square.square_texels();
+  for (const VsglRecord& k : {kernel_at(0.31f, 0.27f, 0.0f), kernel_at(0.5f, 0.4f, 1.7f), kernel_at(0.05f, 0.6f, 2.25f),
+                              kernel_at(0.7f, 0.1f, 3.5f), kernel_at(0.2f, 0.3f, 5.6f), kernel_at(0.9f, 0.9f, 6.0f)}) {
+    const std::vector<double> n = eq3_footprint_counts({k}, pdf.square);
+    double mass = 0;
+    for (uint32_t y = 0; y < kH; ++y)
+      for (uint32_t x = 0; x < kW; ++x) mass += n[y * kW + x] * static_cast<double>(pdf.at(0, x, y).w);
+    mass /= M * static_cast<double>(pdf.top().w);
+    const double expected = modified_kernel_mass(pdf, k.center(), k.level());
+    EXPECT_NEAR(mass, expected, 1e-5 * expected) << "level " << k.level();
+  }
+  // A level-2 kernel centred on a level-2 texel is that texel's 4 x 4 box, weight 1: the box footprint.
+  const VsglRecord box = kernel_at(10.0f / 64.0f, 22.0f / 64.0f, 2.0f);
+  const std::vector<double> n = eq3_footprint_counts({box}, pdf.square);
+  const std::vector<uint32_t> b = footprint_counts({box}, pdf.square);
+  for (std::size_t i = 0; i < n.size(); ++i) ASSERT_EQ(n[i], static_cast<double>(b[i])) << "texel " << i;
+  EXPECT_EQ(std::count(b.begin(), b.end(), 1u), 16);
+}
+
+TEST(QualityFootprint, CountWeightedErrorOfKnownCounts) {
+  // 4 x 1 texels, q = 1, 2, 3, 4; counts 0, 1, 2, 3: gap 1, surplus 3 * 1 + 4 * 2 = 11, mean 20 (all / 10).
+  const MipPyramid pdf = MipPyramid::build(
+      layer(4, 1, [](uint32_t x, uint32_t) { return glm::vec4(0.0f, 0.0f, 0.0f, static_cast<float>(x + 1)); }), 4, 1);
+  const CoverageCounts c = coverage_counts({0.0, 1.0, 2.0, 3.0}, pdf);
+  EXPECT_DOUBLE_EQ(c.gap, 0.1);
+  EXPECT_DOUBLE_EQ(c.surplus, 1.1);
+  EXPECT_DOUBLE_EQ(c.count_error, 1.2);
+  EXPECT_DOUBLE_EQ(c.mean_count, 2.0);
+}
+
+// SPEC §11a: a uniform PDF is its own lattice floor, for both generators: excess exactly 0. The
+// support is a disc inside a larger valid region (valid texels with q = 0 are not part of it).
+TEST(QualityLatticeFloor, UniformPdfGivesExactlyTheFloor) {
+  const auto in_disc = [](uint32_t x, uint32_t y) {
+    const float dx = static_cast<float>(x) - 40.0f, dy = static_cast<float>(y) - 30.0f;
+    return dx * dx + dy * dy < 26.0f * 26.0f;
+  };
+  const ViewImage view = synthetic_rsm(
+      96, 64, [](uint32_t x, uint32_t) { return x < 90; }, [&](uint32_t x, uint32_t y) { return in_disc(x, y) ? 1.0f : 0.0f; });
+  EXPECT_EQ(uniform_pdf_view(view).planes[kPdf], view.planes[kPdf]);
+  for (FisVariant variant : {FisVariant::kTok15, FisVariant::kModified}) {
+    const FloorRun r = with_floor(view, variant, 256);
+    EXPECT_EQ(r.excess.eq3.count_error, 0.0);
+    EXPECT_EQ(r.excess.box.count_error, 0.0);
+    EXPECT_EQ(r.excess.box_gap, 0.0);
+    EXPECT_EQ(r.excess.box_overlap, 0.0);
+    // The floor itself is not zero: the lattice's irregularity.
+    EXPECT_GT(r.floor.box.count_error, 0.05);
+    EXPECT_GT(r.floor.eq3.count_error, 0.01);
+  }
+  // The floor replaces every positive q by 1, whatever the scale: a uniform PDF of 2.5 has the same floor.
+  const ViewImage scaled = synthetic_rsm(
+      96, 64, [](uint32_t x, uint32_t) { return x < 90; }, [&](uint32_t x, uint32_t y) { return in_disc(x, y) ? 2.5f : 0.0f; });
+  EXPECT_EQ(uniform_pdf_view(scaled).planes[kPdf], view.planes[kPdf]);
+}
+
+// The paper's claim on a PDF it means: a texel-frequency checkerboard. Tok15 sizes a kernel by the
+// density at its centre (1 or eps) while the PDF it covers averages (1 + eps) / 2, so its kernels
+// overlap and leave gaps beyond the lattice's own; Eq. 3 sizes them by the mass they cover.
+TEST(QualityLatticeFloor, HighFrequencyPdfOrdersTheGenerators) {
+  const ViewImage view = synthetic_rsm(
+      128, 128, [](uint32_t, uint32_t) { return true; },
+      [](uint32_t x, uint32_t y) { return (x + y) % 2 == 0 ? 1.0f : 0.02f; });
+  const FloorRun t = with_floor(view, FisVariant::kTok15, 1024);
+  const FloorRun m = with_floor(view, FisVariant::kModified, 1024);
+  EXPECT_GT(t.excess.eq3.count_error, m.excess.eq3.count_error);
+  EXPECT_GT(t.excess.box.count_error, m.excess.box.count_error);
+  // Eq. 3 makes the PDF-weighted mean of n equal to K = 1 (up to border kernels and the bisection).
+  EXPECT_NEAR(m.generator.eq3.mean_count, 1.0, 0.02);
+}
+
+TEST(QualityFrequency, UniformIsZeroCheckerAboveGradient) {
+  constexpr uint32_t kW = 96, kH = 80;  // padded to 128: the padding's edge is part of the PDF
+  const auto pyramid = [](const std::function<float(uint32_t, uint32_t)>& q) {
+    return MipPyramid::build(
+        layer(kW, kH, [&](uint32_t x, uint32_t y) { return glm::vec4(0.0f, 0.0f, 0.0f, q(x, y)); }), kW, kH);
+  };
+  const PdfFrequency square = pdf_frequency(MipPyramid::build(
+      layer(64, 64, [](uint32_t, uint32_t) { return glm::vec4(0.0f, 0.0f, 0.0f, 3.0f); }), 64, 64));
+  for (double e : square.detail_energy) EXPECT_EQ(e, 0.0);
+  EXPECT_EQ(square.fine_share.back(), 0.0);
+
+  const PdfFrequency checker = pdf_frequency(pyramid([](uint32_t x, uint32_t y) { return (x + y) % 2 ? 1.0f : 0.0f; }));
+  const PdfFrequency gradient =
+      pdf_frequency(pyramid([](uint32_t x, uint32_t y) { return 1.0f + static_cast<float>(x + y) / 50.0f; }));
+  for (const PdfFrequency* f : {&checker, &gradient}) {
+    // The Haar details are orthogonal: mean(p^2) = 1 + sum E_l.
+    EXPECT_NEAR(f->mean_square, 1.0 + f->relative_variance, 1e-5 * f->mean_square);
+    EXPECT_EQ(f->detail_energy.size(), 7u);
+  }
+  for (std::size_t k = 0; k < 3; ++k) EXPECT_GT(checker.fine_share[k], 10.0 * gradient.fine_share[k]) << "k " << k;
+  EXPECT_GT(checker.fine_share[0], 0.3);  // mostly texel-scale energy
+  EXPECT_LT(gradient.fine_share[2], 0.01);
+  EXPECT_THROW(pdf_frequency(pyramid([](uint32_t, uint32_t) { return 0.0f; })), InputError);
+}
+
 TEST(QualityFlicker, IdenticalFramesGiveExactlyZero) {
   RadianceImage img{3, 1, {glm::vec4(0.3f, 0.2f, 0.1f, 1.0f), glm::vec4(1.0f, 2.0f, 3.0f, 1.0f), glm::vec4(0.0f)}};
   FlickerAccumulator acc;

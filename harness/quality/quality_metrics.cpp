@@ -100,6 +100,162 @@ KernelCoverage kernel_coverage(const std::vector<VsglRecord>& kernels, const Mip
   return c;
 }
 
+std::vector<double> eq3_footprint_counts(const std::vector<VsglRecord>& kernels, const VirtualSquare& square) {
+  const int64_t w = square.width, h = square.height;
+  // The same difference-array trick as footprint_counts, with real weights: each kernel adds up to
+  // 8 rectangles (4 bilinear taps on 2 levels), each a level-l texel's block of level-0 texels.
+  std::vector<double> diff(static_cast<std::size_t>((w + 1) * (h + 1)), 0.0);
+  const auto at = [&](int64_t x, int64_t y) -> double& { return diff[static_cast<std::size_t>(y * (w + 1) + x)]; };
+  const auto add_tap = [&](uint32_t level, int64_t tx, int64_t ty, double weight) {
+    if (weight == 0.0 || tx < 0 || ty < 0 || tx >= square.level_width(level) || ty >= square.level_height(level)) return;
+    const int64_t side = int64_t{1} << level;
+    const int64_t x0 = tx * side, y0 = ty * side;
+    const int64_t x1 = std::min(x0 + side, w), y1 = std::min(y0 + side, h);
+    at(x0, y0) += weight;
+    at(x1, y0) -= weight;
+    at(x0, y1) -= weight;
+    at(x1, y1) += weight;
+  };
+  // Bilinear taps at `level` exactly as bilinear() places them; each tap's level-0 children get
+  // weight * (its bilinear weight) / 4^level.
+  const auto add_bilinear = [&](glm::vec2 x, uint32_t level, double weight) {
+    const double sk = static_cast<double>(square.size >> level);
+    const double ux = static_cast<double>(x.x) * sk - 0.5, uy = static_cast<double>(x.y) * sk - 0.5;
+    const double ix = std::floor(ux), iy = std::floor(uy);
+    const double fx = ux - ix, fy = uy - iy;
+    const double per_child = weight / std::exp2(2.0 * level);
+    const auto tx = static_cast<int64_t>(ix), ty = static_cast<int64_t>(iy);
+    add_tap(level, tx, ty, per_child * (1.0 - fx) * (1.0 - fy));
+    add_tap(level, tx + 1, ty, per_child * fx * (1.0 - fy));
+    add_tap(level, tx, ty + 1, per_child * (1.0 - fx) * fy);
+    add_tap(level, tx + 1, ty + 1, per_child * fx * fy);
+  };
+  const double top = static_cast<double>(square.levels);
+  for (const VsglRecord& k : kernels) {
+    const double raw = static_cast<double>(k.level());
+    if (!(raw >= 0.0)) throw InputError("kernel coverage: a VSGL has no FIS level (k-means records carry -1)");
+    const double l = std::min(raw, top);
+    const double l0 = std::floor(l);
+    const auto k0 = static_cast<uint32_t>(l0);
+    const uint32_t k1 = std::min(k0 + 1, square.levels);
+    const double t = l - l0;
+    const double area = std::exp2(2.0 * l);  // a(l) M: the kernel's share of the square in texels
+    add_bilinear(k.center(), k0, area * (1.0 - t));
+    add_bilinear(k.center(), k1, area * t);
+  }
+  std::vector<double> counts(static_cast<std::size_t>(w * h));
+  std::vector<double> column(static_cast<std::size_t>(w + 1), 0.0);
+  for (int64_t y = 0; y < h; ++y) {
+    double run = 0;
+    for (int64_t x = 0; x < w; ++x) {
+      column[static_cast<std::size_t>(x)] += at(x, y);
+      run += column[static_cast<std::size_t>(x)];
+      counts[static_cast<std::size_t>(y * w + x)] = run;
+    }
+  }
+  // Prefix sums of +/- weights leave rounding residue (~1e-13) on texels no kernel reaches; those
+  // are exact zeros in the definition, and a gap must read as a full gap.
+  for (double& n : counts)
+    if (std::abs(n) < 1e-9) n = 0.0;
+  return counts;
+}
+
+CoverageCounts coverage_counts(const std::vector<double>& n, const MipPyramid& pdf_pyramid) {
+  const VirtualSquare& sq = pdf_pyramid.square;
+  if (n.size() != std::size_t{sq.width} * sq.height)
+    throw std::invalid_argument("coverage_counts: one count per in-bounds texel expected");
+  double total = 0, gap = 0, surplus = 0, mean = 0;
+  for (uint32_t y = 0; y < sq.height; ++y)
+    for (uint32_t x = 0; x < sq.width; ++x) {
+      const double q = static_cast<double>(pdf_pyramid.at(0, static_cast<int32_t>(x), static_cast<int32_t>(y)).w);
+      if (!(q > 0.0)) continue;
+      const double c = n[std::size_t{y} * sq.width + x];
+      total += q;
+      gap += q * std::max(1.0 - c, 0.0);
+      surplus += q * std::max(c - 1.0, 0.0);
+      mean += q * c;
+    }
+  if (!(total > 0.0)) throw InputError("kernel coverage: the PDF is zero everywhere");
+  CoverageCounts out;
+  out.gap = gap / total;
+  out.surplus = surplus / total;
+  out.count_error = (gap + surplus) / total;
+  out.mean_count = mean / total;
+  return out;
+}
+
+FootprintCoverage footprint_coverage(const std::vector<VsglRecord>& kernels, const MipPyramid& pdf_pyramid, float K) {
+  FootprintCoverage f;
+  f.coverage = kernel_coverage(kernels, pdf_pyramid, K);
+  const std::vector<uint32_t> box = footprint_counts(kernels, pdf_pyramid.square);
+  f.box = coverage_counts(std::vector<double>(box.begin(), box.end()), pdf_pyramid);
+  f.eq3 = coverage_counts(eq3_footprint_counts(kernels, pdf_pyramid.square), pdf_pyramid);
+  return f;
+}
+
+ViewImage uniform_pdf_view(const ViewImage& view) {
+  ViewImage out = view;
+  std::vector<float>& pdf = out.planes[kPdf];
+  if (pdf.size() != view.texels() || view.planes[kValid].size() != view.texels())
+    throw InputError(std::string(view_label(view.kind)) + ": the view has no PDF to replace");
+  // The generators weigh a texel by q only where it is valid (texel_moments): the same support.
+  for (std::size_t i = 0; i < pdf.size(); ++i) pdf[i] = view.planes[kValid][i] != 0.0f && pdf[i] > 0.0f ? 1.0f : 0.0f;
+  return out;
+}
+
+namespace {
+CoverageCounts minus(const CoverageCounts& a, const CoverageCounts& b) {
+  return CoverageCounts{a.gap - b.gap, a.surplus - b.surplus, a.count_error - b.count_error, a.mean_count - b.mean_count};
+}
+}  // namespace
+
+CoverageExcess coverage_excess(const FootprintCoverage& generator, const FootprintCoverage& floor) {
+  CoverageExcess e;
+  e.box = minus(generator.box, floor.box);
+  e.eq3 = minus(generator.eq3, floor.eq3);
+  e.box_gap = generator.coverage.gap - floor.coverage.gap;
+  e.box_overlap = generator.coverage.overlap - floor.coverage.overlap;
+  return e;
+}
+
+PdfFrequency pdf_frequency(const MipPyramid& pdf) {
+  const VirtualSquare& sq = pdf.square;
+  const double mean = static_cast<double>(pdf.top().w);  // q_bar_L
+  if (!(mean > 0.0) || !std::isfinite(mean)) throw InputError("PDF frequency: the PDF is zero everywhere");
+  const double M = static_cast<double>(sq.square_texels());
+  PdfFrequency f;
+  double square_sum = 0;
+  for (uint32_t y = 0; y < sq.height; ++y)
+    for (uint32_t x = 0; x < sq.width; ++x) {
+      const double p = static_cast<double>(pdf.at(0, static_cast<int32_t>(x), static_cast<int32_t>(y)).w) / mean;
+      square_sum += p * p;
+    }
+  f.mean_square = square_sum / M;
+  // Level l's detail, parent by parent: a level-(l+1) texel's 4 children (those outside level l's
+  // extent read zero, as the pyramid defines them) each stand for 4^l level-0 texels.
+  for (uint32_t l = 0; l < sq.levels; ++l) {
+    double e = 0;
+    const double children_texels = std::exp2(2.0 * l);
+    for (uint32_t py = 0; py < sq.level_height(l + 1); ++py)
+      for (uint32_t px = 0; px < sq.level_width(l + 1); ++px) {
+        const double parent = static_cast<double>(pdf.at(l + 1, static_cast<int32_t>(px), static_cast<int32_t>(py)).w);
+        for (uint32_t c = 0; c < 4; ++c) {
+          const double child =
+              static_cast<double>(pdf.at(l, static_cast<int32_t>(2 * px + (c & 1)), static_cast<int32_t>(2 * py + (c >> 1))).w);
+          e += children_texels * (child - parent) * (child - parent);
+        }
+      }
+    f.detail_energy.push_back(e / (M * mean * mean));
+  }
+  double cumulative = 0;
+  for (double e : f.detail_energy) {
+    cumulative += e;
+    f.relative_variance = cumulative;
+    f.fine_share.push_back(cumulative / f.mean_square);
+  }
+  return f;
+}
+
 float scalar_power(const VsglRecord& v) { return v.power().r + v.power().g + v.power().b; }
 
 double total_flux(const std::vector<glm::vec4>& m0) {

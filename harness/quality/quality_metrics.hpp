@@ -8,6 +8,7 @@
 
 #include <glm/glm.hpp>
 
+#include "harness/capture/capture.hpp"
 #include "harness/reference/fis_reference.hpp"
 #include "harness/quality/radiance_image.hpp"
 #include "harness/math/vsgl_math.hpp"
@@ -39,8 +40,67 @@ struct KernelCoverage {
 };
 // Per in-bounds texel, how many footprints cover it (row-major W x H of the square's image).
 std::vector<uint32_t> footprint_counts(const std::vector<VsglRecord>& kernels, const VirtualSquare& square);
+
+// The footprint Eq. 3 controls: kernel i weighs level-0 texel t by k_i(t) = 4^l_i w_i(t), w_i the
+// weights the trilinear lookup p_bar(x_i, l_i) gives t (bilinear taps at floor(l) and ceil(l),
+// blended linearly, each level-l tap spread evenly over its 4^l children; taps outside a level's
+// extent read zero, as in fetch()). Then sum_t k_i(t) p(t) / M is the kernel's mass a(l) p_bar
+// (Eq. 3's left side); a level-l kernel centred on a level-l texel is exactly that texel's box.
+// Its coverage n(t) = sum_i k_i(t) is also how many times texel t's flux enters the VSGLs' total
+// power, for both estimators with K = 1 (Eq. 4 with N p >= K: M / (N p) = 4^l; Eq. 5:
+// M / (N p_bar) = 4^l / K at the solved level), up to the level clamps at 0 and L.
+std::vector<double> eq3_footprint_counts(const std::vector<VsglRecord>& kernels, const VirtualSquare& square);
+
+// One footprint model's coverage, PDF-weighted over the texels with q > 0 (all over sum q):
+//   gap = sum q max(1 - n, 0), surplus = sum q max(n - 1, 0),
+//   count_error = sum q |n - 1| = gap + surplus (SPEC §11a's count-weighted coverage error),
+//   mean_count = sum q n. For the box footprint n is an integer, so its gap is the share with n = 0.
+struct CoverageCounts {
+  double gap = 0, surplus = 0, count_error = 0, mean_count = 0;
+};
+CoverageCounts coverage_counts(const std::vector<double>& n, const MipPyramid& pdf_pyramid);
+
 // Throws InputError when a record has no FIS level (k-means records carry -1) or the PDF is zero.
 KernelCoverage kernel_coverage(const std::vector<VsglRecord>& kernels, const MipPyramid& pdf_pyramid, float K);
+
+// Both footprint models of one kernel set: box (side 2^l, the squares Fig. 1 draws; `coverage`
+// holds its binary gap and overlap and the kernels' mass) and Eq. 3's trilinear weights.
+struct FootprintCoverage {
+  KernelCoverage coverage;
+  CoverageCounts box;
+  CoverageCounts eq3;
+};
+FootprintCoverage footprint_coverage(const std::vector<VsglRecord>& kernels, const MipPyramid& pdf_pyramid, float K);
+
+// ---- the lattice's own floor (SPEC §11a) ----------------------------------------------------
+// The view with its PDF replaced by 1 on every texel the coverage weighs (valid and q > 0) and 0
+// elsewhere: the same generator and N on it show the Fibonacci lattice's own irregularity and the
+// support's shape, which no kernel-size choice can remove. A view whose PDF is already 0/1 on
+// those texels is returned bit for bit, so its excess over the floor is exactly 0.
+ViewImage uniform_pdf_view(const ViewImage& view);
+// Generator minus floor, measure by measure.
+struct CoverageExcess {
+  CoverageCounts box, eq3;
+  double box_gap = 0, box_overlap = 0;  // the binary gap and overlap of KernelCoverage
+};
+CoverageExcess coverage_excess(const FootprintCoverage& generator, const FootprintCoverage& floor);
+
+// ---- how high-frequency a PDF is (SPEC §11a) ------------------------------------------------
+// The Haar wavelet spectrum of the PDF over the virtual square, on the mip levels FIS filters:
+// with p = q / q_bar_L (mean 1 over the square) and p_bar_l its level-l box mean, the detail
+// energy of level l is E_l = (1/M) sum_t (p_bar_l(t) - p_bar_{l+1}(t))^2 over level-0 texels t.
+// The details are orthogonal, so mean(p^2) = 1 + sum_l E_l exactly; level l's detail holds
+// wavelengths of about 2^(l+1) texels (frequencies near 1 / 2^(l+1) cycles per texel).
+struct PdfFrequency {
+  std::vector<double> detail_energy;  // E_0 .. E_{L-1}
+  double mean_square = 0;             // mean of p^2 over the square (1 + sum E_l)
+  double relative_variance = 0;       // sum E_l = var(p) (p has mean 1)
+  // Share of the energy mean(p^2) at wavelengths below 2^(k+1) texels: (E_0 + ... + E_k) / mean(p^2),
+  // k = 0 .. L-1; 0 for a uniform PDF, near 1/2 for a texel checkerboard of 1 and 0.
+  std::vector<double> fine_share;
+};
+// Throws InputError for a PDF that is zero everywhere.
+PdfFrequency pdf_frequency(const MipPyramid& pdf_pyramid);
 
 // ---- Fig. 5: too-bright VSGLs, and power ----------------------------------------------------
 // Scalar power of a VSGL: Phi.r + Phi.g + Phi.b (the light view's moment weight w, SPEC §4).

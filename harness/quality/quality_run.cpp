@@ -85,14 +85,53 @@ json power_json(const PowerMetrics& p) {
               {"max_over_mean", p.max_over_mean}, {"p99_over_mean", p.p99_over_mean}};
 }
 
-json coverage_json(const KernelCoverage& c) {
+json counts_json(const CoverageCounts& c) {
+  return json{{"gap", c.gap}, {"surplus", c.surplus}, {"count_error", c.count_error}, {"mean_count", c.mean_count}};
+}
+
+// A generator's coverage on the view, its lattice floor (the same generator on the view's uniform
+// copy) and the excess of the one over the other (SPEC §11a).
+json coverage_json(const FootprintCoverage& f, const FootprintCoverage& floor) {
+  const KernelCoverage& c = f.coverage;
+  const CoverageExcess e = coverage_excess(f, floor);
+  json box_floor = counts_json(floor.box);
+  box_floor["overlap"] = floor.coverage.overlap;
+  json box_excess = counts_json(e.box);
+  box_excess["overlap"] = e.box_overlap;
   return json{{"gap", c.gap},
               {"overlap", c.overlap},
               {"gap_plus_overlap", c.gap + c.overlap},
               {"texels_with_pdf", c.texels_with_pdf},
               {"gap_texels", c.gap_texels},
               {"overlap_texels", c.overlap_texels},
-              {"mass_over_target", summary_json(c.mass)}};
+              {"mass_over_target", summary_json(c.mass)},
+              {"box", counts_json(f.box)},
+              {"eq3", counts_json(f.eq3)},
+              {"lattice_floor", json{{"box", box_floor}, {"eq3", counts_json(floor.eq3)}}},
+              {"excess", json{{"box", box_excess}, {"eq3", counts_json(e.eq3)}}}};
+}
+
+json frequency_json(const PdfFrequency& f, uint32_t levels, uint32_t N, float K) {
+  // The mean kernel side of the view, sqrt(K M / N) = 2^l_bar texels: details at levels below
+  // floor(l_bar) vary inside a kernel, which is what a kernel sized from p(x_i) alone misjudges.
+  const double l_bar = 0.5 * std::log2(static_cast<double>(K) * std::exp2(2.0 * levels) / static_cast<double>(N));
+  const int k_kernel = std::clamp(static_cast<int>(std::floor(l_bar)) - 1, 0, static_cast<int>(levels) - 1);
+  const int k_8 = std::min(2, static_cast<int>(levels) - 1);
+  json j{{"detail_energy", f.detail_energy},
+         {"fine_share", f.fine_share},
+         {"mean_square", f.mean_square},
+         {"relative_variance", f.relative_variance},
+         {"share_below_8_texels", f.fine_share.empty() ? 0.0 : f.fine_share[static_cast<std::size_t>(k_8)]},
+         {"mean_kernel_side_texels", std::exp2(l_bar)},
+         {"share_below_kernel_side_texels", std::exp2(k_kernel + 1)},
+         {"share_below_kernel", f.fine_share.empty() ? 0.0 : f.fine_share[static_cast<std::size_t>(k_kernel)]},
+         {"definition",
+          "Haar wavelet spectrum on the PDF's mip levels: p = q / mean over the virtual square; "
+          "detail_energy[l] = mean over the square of (p_bar_l - p_bar_(l+1))^2 (wavelengths ~2^(l+1) texels); "
+          "mean_square = mean(p^2) = 1 + sum detail_energy; fine_share[k] = (detail_energy[0] + ... + "
+          "detail_energy[k]) / mean_square, the share of the PDF's energy at wavelengths below 2^(k+1) texels "
+          "(0: uniform, ~0.5: a texel checkerboard of 1 and 0)"}};
+  return j;
 }
 
 json error_json(const ImageError& e) {
@@ -183,6 +222,18 @@ QualityResult run_quality(Device& device, const Capture& capture, const std::fil
 
   const DeviceView camera = upload_view(device, capture, ViewKind::kCamera);
   const DeviceView light = upload_view(device, capture, ViewKind::kLight);
+  // The lattice floor's input: the same views with the PDF 1 on the texels it weighs (SPEC §11a).
+  const Capture floor_capture{capture.meta, uniform_pdf_view(capture.gbuffer), uniform_pdf_view(capture.rsm)};
+  const DeviceView floor_camera = upload_view(device, floor_capture, ViewKind::kCamera);
+  const DeviceView floor_light = upload_view(device, floor_capture, ViewKind::kLight);
+  const MipPyramid floor_light_pdf = view_data(floor_capture, ViewKind::kLight).pdf;
+  // Coverage of a generator's kernels on a view beside the same generator's on the view's floor.
+  const auto coverage_with_floor = [&](const std::vector<VsglRecord>& kernels, const MipPyramid& pdf,
+                                       const DeviceView& floor_view, const MipPyramid& floor_pdf,
+                                       const std::string& name, uint32_t n, float K) {
+    const GeneratorRun floor_run = run_generator(device, floor_view, name, config, n, K, 0);
+    return coverage_json(footprint_coverage(kernels, pdf, K), footprint_coverage(floor_run.vsgls, floor_pdf, K));
+  };
 
   // ---- 1-3: per view and generator: coverage (FIS), too-bright, power ----------------------------
   MipPyramid light_pdf;
@@ -191,15 +242,20 @@ QualityResult run_quality(Device& device, const Capture& capture, const std::fil
   for (ViewKind kind : {ViewKind::kLight, ViewKind::kCamera}) {
     const ViewData data = view_data(capture, kind);
     const DeviceView& view = kind == ViewKind::kLight ? light : camera;
+    const DeviceView& floor_view = kind == ViewKind::kLight ? floor_light : floor_camera;
+    const MipPyramid floor_pdf = kind == ViewKind::kLight ? floor_light_pdf : view_data(floor_capture, kind).pdf;
     const uint32_t n = kind == ViewKind::kLight ? config.light_vsgls : config.camera_vsgls;
     if (kind == ViewKind::kLight) light_pdf = data.pdf;
-    json v = json{{"vsgls", n}, {"total_flux", data.flux}, {"generators", json::object()}};
+    json v = json{{"vsgls", n},
+                  {"total_flux", data.flux},
+                  {"pdf_frequency", frequency_json(pdf_frequency(data.pdf), data.pdf.levels(), n, config.K)},
+                  {"generators", json::object()}};
     for (const auto& name : config.generators) {
       const auto tg = Clock::now();
       const GeneratorRun run = run_generator(device, view, name, config, n, config.K, 0);
       json g = json{{"power", power_json(power_metrics(run.vsgls, data.flux))}};
       if (is_fis(name)) {
-        g["coverage"] = coverage_json(kernel_coverage(run.vsgls, data.pdf, config.K));
+        g["coverage"] = coverage_with_floor(run.vsgls, data.pdf, floor_view, floor_pdf, name, n, config.K);
         const std::string file = scene + "_coverage_" + view_name(kind) + "_" + name + ".png";
         result.pictures.push_back(
             {file,
@@ -303,7 +359,7 @@ QualityResult run_quality(Device& device, const Capture& capture, const std::fil
                                                         run.generator->vsgl_count(), config.error_stride);
       row["K"] = K;
       row["error"] = error_json(image_error(img, ref_image));
-      row["coverage"] = coverage_json(kernel_coverage(run.vsgls, light_pdf, K));
+      row["coverage"] = coverage_with_floor(run.vsgls, light_pdf, floor_light, floor_light_pdf, name, config.light_vsgls, K);
       row["power"] = power_json(power_metrics(run.vsgls, light_flux));
       rows.push_back(row);
       k_tiles.push_back(tone_map(downscale(img, tile_factor), exposure));

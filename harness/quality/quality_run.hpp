@@ -7,7 +7,7 @@
 //   5. the K sweep (Fig. 6): flicker and reference error of both FIS generators for each K;
 //   6. error against a VPL reference (harness/quality/quality_reference.hpp).
 // Everything is computed before anything is written; the result is a JSON document (schema
-// "vsgl-quality", version 1) plus pictures, rendered to markdown by quality_report.hpp.
+// "vsgl-quality", version 2) plus pictures, rendered to markdown by quality_report.hpp.
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -25,7 +25,8 @@ namespace vsgl {
 
 class Device;
 
-inline constexpr int kQualitySchemaVersion = 1;
+// 2: coverage beside its lattice floor (box and Eq. 3 footprints), pdf_frequency, Fig. 1 judged on the excess.
+inline constexpr int kQualitySchemaVersion = 2;
 
 struct QualityConfig {
   std::vector<std::string> generators = paper_generator_names();
