@@ -174,6 +174,38 @@ glm::vec4 fetch(const MipPyramid& layer, glm::vec2 x, float level) {
   return mix_levels(bilinear(layer, x, k0), bilinear(layer, x, k1), t);
 }
 
+namespace {
+
+// Bound of one level's bilinear lookup whose weights are off by < delta per axis.
+glm::vec4 bilinear_error_bound(const MipPyramid& layer, glm::vec2 x, uint32_t level, float delta) {
+  const float sk = static_cast<float>(layer.size() >> level);
+  const glm::vec2 i0 = glm::floor(x * sk - 0.5f);
+  const auto ix = static_cast<int32_t>(i0.x);
+  const auto iy = static_cast<int32_t>(i0.y);
+  const glm::vec4 t00 = layer.at(level, ix, iy), t10 = layer.at(level, ix + 1, iy);
+  const glm::vec4 t01 = layer.at(level, ix, iy + 1), t11 = layer.at(level, ix + 1, iy + 1);
+  const glm::vec4 dx = glm::max(glm::abs(t10 - t00), glm::abs(t11 - t01));
+  const glm::vec4 dy = glm::max(glm::abs(t01 - t00), glm::abs(t11 - t10));
+  const glm::vec4 dxy = glm::abs(t00 - t10 - t01 + t11);
+  return delta * (dx + dy) + delta * delta * dxy;
+}
+
+}  // namespace
+
+glm::vec4 fetch_error_bound(const MipPyramid& layer, glm::vec2 x, float level, FilterPrecision precision) {
+  const float delta = precision.sub_texel_bits == 0 ? 0.0f : std::ldexp(1.0f, -static_cast<int>(precision.sub_texel_bits));
+  const float delta_m = precision.mipmap_bits == 0 ? 0.0f : std::ldexp(1.0f, -static_cast<int>(precision.mipmap_bits));
+  const auto top = static_cast<float>(layer.levels());
+  const float l = std::clamp(level, 0.0f, top);
+  const auto k0 = static_cast<uint32_t>(std::floor(l));
+  const uint32_t k1 = std::min(k0 + 1, layer.levels());
+  const glm::vec4 b0 = bilinear(layer, x, k0), b1 = bilinear(layer, x, k1);
+  const glm::vec4 e0 = bilinear_error_bound(layer, x, k0, delta), e1 = bilinear_error_bound(layer, x, k1, delta);
+  const glm::vec4 rounding = 0x1p-20f * (glm::abs(b0) + glm::abs(b1));
+  if (k0 == k1) return e0 + rounding;
+  return glm::max(e0, e1) + delta_m * (glm::abs(b1 - b0) + e0 + e1) + rounding;
+}
+
 // ---- level choice and power (SPEC §6.1) ----------------------------------------------------
 
 

@@ -35,7 +35,7 @@ TableMeasurement measure_table(Device& device, const TablesOptions& o, int numbe
                     {"recorded_on", capture.meta.device},
                     {"tool_version", capture.meta.tool_version},
                     {"brsm_build_ms", capture.meta.brsm_build_ms}};
-  out.config = config_json(o, capture);
+  out.config = config_json(o, capture, device.info());
 
   // Inputs uploaded, generators built and recorded before any timing (SPEC §9).
   const DeviceView camera = upload_view(device, capture, ViewKind::kCamera);

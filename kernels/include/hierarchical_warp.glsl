@@ -2,7 +2,9 @@
 #define HIERARCHICAL_WARP_GLSL
 // Kernel centres (SPEC §5): a Fibonacci lattice warped down the PDF pyramid (layer 2, .w = q).
 // C++ twin: reference_samples() in harness/reference/fis_reference.cpp, float for float.
+#ifndef PYRAMID_ACCESSORS  // the includer may choose pyramid_texture.glsl instead
 #include "pyramid.glsl"
+#endif
 
 const uint PDF_LAYER = 2u;
 

@@ -34,8 +34,10 @@ using mat4 = glm::mat4;
 #else
 #define VSGL_INTERFACE_BEGIN
 #define VSGL_INTERFACE_END
-#define VSGL_LAYOUT(type, bytes)
-#define VSGL_VEC4_AT(type, member, offset)
+// GLSL has no static_assert; these become constants (never used, so no code), which also
+// consumes the `;` that follows each use (GLSL before 4.60 rejects an empty declaration).
+#define VSGL_LAYOUT(type, bytes) const uint vsgl_size_of_##type = uint(bytes)
+#define VSGL_VEC4_AT(type, member, offset) const uint vsgl_offset_of_##type##_##member = uint(offset)
 #define VSGL_CONST const
 #endif
 
