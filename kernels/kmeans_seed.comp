@@ -7,6 +7,7 @@
 #include "kmeans_common.glsl"
 layout(local_size_x = 64) in;
 layout(std430, binding = 0) readonly buffer Pyramid { vec4 pyramid_texels[]; };
+#include "pyramid.glsl"
 #include "hierarchical_warp.glsl"
 layout(std430, binding = 1) readonly buffer View { vec4 view_texels[]; };
 layout(std430, binding = 2) writeonly buffer Centres { vec4 centres[]; };

@@ -143,8 +143,9 @@ TEST_F(FisGeneratorTest, TexturePathMatchesTheCpuReferenceWithEveryMipStrategy) 
           ASSERT_NEAR(x.x, samples[i].x.x, 1e-7f);
           ASSERT_NEAR(x.y, samples[i].x.y, 1e-7f);
           const float l = got[i].axis_level.w;
-          if (variant == FisVariant::kTok15)
+          if (variant == FisVariant::kTok15) {
             EXPECT_NEAR(l, tok15_level(samples[i].pdf, params.vsgl_count, params.K, sq), 1e-4f);
+          }
           const glm::vec3 f = glm::vec3(fetch(cpu[0], samples[i].x, l));
           const glm::vec3 ef = glm::vec3(fetch_error_bound(cpu[0], samples[i].x, l, precision));
           FisKernel k;
