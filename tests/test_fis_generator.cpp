@@ -95,8 +95,9 @@ TEST_F(FisGeneratorTest, MatchesTheCpuReferenceOnBothViews) {
 }
 
 // SPEC §6.1a: the texture path. Every mipmapping strategy builds the CPU chain of the device's
-// level 0 (the compute ones bit for bit; the blit within 1e-6 of the largest texel, the driver
-// summing in its own order); the kernel centres are the CPU's exactly (texelFetch), and every
+// level 0 (the compute ones bit for bit; the blit, whose samples land between the children only
+// to subTexelPrecisionBits, each texel within blit_chain_error_ratio's bound of its children's
+// mean); the kernel centres are the CPU's exactly (texelFetch), and every
 // power is the CPU's at the device's level within the bound the device's filter precision allows
 // (fetch_error_bound) plus 1e-4 relative. The tiny G-buffer's square (128, L = 7) makes the
 // single-pass downsampler hand over to its last group; the RSM's (64, L = 6) fits one group.
@@ -120,20 +121,18 @@ TEST_F(FisGeneratorTest, TexturePathMatchesTheCpuReferenceWithEveryMipStrategy) 
         std::array<MipPyramid, 3> cpu;
         for (uint32_t layer = 0; layer < 3; ++layer) {
           cpu[layer] = MipPyramid::build(level0(gpu[layer]), sq.width, sq.height);
-          float scale = 0.0f;
-          for (const auto& t : cpu[layer].texels) scale = std::max({scale, std::abs(t.x), std::abs(t.y), std::abs(t.z), std::abs(t.w)});
-          for (std::size_t i = 0; i < cpu[layer].texels.size(); ++i) {
-            if (m == MipStrategy::kBlit) {
-              for (int c = 0; c < 4; ++c)
-                ASSERT_NEAR(gpu[layer].texels[i][c], cpu[layer].texels[i][c], 1e-6f * scale) << "layer " << layer << " element " << i;
-            } else {
-              ASSERT_EQ(cpu[layer].texels[i], gpu[layer].texels[i]) << "layer " << layer << " element " << i;
-            }
+          if (m == MipStrategy::kBlit) {
+            EXPECT_LE(blit_chain_error_ratio(gpu[layer], precision), 1.0) << "layer " << layer;
+            continue;
           }
+          for (std::size_t i = 0; i < cpu[layer].texels.size(); ++i)
+            ASSERT_EQ(cpu[layer].texels[i], gpu[layer].texels[i]) << "layer " << layer << " element " << i;
         }
+        // Later passes against the pyramid they read (the blit's own, checked just above).
+        const std::array<MipPyramid, 3>& read = m == MipStrategy::kBlit ? gpu : cpu;
         const auto got = download_vector<VsglRecord>(device(), gen.vsgls(), params.vsgl_count);
-        const auto samples = reference_samples(cpu[2], params.vsgl_count, 0);
-        const float q_top = cpu[2].top().w;
+        const auto samples = reference_samples(read[2], params.vsgl_count, 0);
+        const float q_top = read[2].top().w;
         const auto M = static_cast<float>(sq.square_texels());
         const auto N = static_cast<float>(params.vsgl_count);
         for (uint32_t i = 0; i < params.vsgl_count; ++i) {
@@ -146,8 +145,8 @@ TEST_F(FisGeneratorTest, TexturePathMatchesTheCpuReferenceWithEveryMipStrategy) 
           if (variant == FisVariant::kTok15) {
             EXPECT_NEAR(l, tok15_level(samples[i].pdf, params.vsgl_count, params.K, sq), 1e-4f);
           }
-          const glm::vec3 f = glm::vec3(fetch(cpu[0], samples[i].x, l));
-          const glm::vec3 ef = glm::vec3(fetch_error_bound(cpu[0], samples[i].x, l, precision));
+          const glm::vec3 f = glm::vec3(fetch(read[0], samples[i].x, l));
+          const glm::vec3 ef = glm::vec3(fetch_error_bound(read[0], samples[i].x, l, precision));
           FisKernel k;
           k.level = l;
           glm::vec3 bound;
@@ -155,8 +154,8 @@ TEST_F(FisGeneratorTest, TexturePathMatchesTheCpuReferenceWithEveryMipStrategy) 
             k.density = samples[i].pdf;
             bound = M * ef / std::max(N * k.density, params.K);
           } else {
-            k.density = fetch(cpu[2], samples[i].x, l).w / q_top;
-            const float ep = fetch_error_bound(cpu[2], samples[i].x, l, precision).w / q_top;
+            k.density = fetch(read[2], samples[i].x, l).w / q_top;
+            const float ep = fetch_error_bound(read[2], samples[i].x, l, precision).w / q_top;
             bound = M / (N * k.density) * (ef + glm::abs(f) * (ep / k.density));
           }
           const glm::vec3 expected = fis_power(variant, f, k, params, sq);

@@ -206,6 +206,31 @@ glm::vec4 fetch_error_bound(const MipPyramid& layer, glm::vec2 x, float level, F
   return glm::max(e0, e1) + delta_m * (glm::abs(b1 - b0) + e0 + e1) + rounding;
 }
 
+double blit_chain_error_ratio(const MipPyramid& chain, FilterPrecision precision) {
+  const double delta = precision.sub_texel_bits == 0 ? 0.0 : std::ldexp(1.0, -static_cast<int>(precision.sub_texel_bits));
+  double worst = 0;
+  for (uint32_t l = 1; l <= chain.levels(); ++l)
+    for (uint32_t y = 0; y < chain.square.level_height(l); ++y)
+      for (uint32_t x = 0; x < chain.square.level_width(l); ++x) {
+        const auto cx = static_cast<int32_t>(2 * x), cy = static_cast<int32_t>(2 * y);
+        const glm::vec4 t00 = chain.at(l - 1, cx, cy), t10 = chain.at(l - 1, cx + 1, cy);
+        const glm::vec4 t01 = chain.at(l - 1, cx, cy + 1), t11 = chain.at(l - 1, cx + 1, cy + 1);
+        const glm::vec4 got = chain.at(l, static_cast<int32_t>(x), static_cast<int32_t>(y));
+        for (int c = 0; c < 4; ++c) {
+          const double mean = (double{t00[c]} + t10[c] + t01[c] + t11[c]) * 0.25;
+          const double dx = std::max(std::abs(double{t10[c]} - t00[c]), std::abs(double{t11[c]} - t01[c]));
+          const double dy = std::max(std::abs(double{t01[c]} - t00[c]), std::abs(double{t11[c]} - t10[c]));
+          const double dxy = std::abs(double{t00[c]} - t10[c] - t01[c] + t11[c]);
+          const double magnitude = std::abs(double{t00[c]}) + std::abs(double{t10[c]}) + std::abs(double{t01[c]}) +
+                                   std::abs(double{t11[c]});
+          const double bound = delta * (dx + dy) + delta * delta * dxy + 0x1p-20 * magnitude;
+          const double err = std::abs(double{got[c]} - mean);
+          if (err > 0) worst = std::max(worst, bound > 0 ? err / bound : HUGE_VAL);
+        }
+      }
+  return worst;
+}
+
 // ---- level choice and power (SPEC §6.1) ----------------------------------------------------
 
 

@@ -79,6 +79,13 @@ struct FilterPrecision {
 // max(e0, e1) + delta_m (|B1 - B0| + e0 + e1), plus float rounding (2^-20 of the magnitude).
 glm::vec4 fetch_error_bound(const MipPyramid& layer, glm::vec2 x, float level, FilterPrecision precision);
 
+// A mip chain built by a linear 2:1 blit (SPEC §6.1a) against the mean of its own children, level
+// by level: the blit's sample lands between the four children only to `precision` (each weight
+// 1/2 off by < 2^-sub_texel_bits), so each texel may differ from the mean by delta (Dx + Dy) +
+// delta^2 Dxy of its children plus float rounding (2^-20 of their magnitude). Returns the worst
+// |texel - mean| / that bound over every level and component (<= 1: within the bound).
+double blit_chain_error_ratio(const MipPyramid& chain, FilterPrecision precision);
+
 
 // Eq. 1 of the 2016 paper: l = clamp(0.5 log2(K M / (N p)), 0, L).
 float tok15_level(float pdf, uint32_t N, float K, const VirtualSquare& square);
