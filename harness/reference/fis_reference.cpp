@@ -217,12 +217,12 @@ double blit_chain_error_ratio(const MipPyramid& chain, FilterPrecision precision
         const glm::vec4 t01 = chain.at(l - 1, cx, cy + 1), t11 = chain.at(l - 1, cx + 1, cy + 1);
         const glm::vec4 got = chain.at(l, static_cast<int32_t>(x), static_cast<int32_t>(y));
         for (int c = 0; c < 4; ++c) {
-          const double mean = (double{t00[c]} + t10[c] + t01[c] + t11[c]) * 0.25;
-          const double dx = std::max(std::abs(double{t10[c]} - t00[c]), std::abs(double{t11[c]} - t01[c]));
-          const double dy = std::max(std::abs(double{t01[c]} - t00[c]), std::abs(double{t11[c]} - t10[c]));
-          const double dxy = std::abs(double{t00[c]} - t10[c] - t01[c] + t11[c]);
-          const double magnitude = std::abs(double{t00[c]}) + std::abs(double{t10[c]}) + std::abs(double{t01[c]}) +
-                                   std::abs(double{t11[c]});
+          const double a = t00[c], b = t10[c], d = t01[c], e = t11[c];
+          const double mean = (a + b + d + e) * 0.25;
+          const double dx = std::max(std::abs(b - a), std::abs(e - d));
+          const double dy = std::max(std::abs(d - a), std::abs(e - b));
+          const double dxy = std::abs(a - b - d + e);
+          const double magnitude = std::abs(a) + std::abs(b) + std::abs(d) + std::abs(e);
           const double bound = delta * (dx + dy) + delta * delta * dxy + 0x1p-20 * magnitude;
           const double err = std::abs(double{got[c]} - mean);
           if (err > 0) worst = std::max(worst, bound > 0 ? err / bound : HUGE_VAL);
