@@ -45,6 +45,10 @@ commands:
       --copy-mib M            buffers of the copy-bandwidth measurement (less only if memory is short) [256]
       --camera-vsgls N, --light-vsgls N, --K K, --iterations I   [2048, 1024, 1, 12]
       --kmeans-iterations I   Lloyd iterations of the k-means generators            [4]
+      --pyramid P             FIS pyramid: texture (sampled images, hardware trilinear, the
+                              paper's GPU path) or buffer (storage buffer, software filter)  [texture]
+      --mipmapping M          FIS texture path's mip chain: single-pass, blit or per-level
+                              [the device kind's default, recorded in the JSON]
       --json-only             write no markdown file (the console still shows the tables)
       --clocks-locked         record that you locked the GPU clocks (Vulkan cannot)
       --paper FILE, --schema FILE   [results/paper/paper_tables.json, results/schema/table.schema.json]
@@ -55,6 +59,9 @@ commands:
                               (SPEC §11): one line per check, measured error <= tolerance
       --json FILE             also write the checks as JSON
       --camera-vsgls N, --light-vsgls N, --K K    [2048, 1024, 1]
+      --pyramid P[,P]         FIS pyramid paths to check: texture, buffer        [texture,buffer]
+      --mipmapping M          texture path's strategy for the generator checks (the pyramid
+                              check covers all three)                  [the device kind's default]
 
   shade   --capture DIR       render the camera view lit by the light-view VSGLs of each generator,
                               without visibility (indirect light only), as OUT/shade_<scene>_<gen>.png
@@ -62,6 +69,7 @@ commands:
       --vsgls N               light-view VSGLs per generator          [1024]
       --stride K              shade every K-th G-buffer pixel (K > 1: a quick preview)  [1]
       --exposure E            linear scale before the sRGB curve   [auto: 99th pct. -> 0.8]
+      --pyramid P, --mipmapping M   FIS pyramid path and mip strategy (see tables)  [texture]
       --out DIR               output directory                        [.]
 
   quality --capture DIR       the paper's quality claims as numbers (Fig. 1, 5, 6): kernel gaps and
@@ -76,6 +84,7 @@ commands:
       --reference-rsm R       reference RSM side (every lit texel a VPL)              [128]
       --sequence-reference-rsm R   the same for each sequence frame                  [64]
       --light-vsgls N, --camera-vsgls N, --K K, --kmeans-iterations I   [1024, 2048, 1, 4]
+      --pyramid P, --mipmapping M   FIS pyramid path and mip strategy (see tables)  [texture]
       --out DIR               output root                                [results/quality]
 
   compare BASE NEW            a verdict per row (phase, view and generator totals): FASTER, SLOWER, SAME or

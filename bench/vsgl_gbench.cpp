@@ -6,6 +6,7 @@
 //   vsgl-gbench [google benchmark flags] [--vsgl_captures=DIR] [--vsgl_device=D] [--vsgl_tables=1,2]
 //               [--vsgl_generators=G,G] [--vsgl_camera_vsgls=N] [--vsgl_light_vsgls=N] [--vsgl_K=K]
 //               [--vsgl_iterations=I] [--vsgl_kmeans_iterations=I] [--vsgl_validate]
+//               [--vsgl_pyramid=texture|buffer] [--vsgl_mipmapping=single-pass|blit|per-level]
 //               [--vsgl_replays=N]   (replays per benchmark, default 30)
 //   e.g. vsgl-gbench --benchmark_format=json --benchmark_out=gbench.json
 //
@@ -26,12 +27,14 @@
 
 #include "bench/cli/args.hpp"
 #include "bench/cli/exit_codes.hpp"
+#include "bench/cli/gbench_tokens.hpp"
 #include "bench/cli/generator_options.hpp"
 #include "bench/cli/gpu_session.hpp"
 #include "harness/scene/capture_provisioning.hpp"
 #include "harness/vk/device.hpp"
 #include "harness/generators/device_view.hpp"
 #include "harness/core/error.hpp"
+#include "harness/generators/fis/fis_generator.hpp"
 #include "harness/generators/generator_registry.hpp"
 #include "harness/timing/run_provenance.hpp"
 #include "harness/report/tables_run.hpp"
@@ -50,25 +53,6 @@ struct Options {
   // would replay a millisecond-long k-means case tens of thousands of times.
   uint32_t replays = 30;
 };
-
-// The options Google Benchmark left, as vsgl-bench's tokens: --vsgl_camera_vsgls=N becomes
-// --camera-vsgls=N. Anything else is not ours, and a usage error.
-std::vector<std::string> cli_tokens(int argc, char** argv) {
-  std::vector<std::string> out;
-  for (int i = 1; i < argc; ++i) {
-    std::string a = argv[i];
-    if (a.rfind("--vsgl_", 0) != 0) throw UsageError("unknown argument '" + a + "' (vsgl-gbench's own options start with --vsgl_)");
-    std::string name = a.substr(7), value;
-    if (const auto eq = name.find('='); eq != std::string::npos) {
-      value = name.substr(eq);
-      name.resize(eq);
-    }
-    for (char& c : name)
-      if (c == '_') c = '-';
-    out.push_back("--" + name + value);
-  }
-  return out;
-}
 
 Options parse(cli::Args& args) {
   Options o;
@@ -95,7 +79,7 @@ struct TableState {
 
 int run(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);  // removes the --benchmark_* flags
-  cli::Args args(cli_tokens(argc, argv));
+  cli::Args args(cli::gbench_tokens(argc, argv));
   const Options o = parse(args);
   cli::GpuSession session = cli::GpuSession::open(args);
   args.finish();
@@ -110,11 +94,14 @@ int run(int argc, char** argv) {
   benchmark::AddCustomContext("vsgl_timestamp_period_ns", std::to_string(info.timestamp_period_ns));
   benchmark::AddCustomContext("vsgl_git_commit", build["git_commit"].get<std::string>());
   benchmark::AddCustomContext("vsgl_compiler", build["compiler"].get<std::string>());
+  const GeneratorConfig resolved = resolve_fis_config(info, o.generator.config);
   benchmark::AddCustomContext("vsgl_config", nlohmann::json{{"camera_vsgls", o.generator.camera_vsgls},
                                                             {"light_vsgls", o.generator.light_vsgls},
                                                             {"K", o.generator.config.K},
                                                             {"bisection_iterations", o.generator.config.bisection_iterations},
                                                             {"kmeans_iterations", o.generator.config.kmeans_iterations},
+                                                            {"pyramid", pyramid_path_name(resolved.pyramid)},
+                                                            {"mipmapping", mip_strategy_name(*resolved.mipmapping)},
                                                             {"replays", o.replays}}
                                                  .dump());
 

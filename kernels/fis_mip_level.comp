@@ -1,17 +1,14 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// FIS phase 2, "mipmapping": level l+1 of every moment layer from level l (SPEC §4): the mean of
-// the four children, missing children counting as zero, summed in a fixed order (`precise`) so the
-// CPU reference can match it bit for bit. One dispatch per level, one thread per output texel.
-layout(local_size_x = 16, local_size_y = 16) in;
+// FIS phase 2, "mipmapping", on the storage-buffer pyramid: level l+1 of every moment layer from
+// level l (SPEC §4), the mean of the four children, missing children counting as zero, summed in
+// a fixed order (mip_average) so the CPU reference can match it bit for bit. One dispatch per
+// level, one thread per output texel.
+#include "interface/fis.h"
+layout(local_size_x_id = 0, local_size_y_id = 1) in;
 layout(std430, binding = 0) buffer Pyramid { vec4 pyramid_texels[]; };
 #include "pyramid.glsl"
-
-layout(push_constant) uniform Push {
-  uint width;
-  uint height;
-  uint source_level;
-} pc;
+layout(push_constant) uniform PushBlock { FisMipPush pc; };
 
 void main() {
   pyramid_init(pc.width, pc.height);
@@ -21,9 +18,9 @@ void main() {
   ivec2 c = ivec2(p) * 2;
   uint out_index = pyramid_offset[dst] + p.y * pyramid_level_width(dst) + p.x;
   for (uint layer = 0u; layer < 3u; ++layer) {
-    precise vec4 sum = pyramid_texel(layer, pc.source_level, c) + pyramid_texel(layer, pc.source_level, c + ivec2(1, 0));
-    sum = sum + pyramid_texel(layer, pc.source_level, c + ivec2(0, 1));
-    sum = sum + pyramid_texel(layer, pc.source_level, c + ivec2(1, 1));
-    pyramid_texels[layer * pyramid_total + out_index] = sum * 0.25;
+    pyramid_texels[layer * pyramid_total + out_index] =
+        mip_average(pyramid_texel(layer, pc.source_level, c), pyramid_texel(layer, pc.source_level, c + ivec2(1, 0)),
+                    pyramid_texel(layer, pc.source_level, c + ivec2(0, 1)),
+                    pyramid_texel(layer, pc.source_level, c + ivec2(1, 1)));
   }
 }

@@ -8,6 +8,7 @@
 #include "interface/kmeans.h"
 layout(local_size_x_id = 0) in;  // kKmeansNarrowGroupSize (interface/kmeans.h)
 layout(std430, binding = 0) readonly buffer Pyramid { vec4 pyramid_texels[]; };
+#include "pyramid.glsl"
 #include "hierarchical_warp.glsl"
 layout(std430, binding = 1) readonly buffer View { vec4 view_texels[]; };
 layout(std430, binding = 2) writeonly buffer Centres { vec4 centres[]; };

@@ -28,6 +28,7 @@ class BrsmPdfTest : public test::GpuTest {
     const DeviceView view = upload_view(device(), c, ViewKind::kCamera);
     FisParams p;
     p.vsgl_count = n;
+    p.pyramid = PyramidPath::kBuffer;  // what build_brsm_pdf uses (the PDF is recorded data)
     FisGenerator gen(device(), view, FisVariant::kModified, p);
     run_untimed(device(), gen);
     return download_vector<VsglRecord>(device(), gen.vsgls(), n);

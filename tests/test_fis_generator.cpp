@@ -3,6 +3,7 @@
 // texels, and every VSGL (level, density, power, moments) agrees to float rounding.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "gpu_test.hpp"
@@ -23,7 +24,7 @@ class FisGeneratorTest : public test::GpuTest {
   void run(FisGenerator& gen) { run_untimed(device(), gen); }
 
   std::array<MipPyramid, 3> download_pyramids(const FisGenerator& gen, const VirtualSquare& sq) {
-    const auto all = download_vector<glm::vec4>(device(), gen.pyramid(), 3 * sq.total_texels());
+    const auto all = gen.download_pyramid(device());
     std::array<MipPyramid, 3> out;
     for (uint32_t layer = 0; layer < 3; ++layer) {
       out[layer].square = sq;
@@ -41,6 +42,7 @@ class FisGeneratorTest : public test::GpuTest {
     const DeviceView view = upload_view(device(), capture, kind);
     FisParams params;
     params.vsgl_count = N;
+    params.pyramid = PyramidPath::kBuffer;  // bit-exact with the CPU reference
     FisGenerator gen(device(), view, variant, params);
     run(gen);
     const VirtualSquare& sq = view.square;
@@ -89,6 +91,79 @@ TEST_F(FisGeneratorTest, MatchesTheCpuReferenceOnBothViews) {
   for (FisVariant variant : {FisVariant::kTok15, FisVariant::kModified}) {
     check_view(capture, ViewKind::kCamera, variant, 256);
     check_view(capture, ViewKind::kLight, variant, 128);
+  }
+}
+
+// SPEC §6.1a: the texture path. Every mipmapping strategy builds the CPU chain of the device's
+// level 0 (the compute ones bit for bit; the blit, whose samples land between the children only
+// to subTexelPrecisionBits, each texel within blit_chain_error_ratio's bound of its children's
+// mean); the kernel centres are the CPU's exactly (texelFetch), and every
+// power is the CPU's at the device's level within the bound the device's filter precision allows
+// (fetch_error_bound) plus 1e-4 relative. The tiny G-buffer's square (128, L = 7) makes the
+// single-pass downsampler hand over to its last group; the RSM's (64, L = 6) fits one group.
+TEST_F(FisGeneratorTest, TexturePathMatchesTheCpuReferenceWithEveryMipStrategy) {
+  const Capture capture = tiny_capture();
+  const FilterPrecision precision{device().info().sub_texel_precision_bits, device().info().mipmap_precision_bits};
+  for (ViewKind kind : {ViewKind::kCamera, ViewKind::kLight}) {
+    const DeviceView view = upload_view(device(), capture, kind);
+    const VirtualSquare& sq = view.square;
+    for (MipStrategy m : {MipStrategy::kSinglePass, MipStrategy::kBlit, MipStrategy::kPerLevel})
+      for (FisVariant variant : {FisVariant::kTok15, FisVariant::kModified}) {
+        SCOPED_TRACE(std::string(view_name(kind)) + " " + mip_strategy_name(m) + " " + fis_variant_name(variant));
+        FisParams params;
+        params.vsgl_count = kind == ViewKind::kCamera ? 256 : 128;
+        params.pyramid = PyramidPath::kTexture;
+        params.mipmapping = m;
+        FisGenerator gen(device(), view, variant, params);
+        ASSERT_EQ(gen.pyramid_path(), PyramidPath::kTexture);
+        run(gen);
+        const auto gpu = download_pyramids(gen, sq);
+        std::array<MipPyramid, 3> cpu;
+        for (uint32_t layer = 0; layer < 3; ++layer) {
+          cpu[layer] = MipPyramid::build(level0(gpu[layer]), sq.width, sq.height);
+          if (m == MipStrategy::kBlit) {
+            EXPECT_LE(blit_chain_error_ratio(gpu[layer], precision), 1.0) << "layer " << layer;
+            continue;
+          }
+          for (std::size_t i = 0; i < cpu[layer].texels.size(); ++i)
+            ASSERT_EQ(cpu[layer].texels[i], gpu[layer].texels[i]) << "layer " << layer << " element " << i;
+        }
+        // Later passes against the pyramid they read (the blit's own, checked just above).
+        const std::array<MipPyramid, 3>& read = m == MipStrategy::kBlit ? gpu : cpu;
+        const auto got = download_vector<VsglRecord>(device(), gen.vsgls(), params.vsgl_count);
+        const auto samples = reference_samples(read[2], params.vsgl_count, 0);
+        const float q_top = read[2].top().w;
+        const auto M = static_cast<float>(sq.square_texels());
+        const auto N = static_cast<float>(params.vsgl_count);
+        for (uint32_t i = 0; i < params.vsgl_count; ++i) {
+          SCOPED_TRACE("VSGL " + std::to_string(i));
+          const glm::vec2 x(got[i].center_pdf);
+          ASSERT_EQ(glm::uvec2(x * static_cast<float>(sq.size)), samples[i].texel);
+          ASSERT_NEAR(x.x, samples[i].x.x, 1e-7f);
+          ASSERT_NEAR(x.y, samples[i].x.y, 1e-7f);
+          const float l = got[i].axis_level.w;
+          if (variant == FisVariant::kTok15) {
+            EXPECT_NEAR(l, tok15_level(samples[i].pdf, params.vsgl_count, params.K, sq), 1e-4f);
+          }
+          const glm::vec3 f = glm::vec3(fetch(read[0], samples[i].x, l));
+          const glm::vec3 ef = glm::vec3(fetch_error_bound(read[0], samples[i].x, l, precision));
+          FisKernel k;
+          k.level = l;
+          glm::vec3 bound;
+          if (variant == FisVariant::kTok15) {
+            k.density = samples[i].pdf;
+            bound = M * ef / std::max(N * k.density, params.K);
+          } else {
+            k.density = fetch(read[2], samples[i].x, l).w / q_top;
+            const float ep = fetch_error_bound(read[2], samples[i].x, l, precision).w / q_top;
+            bound = M / (N * k.density) * (ef + glm::abs(f) * (ep / k.density));
+          }
+          const glm::vec3 expected = fis_power(variant, f, k, params, sq);
+          for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(got[i].power_sharpness[c], expected[c], bound[c] + 1e-4f * std::abs(expected[c]) + 1e-9f)
+                << "power channel " << c;
+        }
+      }
   }
 }
 

@@ -130,6 +130,13 @@ TEST_F(TablesRunTest, TinyRunProducesCompleteFiniteTablesThatMatchTheSchema) {
         }
     EXPECT_FALSE(doc["bandwidth"]["passes"].contains("kmeans_2d"));  // no streaming pass to bound
     EXPECT_EQ(doc["capture"]["hashes"]["gbuffer"].size(), 15u);
+    // SPEC §6.1a: the texture path by default, with its format, sampler and precision limits.
+    const auto& pyramid = doc["config"]["pyramid"];
+    EXPECT_EQ(pyramid["path"], "texture");
+    EXPECT_EQ(pyramid["image_format"], "R32G32B32A32_SFLOAT");
+    EXPECT_EQ(pyramid["sub_texel_precision_bits"], device().info().sub_texel_precision_bits);
+    EXPECT_EQ(pyramid["mipmap_precision_bits"], device().info().mipmap_precision_bits);
+    EXPECT_FALSE(pyramid["mipmapping_reason"].get<std::string>().empty());
   }
   EXPECT_NE(out.markdown[0].find("Filtered sampling"), std::string::npos);
   EXPECT_NE(out.markdown[0].find("paired by round"), std::string::npos);

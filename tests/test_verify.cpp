@@ -29,8 +29,10 @@ class VerifyTest : public test::GpuTest {
   }
 };
 
-// 2 views x 2 generators x 6 checks + one histogram per view.
-constexpr std::size_t kChecks = 2 * (2 * 6 + 1);
+// Per view and pyramid path: 2 generators x 6 checks + one histogram; the texture path adds the
+// pyramid check of its two other mipmapping strategies.
+constexpr std::size_t kChecksPerPath = 2 * 6 + 1;
+constexpr std::size_t kChecks = 2 * (kChecksPerPath + (kChecksPerPath + 2));
 
 TEST_F(VerifyTest, EveryCheckPassesOnASmallCapture) {
   const Capture c = record("tiny", {96, 64, 64});
@@ -52,9 +54,13 @@ TEST_F(VerifyTest, EveryKmeansCheckPassesOnASmallCapture) {
   expect_all_pass(verify_kmeans(device(), c, config, 1), kKmeansChecks);
 }
 
+// The full-size FIS checks take the timed default, the texture path (the buffer path's passes are
+// checked on the small capture; `vsgl-bench verify` checks both at full size).
 TEST_F(VerifyTest, EveryCheckPassesOnTheFullSizeAtrium) {
   const Capture c = record("atrium", {1920, 1088, 512});
-  expect_all_pass(verify_fis(device(), c, VerifyConfig{}), kChecks);
+  VerifyConfig texture_only;
+  texture_only.pyramids = {PyramidPath::kTexture};
+  expect_all_pass(verify_fis(device(), c, texture_only), 2 * (kChecksPerPath + 2));
   expect_all_pass(verify_kmeans(device(), c, VerifyConfig{}), kKmeansChecks);
 }
 
@@ -72,6 +78,12 @@ TEST(VerifyCli, BadOptionsAreUsageErrors) {
   EXPECT_EQ(r.exit_code, 2) << r.output;
   r = test::run_cli("verify --capture x --K -1");
   EXPECT_EQ(r.exit_code, 2) << r.output;
+  r = test::run_cli("verify --capture x --pyramid cardboard");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("texture or buffer"), std::string::npos) << r.output;
+  r = test::run_cli("verify --capture x --mipmapping magic");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("single-pass, blit or per-level"), std::string::npos) << r.output;
   r = test::run_cli("verify --capture x --frobnicate");
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("--frobnicate"), std::string::npos) << r.output;

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "bench/cli/commands.hpp"
+#include "bench/cli/generator_options.hpp"
 #include "bench/cli/gpu_session.hpp"
 #include "harness/core/atomic_file.hpp"
 #include "harness/capture/capture.hpp"
@@ -26,6 +27,12 @@ int run_quality(Args& args) {
   config.camera_vsgls = args.u32("--camera-vsgls", config.camera_vsgls, 1);
   config.K = args.positive_float("--K", config.K);
   config.kmeans_iterations = args.u32("--kmeans-iterations", config.kmeans_iterations);
+  {
+    GeneratorConfig gc;
+    read_pyramid_options(args, gc);
+    config.pyramid = gc.pyramid;
+    config.mipmapping = gc.mipmapping;
+  }
   config.error_stride = args.u32("--error-stride", config.error_stride, 1);
   config.flicker_width = args.u32("--flicker-width", config.flicker_width, 1);
   config.reference_rsm = args.u32("--reference-rsm", config.reference_rsm, 1);

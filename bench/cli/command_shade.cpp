@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "bench/cli/commands.hpp"
+#include "bench/cli/generator_options.hpp"
 #include "bench/cli/gpu_session.hpp"
 #include "harness/capture/capture.hpp"
 #include "harness/capture/capture_files.hpp"
@@ -43,6 +44,8 @@ int run_shade(Args& args) {
   const uint32_t vsgl_count = args.u32("--vsgls", kLightViewVsgls, 1);
   const std::filesystem::path out_dir = args.string("--out", ".");
   float exposure = args.positive_float("--exposure", 0.0f);  // 0: not given, expose automatically
+  GeneratorConfig config;
+  read_pyramid_options(args, config);
   GpuSession session = GpuSession::open(args);
   args.finish();
   if (!capture_arg) throw UsageError("shade needs --capture DIR (a capture written by `vsgl-bench record`)");
@@ -58,7 +61,6 @@ int run_shade(Args& args) {
   // Everything is computed and checked before the first file is written (SPEC §12).
   std::vector<RadianceImage> images;
   for (const GeneratorDescriptor* g : generators) {
-    GeneratorConfig config;
     config.vsgl_count = vsgl_count;
     auto generator = g->make(device, light, config);
     run_untimed(device, *generator);

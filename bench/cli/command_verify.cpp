@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bench/cli/commands.hpp"
+#include "bench/cli/generator_options.hpp"
 #include "bench/cli/gpu_session.hpp"
 #include "harness/capture/capture_files.hpp"
 #include "harness/core/atomic_file.hpp"
@@ -21,6 +22,12 @@ int run_verify(Args& args) {
   config.camera_vsgls = args.u32("--camera-vsgls", config.camera_vsgls, 1);
   config.light_vsgls = args.u32("--light-vsgls", config.light_vsgls, 1);
   config.K = args.positive_float("--K", config.K);
+  config.pyramids.clear();
+  for (const auto& item : args.list("--pyramid", "texture,buffer")) config.pyramids.push_back(parse_pyramid_option(item));
+  if (const auto m = args.value("--mipmapping")) {
+    config.mipmapping = parse_mip_strategy(*m);
+    if (!config.mipmapping) throw UsageError("--mipmapping takes single-pass, blit or per-level, not '" + *m + "'");
+  }
   GpuSession session = GpuSession::open(args);
   args.finish();
   if (!capture_dir) throw UsageError("verify needs --capture DIR (record one with `vsgl-bench record`)");

@@ -1,5 +1,7 @@
 #include "bench/cli/generator_options.hpp"
 
+#include "harness/core/error.hpp"
+
 
 namespace vsgl::cli {
 
@@ -11,7 +13,22 @@ GeneratorOptions read_generator_options(Args& args) {
   o.config.K = args.positive_float("--K", 1.0f);
   o.config.bisection_iterations = args.u32("--iterations", 12, 1);
   o.config.kmeans_iterations = args.u32("--kmeans-iterations", 4, 0);
+  read_pyramid_options(args, o.config);
   return o;
+}
+
+PyramidPath parse_pyramid_option(const std::string& value) {
+  const auto path = parse_pyramid_path(value);
+  if (!path) throw UsageError("--pyramid takes texture or buffer, not '" + value + "'");
+  return *path;
+}
+
+void read_pyramid_options(Args& args, GeneratorConfig& config) {
+  config.pyramid = parse_pyramid_option(args.string("--pyramid", "texture"));
+  if (const auto m = args.value("--mipmapping")) {
+    config.mipmapping = parse_mip_strategy(*m);
+    if (!config.mipmapping) throw UsageError("--mipmapping takes single-pass, blit or per-level, not '" + *m + "'");
+  }
 }
 
 }  // namespace vsgl::cli

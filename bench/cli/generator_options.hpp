@@ -1,6 +1,7 @@
 #pragma once
 // The generator options every timing front end reads the same way (`tables`, `vsgl-gbench`):
-// --generators, --camera-vsgls, --light-vsgls, --K, --iterations, --kmeans-iterations.
+// --generators, --camera-vsgls, --light-vsgls, --K, --iterations, --kmeans-iterations,
+// --pyramid texture|buffer, --mipmapping single-pass|blit|per-level.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -19,5 +20,12 @@ struct GeneratorOptions {
 
 // Throws UsageError for a malformed value (generator names are checked by the caller's run).
 GeneratorOptions read_generator_options(Args& args);
+
+// --pyramid texture|buffer (default texture, SPEC §6.1a) and --mipmapping STRATEGY (default: the
+// device kind's, left unset here) into `config`; `shade`, `quality` and `verify` read them too.
+// Throws UsageError naming the accepted values.
+void read_pyramid_options(Args& args, GeneratorConfig& config);
+// The same for one value of --pyramid (e.g. one item of verify's list).
+PyramidPath parse_pyramid_option(const std::string& value);
 
 }  // namespace vsgl::cli

@@ -69,8 +69,8 @@ GeneratorLines count_generator_lines(const SourceSet& sources, const std::filesy
   GeneratorLines out;
   std::vector<std::string> own = sources.host;
   own.insert(own.end(), sources.kernels.begin(), sources.kernels.end());
-  // Includes reached from the kernels, transitively, found as glslangValidator finds them: beside
-  // the including file first, then on the include path, kernels/include/.
+  // Includes reached from the kernels, transitively, found as glslang finds them: beside the
+  // including file first (interface/*.h include "interop.h"), then in kernels/include/.
   static const std::regex include_re(R"re(^\s*#\s*include\s+"([^"]+)")re");
   std::set<std::string> includes;
   std::vector<std::string> pending(sources.kernels.begin(), sources.kernels.end());
@@ -85,9 +85,10 @@ GeneratorLines count_generator_lines(const SourceSet& sources, const std::filesy
     std::smatch m;
     while (std::getline(lines, line))
       if (std::regex_search(line, m, include_re)) {
-        const std::filesystem::path beside = (std::filesystem::path(rel).parent_path() / m[1].str()).lexically_normal();
-        const std::string inc =
-            std::filesystem::exists(source_dir / beside) ? beside.generic_string() : "kernels/include/" + m[1].str();
+        const std::filesystem::path beside = std::filesystem::path(rel).parent_path() / m[1].str();
+        const std::string inc = std::filesystem::exists(source_dir / beside) && rel.rfind("kernels/include/", 0) == 0
+                                    ? beside.lexically_normal().generic_string()
+                                    : "kernels/include/" + m[1].str();
         if (includes.insert(inc).second) pending.push_back(inc);
       }
   }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "harness/core/source_lines.hpp"
+#include "harness/math/fis_params.hpp"
 
 namespace vsgl {
 
@@ -22,6 +23,8 @@ struct GeneratorConfig {
   uint32_t bisection_iterations = 12; // fis_modified's level search (SPEC §6.1)
   uint32_t kmeans_iterations = 4;     // Lloyd iterations before the final assignment (SPEC §6.2)
   uint32_t offset_bits = 0;           // Fibonacci lattice offset (SPEC §5)
+  PyramidPath pyramid = PyramidPath::kTexture;  // FIS pyramid: sampled images or storage buffer (SPEC §6.1a)
+  std::optional<MipStrategy> mipmapping;        // FIS texture path; unset = the device kind's default
 };
 
 // FIS generators filter a mip pyramid at a level per kernel (SPEC §6.1), so their VSGLs have
@@ -42,6 +45,9 @@ struct GeneratorDescriptor {
   // The host class and the compute kernels it dispatches (one pipeline each); the GLSL they
   // #include is added by count_generator_lines(). Shared infrastructure counts for no generator.
   SourceSet sources;
+  // The sources the generator is built from under a given config (FIS: its pyramid path and
+  // mipmapping strategy, SPEC §6.1a); null: always `sources`. `sources` is the default config's.
+  SourceSet (*sources_for)(const GeneratorConfig& config) = nullptr;
 };
 
 }  // namespace vsgl

@@ -57,4 +57,9 @@ std::unique_ptr<VsglGenerator> make_generator(const std::string& name, Device& d
 
 const SourceSet& generator_sources(const std::string& name) { return generator_descriptor(name).sources; }
 
+SourceSet generator_sources(const std::string& name, const GeneratorConfig& config) {
+  const GeneratorDescriptor& d = generator_descriptor(name);
+  return d.sources_for != nullptr ? d.sources_for(config) : d.sources;
+}
+
 }  // namespace vsgl

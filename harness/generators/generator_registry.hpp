@@ -42,5 +42,7 @@ using GeneratorWrapper = std::function<std::unique_ptr<VsglGenerator>(Device& de
 
 // Which files belong to which generator (Table 3 analog); throws InputError for an unknown name.
 const SourceSet& generator_sources(const std::string& name);
+// The same under `config` (whose FIS mipmapping strategy is resolved; see resolve_fis_config).
+SourceSet generator_sources(const std::string& name, const GeneratorConfig& config);
 
 }  // namespace vsgl

@@ -2,6 +2,9 @@
 // The parameters of the FIS generators (SPEC §6.1), shared by the GPU generator and the CPU
 // reference.
 #include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
 
 namespace vsgl {
 
@@ -11,11 +14,36 @@ inline const char* fis_variant_name(FisVariant variant) {
   return variant == FisVariant::kTok15 ? "fis_tok15" : "fis_modified";
 }
 
+// Where the FIS pyramid lives (SPEC §6.1a): sampled images with hardware trilinear filtering
+// (the paper's GPU path, the default for timing) or the storage buffer of SPEC §4 with software
+// filtering (bit-exact with the CPU reference).
+enum class PyramidPath { kTexture, kBuffer };
+// How the texture path builds its mip chain (the buffer path always runs one dispatch per level).
+enum class MipStrategy { kSinglePass, kBlit, kPerLevel };
+
+inline const char* pyramid_path_name(PyramidPath p) { return p == PyramidPath::kTexture ? "texture" : "buffer"; }
+inline const char* mip_strategy_name(MipStrategy m) {
+  return m == MipStrategy::kSinglePass ? "single-pass" : m == MipStrategy::kBlit ? "blit" : "per-level";
+}
+inline std::optional<PyramidPath> parse_pyramid_path(std::string_view s) {
+  if (s == "texture") return PyramidPath::kTexture;
+  if (s == "buffer") return PyramidPath::kBuffer;
+  return std::nullopt;
+}
+inline std::optional<MipStrategy> parse_mip_strategy(std::string_view s) {
+  if (s == "single-pass") return MipStrategy::kSinglePass;
+  if (s == "blit") return MipStrategy::kBlit;
+  if (s == "per-level") return MipStrategy::kPerLevel;
+  return std::nullopt;
+}
+
 struct FisParams {
   uint32_t vsgl_count = 0;            // N
   float K = 1.0f;                     // kernel size parameter (the paper's setting is 1)
   uint32_t bisection_iterations = 12;  // modified FIS (Eq. 3)
   uint32_t offset_bits = 0;           // Fibonacci offset o (SPEC §5), as 32-bit fixed point
+  PyramidPath pyramid = PyramidPath::kTexture;
+  std::optional<MipStrategy> mipmapping;  // texture path; unset = the device kind's default
 };
 
 }  // namespace vsgl

@@ -63,6 +63,8 @@ GeneratorRun run_generator(Device& device, const DeviceView& view, const std::st
   gc.bisection_iterations = config.bisection_iterations;
   gc.kmeans_iterations = config.kmeans_iterations;
   gc.offset_bits = offset_bits;
+  gc.pyramid = config.pyramid;
+  gc.mipmapping = config.mipmapping;
   GeneratorRun run;
   run.generator = make_generator(name, device, view, gc);
   run_untimed(device, *run.generator);

@@ -35,6 +35,8 @@ struct QualityConfig {
   float K = 1.0f;
   uint32_t bisection_iterations = 12;
   uint32_t kmeans_iterations = 4;
+  PyramidPath pyramid = PyramidPath::kTexture;  // FIS pyramid path (SPEC §6.1a)
+  std::optional<MipStrategy> mipmapping;        // FIS texture path; unset = the device kind's default
   uint32_t frames = 32;               // static flicker frames (offsets), and at most this many sequence frames
   uint32_t error_stride = 4;          // G-buffer stride of the reference comparison (1920x1088 -> 480x272)
   uint32_t flicker_width = 120;       // flicker images are about this wide (stride = W / this)

@@ -174,6 +174,63 @@ glm::vec4 fetch(const MipPyramid& layer, glm::vec2 x, float level) {
   return mix_levels(bilinear(layer, x, k0), bilinear(layer, x, k1), t);
 }
 
+namespace {
+
+// Bound of one level's bilinear lookup whose weights are off by < delta per axis.
+glm::vec4 bilinear_error_bound(const MipPyramid& layer, glm::vec2 x, uint32_t level, float delta) {
+  const float sk = static_cast<float>(layer.size() >> level);
+  const glm::vec2 i0 = glm::floor(x * sk - 0.5f);
+  const auto ix = static_cast<int32_t>(i0.x);
+  const auto iy = static_cast<int32_t>(i0.y);
+  const glm::vec4 t00 = layer.at(level, ix, iy), t10 = layer.at(level, ix + 1, iy);
+  const glm::vec4 t01 = layer.at(level, ix, iy + 1), t11 = layer.at(level, ix + 1, iy + 1);
+  const glm::vec4 dx = glm::max(glm::abs(t10 - t00), glm::abs(t11 - t01));
+  const glm::vec4 dy = glm::max(glm::abs(t01 - t00), glm::abs(t11 - t10));
+  const glm::vec4 dxy = glm::abs(t00 - t10 - t01 + t11);
+  return delta * (dx + dy) + delta * delta * dxy;
+}
+
+}  // namespace
+
+glm::vec4 fetch_error_bound(const MipPyramid& layer, glm::vec2 x, float level, FilterPrecision precision) {
+  const float delta = precision.sub_texel_bits == 0 ? 0.0f : std::ldexp(1.0f, -static_cast<int>(precision.sub_texel_bits));
+  const float delta_m = precision.mipmap_bits == 0 ? 0.0f : std::ldexp(1.0f, -static_cast<int>(precision.mipmap_bits));
+  const auto top = static_cast<float>(layer.levels());
+  const float l = std::clamp(level, 0.0f, top);
+  const auto k0 = static_cast<uint32_t>(std::floor(l));
+  const uint32_t k1 = std::min(k0 + 1, layer.levels());
+  const glm::vec4 b0 = bilinear(layer, x, k0), b1 = bilinear(layer, x, k1);
+  const glm::vec4 e0 = bilinear_error_bound(layer, x, k0, delta), e1 = bilinear_error_bound(layer, x, k1, delta);
+  const glm::vec4 rounding = 0x1p-20f * (glm::abs(b0) + glm::abs(b1));
+  if (k0 == k1) return e0 + rounding;
+  return glm::max(e0, e1) + delta_m * (glm::abs(b1 - b0) + e0 + e1) + rounding;
+}
+
+double blit_chain_error_ratio(const MipPyramid& chain, FilterPrecision precision) {
+  const double delta = precision.sub_texel_bits == 0 ? 0.0 : std::ldexp(1.0, -static_cast<int>(precision.sub_texel_bits));
+  double worst = 0;
+  for (uint32_t l = 1; l <= chain.levels(); ++l)
+    for (uint32_t y = 0; y < chain.square.level_height(l); ++y)
+      for (uint32_t x = 0; x < chain.square.level_width(l); ++x) {
+        const auto cx = static_cast<int32_t>(2 * x), cy = static_cast<int32_t>(2 * y);
+        const glm::vec4 t00 = chain.at(l - 1, cx, cy), t10 = chain.at(l - 1, cx + 1, cy);
+        const glm::vec4 t01 = chain.at(l - 1, cx, cy + 1), t11 = chain.at(l - 1, cx + 1, cy + 1);
+        const glm::vec4 got = chain.at(l, static_cast<int32_t>(x), static_cast<int32_t>(y));
+        for (int c = 0; c < 4; ++c) {
+          const double a = t00[c], b = t10[c], d = t01[c], e = t11[c];
+          const double mean = (a + b + d + e) * 0.25;
+          const double dx = std::max(std::abs(b - a), std::abs(e - d));
+          const double dy = std::max(std::abs(d - a), std::abs(e - b));
+          const double dxy = std::abs(a - b - d + e);
+          const double magnitude = std::abs(a) + std::abs(b) + std::abs(d) + std::abs(e);
+          const double bound = delta * (dx + dy) + delta * delta * dxy + 0x1p-20 * magnitude;
+          const double err = std::abs(double{got[c]} - mean);
+          if (err > 0) worst = std::max(worst, bound > 0 ? err / bound : HUGE_VAL);
+        }
+      }
+  return worst;
+}
+
 // ---- level choice and power (SPEC §6.1) ----------------------------------------------------
 
 

@@ -66,6 +66,26 @@ std::vector<SamplePoint> reference_samples(const MipPyramid& pdf_pyramid, uint32
 glm::vec4 bilinear(const MipPyramid& layer, glm::vec2 x, uint32_t level);
 glm::vec4 fetch(const MipPyramid& layer, glm::vec2 x, float level);
 
+// How finely a device's sampler resolves a trilinear lookup (SPEC §6.1a): each bilinear weight
+// is a multiple of 2^-sub_texel_bits, the level fraction a multiple of 2^-mipmap_bits
+// (VkPhysicalDeviceLimits::subTexelPrecisionBits / mipmapPrecisionBits; 0: exact).
+struct FilterPrecision {
+  uint32_t sub_texel_bits = 0;
+  uint32_t mipmap_bits = 0;
+};
+// A bound, per component, on |device lookup - fetch(layer, x, level)| for any device whose
+// weights are fetch()'s rounded or truncated to `precision` (each weight off by < one step):
+// per level delta (Dx + Dy) + delta^2 Dxy over the 2x2 taps' differences, between levels
+// max(e0, e1) + delta_m (|B1 - B0| + e0 + e1), plus float rounding (2^-20 of the magnitude).
+glm::vec4 fetch_error_bound(const MipPyramid& layer, glm::vec2 x, float level, FilterPrecision precision);
+
+// A mip chain built by a linear 2:1 blit (SPEC §6.1a) against the mean of its own children, level
+// by level: the blit's sample lands between the four children only to `precision` (each weight
+// 1/2 off by < 2^-sub_texel_bits), so each texel may differ from the mean by delta (Dx + Dy) +
+// delta^2 Dxy of its children plus float rounding (2^-20 of their magnitude). Returns the worst
+// |texel - mean| / that bound over every level and component (<= 1: within the bound).
+double blit_chain_error_ratio(const MipPyramid& chain, FilterPrecision precision);
+
 
 // Eq. 1 of the 2016 paper: l = clamp(0.5 log2(K M / (N p)), 0, L).
 float tok15_level(float pdf, uint32_t N, float K, const VirtualSquare& square);

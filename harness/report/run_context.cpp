@@ -3,9 +3,11 @@
 #include <ctime>
 
 #include "harness/core/json_reader.hpp"
+#include "harness/generators/fis/fis_generator.hpp"
 #include "harness/generators/generator_registry.hpp"
 #include "harness/report/paper_tables.hpp"
 #include "harness/timing/run_provenance.hpp"
+#include "harness/vk/device_info.hpp"
 
 namespace vsgl {
 namespace {
@@ -39,12 +41,46 @@ RunContext make_run_context(const DeviceInfo& device, const TablesOptions& o) {
                   {"clocks_note", "Vulkan cannot lock GPU clocks: lock them outside (e.g. `nvidia-smi -lgc <MHz>` on "
                                   "NVIDIA, `rocm-smi --setperfdeterminism <MHz>` on AMD) and pass --clocks-locked"}};
   if (!o.debug_slow.empty()) ctx.run["debug_slow"] = o.debug_slow;  // TEST-ONLY: these timings are inflated
-  for (const auto& g : generator_names()) ctx.lines[g] = count_generator_lines(generator_sources(g), o.source_dir);
-  for (const auto& g : o.generators) ctx.shaders[g] = static_cast<uint32_t>(generator_sources(g).kernels.size());
+  // Table 3 counts the sources of the path this run takes (FIS: pyramid path and mip strategy).
+  const GeneratorConfig resolved = resolve_fis_config(device, o.generator);
+  for (const auto& g : generator_names())
+    ctx.lines[g] = count_generator_lines(generator_sources(g, resolved), o.source_dir);
+  for (const auto& g : o.generators)
+    ctx.shaders[g] = static_cast<uint32_t>(generator_sources(g, resolved).kernels.size());
   return out;
 }
 
-nlohmann::ordered_json config_json(const TablesOptions& o, const Capture& capture) {
+namespace {
+
+// SPEC §6.1a: the FIS pyramid as this run builds it, and why its mip strategy is the one used.
+ojson pyramid_json(const TablesOptions& o, const DeviceInfo& device) {
+  std::string fallback;
+  const PyramidPath path = effective_pyramid_path(device, o.generator.pyramid, &fallback);
+  const MipStrategy strategy = o.generator.mipmapping.value_or(default_mip_strategy(device));
+  ojson j{{"path", pyramid_path_name(path)}, {"requested_path", pyramid_path_name(o.generator.pyramid)}};
+  if (!fallback.empty()) j["fallback_reason"] = fallback;
+  if (path == PyramidPath::kTexture) {
+    j["image_format"] = kPyramidImageFormat;
+    j["sampler"] = kPyramidSampler;
+    j["lookups"] = "hierarchical warping: texelFetch; every trilinear lookup (moments, PDF, each bisection step): one "
+                   "textureLod";
+    j["mipmapping"] = mip_strategy_name(strategy);
+    j["mipmapping_reason"] = o.generator.mipmapping ? std::string("chosen with --mipmapping")
+                                                    : default_mip_strategy_reason(device);
+    j["mipmapping_default_measured"] = !o.generator.mipmapping && device.type == VK_PHYSICAL_DEVICE_TYPE_CPU;
+  } else {
+    j["image_format"] = "storage buffer of vec4 (RGBA32F), software trilinear filter";
+    j["mipmapping"] = "per-level";
+    j["mipmapping_reason"] = "the buffer path builds its chain with one dispatch per level";
+  }
+  j["sub_texel_precision_bits"] = device.sub_texel_precision_bits;
+  j["mipmap_precision_bits"] = device.mipmap_precision_bits;
+  return j;
+}
+
+}  // namespace
+
+nlohmann::ordered_json config_json(const TablesOptions& o, const Capture& capture, const DeviceInfo& device) {
   const TimingOptions& tm = o.timing;
   ojson views{{"camera_view", ojson{{"source", "gbuffer"},
                                      {"width", capture.gbuffer.width},
@@ -63,6 +99,7 @@ nlohmann::ordered_json config_json(const TablesOptions& o, const Capture& captur
                      "parallel segmented reduction (extra, not in the paper)"},
       {"offset_bits", o.generator.offset_bits},
       {"sampler", "Fibonacci lattice + hierarchical sample warping (SPEC §5)"},
+      {"pyramid", pyramid_json(o, device)},
       {"generators", o.generators},
       {"timing", ojson{{"warmup", tm.warmup},
                        {"min_repetitions", tm.min_repetitions},

@@ -18,6 +18,6 @@ struct RunContext {
 RunContext make_run_context(const DeviceInfo& device, const TablesOptions& options);
 
 // The table JSON's "config" block for one capture.
-nlohmann::ordered_json config_json(const TablesOptions& options, const Capture& capture);
+nlohmann::ordered_json config_json(const TablesOptions& options, const Capture& capture, const DeviceInfo& device);
 
 }  // namespace vsgl

@@ -37,7 +37,7 @@ TableMeasurement measure_table(Device& device, const TablesOptions& o, int numbe
                     {"recorded_on", capture.meta.device},
                     {"tool_version", capture.meta.tool_version},
                     {"brsm_build_ms", capture.meta.brsm_build_ms}};
-  out.config = config_json(o, capture);
+  out.config = config_json(o, capture, device.info());
   t.views["camera_view"] = ViewExtent{capture.gbuffer.width, capture.gbuffer.height};
   t.views["light_view"] = ViewExtent{capture.rsm.width, capture.rsm.height};
 

@@ -58,6 +58,9 @@ BrsmBuild build_brsm_pdf(Device& device, Capture& capture, uint32_t camera_vsgls
   const DeviceView camera = upload_view(device, capture, ViewKind::kCamera);
   FisParams params;
   params.vsgl_count = std::min(camera_vsgls, camera.samplable_texels);
+  // The BRSM PDF is recorded data: the buffer path keeps it bit-exact with the CPU reference and
+  // identical on every device (the texture path's filter precision is the device's).
+  params.pyramid = PyramidPath::kBuffer;
   FisGenerator camera_fis(device, camera, FisVariant::kModified, params);
 
   const ViewImage& rsm = capture.rsm;

@@ -20,15 +20,16 @@ ComputePipeline::ComputePipeline(Device& device, const ComputePipelineDesc& desc
   VkDevice dev = device.get();
   const auto spirv = find_shader(desc.shader);
 
-  std::vector<VkDescriptorSetLayoutBinding> bindings(desc.storage_buffers);
-  for (uint32_t i = 0; i < desc.storage_buffers; ++i) {
+  std::vector<VkDescriptorSetLayoutBinding> bindings(desc.storage_buffers + desc.images.size());
+  for (uint32_t i = 0; i < bindings.size(); ++i) {
+    const bool buffer = i < desc.storage_buffers;
     bindings[i].binding = i;
-    bindings[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    bindings[i].descriptorCount = 1;
+    bindings[i].descriptorType = buffer ? VK_DESCRIPTOR_TYPE_STORAGE_BUFFER : desc.images[i - desc.storage_buffers].type;
+    bindings[i].descriptorCount = buffer ? 1 : desc.images[i - desc.storage_buffers].count;
     bindings[i].stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
   }
   VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-  set_info.bindingCount = desc.storage_buffers;
+  set_info.bindingCount = static_cast<uint32_t>(bindings.size());
   set_info.pBindings = bindings.data();
   VkDescriptorSetLayout set_layout = VK_NULL_HANDLE;
   VK_CHECK(vkCreateDescriptorSetLayout(dev, &set_info, nullptr, &set_layout));
@@ -84,17 +85,32 @@ BindingSet::BindingSet(Device& device, const ComputePipeline& pipeline, std::ini
     : BindingSet(device, pipeline, std::vector<BufferBinding>(buffers), name) {}
 
 BindingSet::BindingSet(Device& device, const ComputePipeline& pipeline, const std::vector<BufferBinding>& buffers,
-                       const std::string& name) {
+                       const std::string& name)
+    : BindingSet(device, pipeline, buffers, {}, name) {}
+
+BindingSet::BindingSet(Device& device, const ComputePipeline& pipeline, const std::vector<BufferBinding>& buffers,
+                       const std::vector<ImageBinding>& images, const std::string& name) {
   VkDevice dev = device.get();
   const uint32_t n = pipeline.desc().storage_buffers;
   if (buffers.size() != n)
     throw std::logic_error("binding set '" + name + "' has " + std::to_string(buffers.size()) + " buffers, " +
                            pipeline.desc().shader + " takes " + std::to_string(n));
-  VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, n == 0 ? 1 : n};
+  const auto& slots = pipeline.desc().images;
+  if (images.size() != slots.size())
+    throw std::logic_error("binding set '" + name + "' has " + std::to_string(images.size()) + " image bindings, " +
+                           pipeline.desc().shader + " takes " + std::to_string(slots.size()));
+  std::vector<VkDescriptorPoolSize> sizes{{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, n == 0 ? 1 : n}};
+  for (std::size_t k = 0; k < slots.size(); ++k) {
+    if (images[k].views.size() != slots[k].count)
+      throw std::logic_error("binding set '" + name + "': image binding " + std::to_string(k) + " has " +
+                             std::to_string(images[k].views.size()) + " views, expected " +
+                             std::to_string(slots[k].count));
+    sizes.push_back({slots[k].type, slots[k].count});
+  }
   VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   pool_info.maxSets = 1;
-  pool_info.poolSizeCount = 1;
-  pool_info.pPoolSizes = &size;
+  pool_info.poolSizeCount = static_cast<uint32_t>(sizes.size());
+  pool_info.pPoolSizes = sizes.data();
   VkDescriptorPool pool = VK_NULL_HANDLE;
   VK_CHECK(vkCreateDescriptorPool(dev, &pool_info, nullptr, &pool));
   pool_ = UniqueHandle<VkDescriptorPool>(dev, pool, vkDestroyDescriptorPool);
@@ -119,7 +135,18 @@ BindingSet::BindingSet(Device& device, const ComputePipeline& pipeline, const st
     writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     writes[i].pBufferInfo = &infos[i];
   }
-  if (n > 0) vkUpdateDescriptorSets(dev, n, writes.data(), 0, nullptr);
+  std::vector<std::vector<VkDescriptorImageInfo>> image_infos(slots.size());
+  for (std::size_t k = 0; k < slots.size(); ++k) {
+    for (VkImageView v : images[k].views) image_infos[k].push_back({images[k].sampler, v, VK_IMAGE_LAYOUT_GENERAL});
+    VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    w.dstSet = set_;
+    w.dstBinding = n + static_cast<uint32_t>(k);
+    w.descriptorCount = slots[k].count;
+    w.descriptorType = slots[k].type;
+    w.pImageInfo = image_infos[k].data();
+    writes.push_back(w);
+  }
+  if (!writes.empty()) vkUpdateDescriptorSets(dev, static_cast<uint32_t>(writes.size()), writes.data(), 0, nullptr);
 }
 
 }  // namespace vsgl

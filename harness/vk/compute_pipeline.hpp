@@ -27,11 +27,19 @@ uint32_t float_bits(float f);
 inline std::vector<SpecializationConstant> work_group_size_1d(uint32_t x) { return {{0, x}}; }
 inline std::vector<SpecializationConstant> work_group_size_2d(uint32_t x, uint32_t y) { return {{0, x}, {1, y}}; }
 
+// An image binding after the storage buffers: a storage image or a combined image sampler,
+// possibly an array of `count` descriptors.
+struct ImageSlot {
+  VkDescriptorType type = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+  uint32_t count = 1;
+};
+
 struct ComputePipelineDesc {
   std::string shader;             // embedded name, e.g. "mip_level.comp"
   uint32_t storage_buffers = 0;   // bindings 0..n-1
   uint32_t push_constant_bytes = 0;
   std::vector<SpecializationConstant> constants;
+  std::vector<ImageSlot> images;  // bindings n, n+1, ...
 };
 
 class ComputePipeline {
@@ -61,13 +69,23 @@ struct BufferBinding {
   BufferBinding(const Buffer& b, VkDeviceSize off, VkDeviceSize r) : buffer(&b), offset(off), range(r) {}
 };
 
-// One descriptor set (with its own small pool) binding buffers to a pipeline's bindings in order.
+// The views (and, for a combined image sampler, the sampler) of one ImageSlot; images stay in
+// VK_IMAGE_LAYOUT_GENERAL.
+struct ImageBinding {
+  std::vector<VkImageView> views;
+  VkSampler sampler = VK_NULL_HANDLE;
+};
+
+// One descriptor set (with its own small pool) binding buffers, then images, to a pipeline's
+// bindings in order.
 class BindingSet {
  public:
   BindingSet(Device& device, const ComputePipeline& pipeline, std::initializer_list<BufferBinding> buffers,
              const std::string& name);
   BindingSet(Device& device, const ComputePipeline& pipeline, const std::vector<BufferBinding>& buffers,
              const std::string& name);
+  BindingSet(Device& device, const ComputePipeline& pipeline, const std::vector<BufferBinding>& buffers,
+             const std::vector<ImageBinding>& images, const std::string& name);
   BindingSet(BindingSet&&) noexcept = default;
   BindingSet& operator=(BindingSet&&) noexcept = default;
   VkDescriptorSet get() const { return set_; }

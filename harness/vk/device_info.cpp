@@ -57,6 +57,11 @@ std::vector<DeviceInfo> enumerate_devices(VkInstance instance) {
     d.max_shared_memory = base.limits.maxComputeSharedMemorySize;
     for (int k = 0; k < 3; ++k) d.max_workgroup_count[k] = base.limits.maxComputeWorkGroupCount[k];
     d.max_workgroup_invocations = base.limits.maxComputeWorkGroupInvocations;
+    d.sub_texel_precision_bits = base.limits.subTexelPrecisionBits;
+    d.mipmap_precision_bits = base.limits.mipmapPrecisionBits;
+    VkFormatProperties rgba32f{};
+    vkGetPhysicalDeviceFormatProperties(handles[i], VK_FORMAT_R32G32B32A32_SFLOAT, &rgba32f);
+    d.rgba32f_features = rgba32f.optimalTilingFeatures;
 
     if (d.api_version < VK_API_VERSION_1_2) {
       d.unusable_reason = "supports Vulkan " + api_version_string(d.api_version) + ", vsgl-bench needs 1.2";

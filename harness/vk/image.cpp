@@ -43,3 +43,84 @@ Image2D::Image2D(Device& device, uint32_t width, uint32_t height, VkFormat forma
 }
 
 }  // namespace vsgl
+
+namespace vsgl {
+
+MipImage::MipImage(Device& device, uint32_t size, uint32_t levels, uint32_t layers, VkFormat format,
+                   VkImageUsageFlags usage, const std::string& name)
+    : format_(format), size_(size), levels_(levels), layers_(layers) {
+  VkDevice dev = device.get();
+  VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+  info.imageType = VK_IMAGE_TYPE_2D;
+  info.format = format;
+  info.extent = {size, size, 1};
+  info.mipLevels = levels;
+  info.arrayLayers = layers;
+  info.samples = VK_SAMPLE_COUNT_1_BIT;
+  info.tiling = VK_IMAGE_TILING_OPTIMAL;
+  info.usage = usage | VK_IMAGE_USAGE_TRANSFER_DST_BIT;  // the clear at creation
+  info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+  info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+  VkImage image = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateImage(dev, &info, nullptr, &image));
+  image_ = UniqueHandle<VkImage>(dev, image, vkDestroyImage);
+  device.set_name(image, VK_OBJECT_TYPE_IMAGE, name);
+
+  VkMemoryRequirements req{};
+  vkGetImageMemoryRequirements(dev, image, &req);
+  memory_ = device.allocate_memory(req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, 0, "image " + name);
+  VK_CHECK(vkBindImageMemory(dev, image, memory_.get(), 0));
+
+  auto make_view = [&](uint32_t base, uint32_t count, const std::string& view_name) {
+    VkImageViewCreateInfo v{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    v.image = image;
+    v.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
+    v.format = format;
+    v.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, base, count, 0, layers};
+    VkImageView handle = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateImageView(dev, &v, nullptr, &handle));
+    device.set_name(handle, VK_OBJECT_TYPE_IMAGE_VIEW, view_name);
+    return UniqueHandle<VkImageView>(dev, handle, vkDestroyImageView);
+  };
+  view_ = make_view(0, levels, name + ".view");
+  for (uint32_t l = 0; l < levels; ++l) level_views_.push_back(make_view(l, 1, name + ".level" + std::to_string(l)));
+
+  // Untimed: every texel zero (the padding of the virtual square stays so), layout GENERAL.
+  device.submit_and_wait(
+      [&](VkCommandBuffer cmd) {
+        const VkImageSubresourceRange all{VK_IMAGE_ASPECT_COLOR_BIT, 0, levels, 0, layers};
+        VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+        b.srcAccessMask = 0;
+        b.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+        b.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+        b.newLayout = VK_IMAGE_LAYOUT_GENERAL;
+        b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+        b.image = image;
+        b.subresourceRange = all;
+        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0,
+                             nullptr, 1, &b);
+        const VkClearColorValue zero{};
+        vkCmdClearColorImage(cmd, image, VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &all);
+        VkMemoryBarrier m{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+        m.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+        m.dstAccessMask = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
+        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 1, &m, 0,
+                             nullptr, 0, nullptr);
+      },
+      "clearing " + name);
+}
+
+Sampler::Sampler(Device& device, const VkSamplerCreateInfo& info, const std::string& name) {
+  VkSampler sampler = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateSampler(device.get(), &info, nullptr, &sampler));
+  sampler_ = UniqueHandle<VkSampler>(device.get(), sampler, vkDestroySampler);
+  device.set_name(sampler, VK_OBJECT_TYPE_SAMPLER, name);
+}
+
+VkFormatFeatureFlags optimal_format_features(const Device& device, VkFormat format) {
+  VkFormatProperties props{};
+  vkGetPhysicalDeviceFormatProperties(device.physical(), format, &props);
+  return props.optimalTilingFeatures;
+}
+
+}  // namespace vsgl

@@ -3,6 +3,7 @@
 #include <vulkan/vulkan.h>
 
 #include <string>
+#include <vector>
 
 #include "harness/vk/unique_handle.hpp"
 
@@ -31,5 +32,50 @@ class Image2D {
   VkFormat format_;
   uint32_t width_, height_;
 };
+
+}  // namespace vsgl
+
+namespace vsgl {
+
+// A 2D array image with a full mip chain: the sampled-image pyramid of SPEC §6.1a (array layers =
+// moment layers). One view of every level and layer (for sampling) and one per level (for
+// storage writes). Created in VK_IMAGE_LAYOUT_GENERAL with every texel zero, and kept in that
+// layout, so the passes need only memory barriers.
+class MipImage {
+ public:
+  MipImage(Device& device, uint32_t size, uint32_t levels, uint32_t layers, VkFormat format, VkImageUsageFlags usage,
+           const std::string& name);
+  MipImage(MipImage&&) noexcept = default;
+  MipImage& operator=(MipImage&&) noexcept = default;
+
+  VkImage get() const { return image_.get(); }
+  VkImageView view() const { return view_.get(); }                    // all levels and layers
+  VkImageView level_view(uint32_t level) const { return level_views_.at(level).get(); }
+  VkFormat format() const { return format_; }
+  uint32_t size() const { return size_; }  // side of level 0 (square)
+  uint32_t levels() const { return levels_; }
+  uint32_t layers() const { return layers_; }
+
+ private:
+  UniqueHandle<VkDeviceMemory> memory_;
+  UniqueHandle<VkImage> image_;
+  UniqueHandle<VkImageView> view_;
+  std::vector<UniqueHandle<VkImageView>> level_views_;
+  VkFormat format_;
+  uint32_t size_, levels_, layers_;
+};
+
+// A sampler object (RAII).
+class Sampler {
+ public:
+  Sampler(Device& device, const VkSamplerCreateInfo& info, const std::string& name);
+  VkSampler get() const { return sampler_.get(); }
+
+ private:
+  UniqueHandle<VkSampler> sampler_;
+};
+
+// Which features `format` has with optimal tiling on the device.
+VkFormatFeatureFlags optimal_format_features(const Device& device, VkFormat format);
 
 }  // namespace vsgl

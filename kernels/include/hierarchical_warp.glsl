@@ -2,7 +2,11 @@
 #define HIERARCHICAL_WARP_GLSL
 // Kernel centres (SPEC §5): a Fibonacci lattice warped down the PDF pyramid (layer 2, .w = q).
 // C++ twin: reference_samples() in harness/reference/fis_reference.cpp, float for float.
-#include "pyramid.glsl"
+// The includer chooses the pyramid's accessors first: pyramid.glsl (storage buffer) or
+// pyramid_texture.glsl (sampled image, SPEC §6.1a).
+#ifndef PYRAMID_ACCESSORS
+#error "include pyramid.glsl or pyramid_texture.glsl before hierarchical_warp.glsl"
+#endif
 
 const uint PDF_LAYER = 2u;
 

@@ -1,37 +1,11 @@
 #ifndef PYRAMID_GLSL
 #define PYRAMID_GLSL
-// Addressing of a mip pyramid over the virtual square (SPEC §4; C++ twin harness/math/virtual_square.hpp).
-// The includer declares the buffer `pyramid_texels` (vec4) holding PYRAMID_LAYERS layers of
-// `pyramid_total` texels each: layer 0 = (Phi.rgb, w), 1 = (w P, w |P|^2), 2 = (w rbar, q).
-// Call pyramid_init() first in main().
-
-uint pyramid_width;    // W
-uint pyramid_height;   // H
-uint pyramid_size;     // S = next pow2 >= max(W, H)
-uint pyramid_levels;   // L = log2 S
-uint pyramid_total;    // texels of all levels of one layer
-uint pyramid_offset[16];
-
-uint pyramid_level_width(uint l) { return ((pyramid_width - 1u) >> l) + 1u; }
-uint pyramid_level_height(uint l) { return ((pyramid_height - 1u) >> l) + 1u; }
-
-void pyramid_init(uint width, uint height) {
-  pyramid_width = width;
-  pyramid_height = height;
-  uint side = max(width, height);
-  pyramid_size = 1u;
-  pyramid_levels = 0u;
-  while (pyramid_size < side) {
-    pyramid_size <<= 1u;
-    ++pyramid_levels;
-  }
-  uint offset = 0u;
-  for (uint l = 0u; l <= pyramid_levels; ++l) {
-    pyramid_offset[l] = offset;
-    offset += pyramid_level_width(l) * pyramid_level_height(l);
-  }
-  pyramid_total = offset;
-}
+#define PYRAMID_ACCESSORS
+// The storage-buffer pyramid of SPEC §4 with software filtering (`--pyramid buffer`).
+// The includer declares the buffer `pyramid_texels` (vec4) holding 3 layers of `pyramid_total`
+// texels each: layer 0 = (Phi.rgb, w), 1 = (w P, w |P|^2), 2 = (w rbar, q).
+// pyramid_texture.glsl offers the same functions on a sampled image (SPEC §6.1a).
+#include "pyramid_layout.glsl"
 
 // Texel (x, y) of a level; zero outside its in-bounds extent (the rest of the virtual square).
 vec4 pyramid_texel(uint layer, uint level, ivec2 p) {

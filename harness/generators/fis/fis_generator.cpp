@@ -1,31 +1,31 @@
 #include "harness/generators/fis/fis_generator.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <iostream>
 
 #include "harness/vk/command_stream.hpp"
 #include "harness/vk/device.hpp"
+#include "harness/vk/device_info.hpp"
 #include "harness/generators/device_view.hpp"
+#include "harness/generators/generator_descriptor.hpp"
 #include "harness/core/error.hpp"
 #include "harness/math/vsgl_math.hpp"
+#include "kernels/include/interface/fis.h"
 
 namespace vsgl {
 namespace {
 
-constexpr uint32_t kMomentLayers = 3;
-constexpr uint32_t kTile = 16;            // 16x16 threads per group in the per-texel passes
-constexpr uint32_t kSamplingGroup = 64;   // threads per group in filtered sampling
+using gpu::FisAdditionalPush;
+using gpu::FisMipPush;
+using gpu::FisSamplingPush;
+using gpu::kFisSamplingGroup;
+using gpu::kFisSpdTileLevels;
+using gpu::kFisTile;
 
-struct AdditionalPush {
-  uint32_t width, height, pyramid_total, camera_view;
-  glm::vec4 source_position;
-};
-struct MipPush {
-  uint32_t width, height, source_level;
-};
-struct SamplingPush {
-  uint32_t width, height, count, offset_bits;
-  float K;
-};
+constexpr uint32_t kMomentLayers = 3;
+constexpr uint32_t kSpdLevelSlots = 16;  // levels[] of fis_mip_single_pass.comp
 
 FisParams checked(const FisParams& p, const DeviceView& view) {
   if (p.vsgl_count == 0) throw InputError("N = 0: at least one VSGL is needed");
@@ -38,25 +38,138 @@ FisParams checked(const FisParams& p, const DeviceView& view) {
   return p;
 }
 
+std::vector<SpecializationConstant> tile_constants() { return {{0, kFisTile}, {1, kFisTile}}; }
+
+// Levels 0..L of the square, in-bounds texels of levels 6..L (the single pass's hand-over).
+VkDeviceSize spd_mid_texels(const VirtualSquare& sq) {
+  VkDeviceSize n = 0;
+  for (uint32_t l = kFisSpdTileLevels; l <= sq.levels; ++l) n += sq.level_texels(l);
+  return std::max<VkDeviceSize>(n, 1);
+}
+
 }  // namespace
+
+std::string texture_path_unsupported_reason(const DeviceInfo& info) {
+  const VkFormatFeatureFlags f = info.rgba32f_features;
+  if (!(f & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT))
+    return "the device does not report VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT for RGBA32F";
+  if (!(f & VK_FORMAT_FEATURE_STORAGE_IMAGE_BIT)) return "the device cannot write RGBA32F storage images";
+  return {};
+}
+
+MipStrategy default_mip_strategy(const DeviceInfo& info) {
+  // Fixed per kind of device, never tuned at run time, so runs stay comparable (SPEC §6.1a).
+  // CPU devices: the fastest correct strategy measured on lavapipe (see default_mip_strategy_reason).
+  if (info.type == VK_PHYSICAL_DEVICE_TYPE_CPU) return MipStrategy::kBlit;
+  return MipStrategy::kSinglePass;
+}
+
+std::string default_mip_strategy_reason(const DeviceInfo& info) {
+  if (info.type == VK_PHYSICAL_DEVICE_TYPE_CPU)
+    return "fastest correct strategy measured on lavapipe (Mesa 22.3.6, llvmpipe) with vsgl-mipbench on the full-size "
+           "atrium and conference captures: blit 360/10 ms (camera/light view, atrium), per-level 766/145 ms, "
+           "single-pass 2327/231 ms (lavapipe runs the last group's levels 7..L on one thread)";
+  return "not measured on this kind of device: the single-pass downsampler is the default for GPUs by design "
+         "(one dispatch, no barrier per level); measure with vsgl-mipbench";
+}
+
+PyramidPath effective_pyramid_path(const DeviceInfo& info, PyramidPath requested, std::string* reason) {
+  if (requested == PyramidPath::kBuffer) return requested;
+  const std::string why = texture_path_unsupported_reason(info);
+  if (why.empty()) return requested;
+  if (reason != nullptr) *reason = why;
+  return PyramidPath::kBuffer;
+}
+
+GeneratorConfig resolve_fis_config(const DeviceInfo& info, GeneratorConfig config) {
+  config.pyramid = effective_pyramid_path(info, config.pyramid);
+  if (!config.mipmapping) config.mipmapping = default_mip_strategy(info);
+  return config;
+}
 
 FisGenerator::FisGenerator(Device& device, const DeviceView& view, FisVariant variant, const FisParams& params)
     : view_(view),
       variant_(variant),
       params_(checked(params, view)),
-      pyramid_(device, VkDeviceSize{kMomentLayers} * view.square.total_texels() * sizeof(glm::vec4),
-               MemoryUsage::kDeviceLocal, name() + "." + view.label + ".pyramid"),
+      path_(PyramidPath::kBuffer),
+      strategy_(params.mipmapping.value_or(default_mip_strategy(device.info()))),
       vsgls_(device, VkDeviceSize{params.vsgl_count} * sizeof(VsglRecord), MemoryUsage::kDeviceLocal,
-             name() + "." + view.label + ".vsgls"),
-      additional_(device, {"fis_additional.comp", 2, sizeof(AdditionalPush), {}}),
-      mip_level_(device, {"fis_mip_level.comp", 1, sizeof(MipPush), {}}),
-      filtered_sampling_(device, {"fis_filtered_sampling.comp", 2, sizeof(SamplingPush),
-                                  {{0, kSamplingGroup},
-                                   {1, variant == FisVariant::kTok15 ? 0u : 1u},
-                                   {2, params.bisection_iterations}}}),
-      additional_set_(device, additional_, {view.texels, pyramid_}, name() + ".additional"),
-      mip_set_(device, mip_level_, {pyramid_}, name() + ".mipmapping"),
-      sampling_set_(device, filtered_sampling_, {pyramid_, vsgls_}, name() + ".filtered_sampling") {}
+             name() + "." + view.label + ".vsgls") {
+  std::string fallback;
+  path_ = effective_pyramid_path(device.info(), params.pyramid, &fallback);
+  if (!fallback.empty())
+    std::cerr << "vsgl-bench: " << fallback << "; " << name() << " uses the storage-buffer pyramid instead\n";
+  const VirtualSquare& sq = view.square;
+  const std::vector<SpecializationConstant> sampling_constants{
+      {0, kFisSamplingGroup}, {1, variant == FisVariant::kTok15 ? 0u : 1u}, {2, params.bisection_iterations}};
+  const std::string base = name() + "." + view.label;
+
+  if (path_ == PyramidPath::kBuffer) {
+    pyramid_ = Buffer(device, VkDeviceSize{kMomentLayers} * sq.total_texels() * sizeof(glm::vec4),
+                      MemoryUsage::kDeviceLocal, base + ".pyramid");
+    additional_.emplace(device, ComputePipelineDesc{"fis_additional.comp", 2, sizeof(FisAdditionalPush), tile_constants()});
+    mip_.emplace(device, ComputePipelineDesc{"fis_mip_level.comp", 1, sizeof(FisMipPush), tile_constants()});
+    filtered_sampling_.emplace(
+        device, ComputePipelineDesc{"fis_filtered_sampling.comp", 2, sizeof(FisSamplingPush), sampling_constants});
+    additional_set_.emplace(device, *additional_, std::vector<BufferBinding>{view.texels, pyramid_}, base + ".additional");
+    mip_sets_.emplace_back(device, *mip_, std::vector<BufferBinding>{pyramid_}, base + ".mipmapping");
+    sampling_set_.emplace(device, *filtered_sampling_, std::vector<BufferBinding>{pyramid_, vsgls_},
+                          base + ".filtered_sampling");
+    return;
+  }
+
+  if (strategy_ == MipStrategy::kBlit) {
+    const VkFormatFeatureFlags need = VK_FORMAT_FEATURE_BLIT_SRC_BIT | VK_FORMAT_FEATURE_BLIT_DST_BIT;
+    if ((device.info().rgba32f_features & need) != need)
+      throw InputError("--mipmapping blit: the device cannot blit RGBA32F images (use single-pass or per-level)");
+  }
+  image_.emplace(device, sq.size, sq.levels + 1, kMomentLayers, VK_FORMAT_R32G32B32A32_SFLOAT,
+                 VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                     VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                 base + ".pyramid_image");
+  VkSamplerCreateInfo si{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+  si.magFilter = VK_FILTER_LINEAR;
+  si.minFilter = VK_FILTER_LINEAR;
+  si.mipmapMode = VK_SAMPLER_MIPMAP_MODE_LINEAR;
+  si.addressModeU = si.addressModeV = si.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER;
+  si.borderColor = VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK;  // zero outside the square (SPEC §4)
+  si.minLod = 0.0f;
+  si.maxLod = static_cast<float>(sq.levels);
+  si.unnormalizedCoordinates = VK_FALSE;
+  sampler_.emplace(device, si, base + ".sampler");
+
+  const ImageSlot storage{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1};
+  additional_.emplace(device, ComputePipelineDesc{"fis_additional_texture.comp", 1, sizeof(FisAdditionalPush),
+                                                  tile_constants(), {storage}});
+  additional_set_.emplace(device, *additional_, std::vector<BufferBinding>{view.texels},
+                          std::vector<ImageBinding>{{{image_->level_view(0)}}}, base + ".additional");
+  filtered_sampling_.emplace(device,
+                             ComputePipelineDesc{"fis_filtered_sampling_texture.comp", 1, sizeof(FisSamplingPush),
+                                                 sampling_constants, {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}}});
+  sampling_set_.emplace(device, *filtered_sampling_, std::vector<BufferBinding>{vsgls_},
+                        std::vector<ImageBinding>{{{image_->view()}, sampler_->get()}}, base + ".filtered_sampling");
+
+  if (strategy_ == MipStrategy::kSinglePass) {
+    if (sq.levels + 1 > kSpdLevelSlots) throw InputError("the single-pass downsampler supports at most 16 mip levels");
+    spd_mid_ = Buffer(device, VkDeviceSize{kMomentLayers} * spd_mid_texels(sq) * sizeof(glm::vec4),
+                      MemoryUsage::kDeviceLocal, base + ".spd_mid");
+    spd_counter_ = Buffer(device, sizeof(uint32_t), MemoryUsage::kDeviceLocal, base + ".spd_counter");
+    fill_zero(device, spd_counter_);  // untimed; the last group of every run resets it to zero
+    mip_.emplace(device, ComputePipelineDesc{"fis_mip_single_pass.comp", 2, sizeof(FisMipPush), tile_constants(),
+                                             {storage, {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kSpdLevelSlots}}});
+    ImageBinding levels;
+    for (uint32_t l = 0; l < kSpdLevelSlots; ++l) levels.views.push_back(image_->level_view(std::min(l, sq.levels)));
+    mip_sets_.emplace_back(device, *mip_, std::vector<BufferBinding>{spd_mid_, spd_counter_},
+                           std::vector<ImageBinding>{{{image_->level_view(0)}}, levels}, base + ".mipmapping");
+  } else if (strategy_ == MipStrategy::kPerLevel) {
+    mip_.emplace(device, ComputePipelineDesc{"fis_mip_level_texture.comp", 0, sizeof(FisMipPush), tile_constants(),
+                                             {storage, storage}});
+    for (uint32_t l = 0; l < sq.levels; ++l)
+      mip_sets_.emplace_back(device, *mip_, std::vector<BufferBinding>{},
+                             std::vector<ImageBinding>{{{image_->level_view(l)}}, {{image_->level_view(l + 1)}}},
+                             base + ".mipmapping.level" + std::to_string(l));
+  }
+}
 
 void FisGenerator::record(CommandStream& stream, const std::function<void(VkCommandBuffer)>& boundary) {
   boundary(stream.get());
@@ -68,30 +181,101 @@ void FisGenerator::record(CommandStream& stream, const std::function<void(VkComm
   boundary(stream.get());
 }
 
-// Moment layers of every texel into pyramid level 0 (SPEC §4, §7).
+// Moment layers of every texel into pyramid level 0 (SPEC §4, §7); only in-bounds texels.
 void FisGenerator::record_additional(CommandStream& stream) {
   const VirtualSquare& sq = view_.square;
-  const AdditionalPush push{sq.width, sq.height, sq.total_texels(), view_.kind == ViewKind::kCamera ? 1u : 0u,
-                            glm::vec4(view_.source_position, 0.0f)};
-  stream.dispatch(additional_, additional_set_, push, div_up(sq.width, kTile), div_up(sq.height, kTile));
+  FisAdditionalPush push{};
+  push.source_position = glm::vec4(view_.source_position, 0.0f);
+  push.width = sq.width;
+  push.height = sq.height;
+  push.pyramid_total = sq.total_texels();
+  push.camera_view = view_.kind == ViewKind::kCamera ? 1u : 0u;
+  stream.dispatch(*additional_, *additional_set_, push, div_up(sq.width, kFisTile), div_up(sq.height, kFisTile));
 }
 
-// Levels 1..L, each the 2x2 mean of the one below; a barrier orders consecutive levels.
+// Levels 1..L, each texel the 2x2 mean of its children (SPEC §4).
 void FisGenerator::record_mipmapping(CommandStream& stream) {
   const VirtualSquare& sq = view_.square;
+  if (path_ == PyramidPath::kBuffer || strategy_ == MipStrategy::kPerLevel) {
+    // One dispatch per level; a barrier orders consecutive levels.
+    for (uint32_t l = 0; l < sq.levels; ++l) {
+      if (l > 0) stream.compute_barrier();
+      const FisMipPush push{sq.width, sq.height, l, 0};
+      const BindingSet& set = path_ == PyramidPath::kBuffer ? mip_sets_.front() : mip_sets_[l];
+      stream.dispatch(*mip_, set, push, div_up(sq.level_width(l + 1), kFisTile), div_up(sq.level_height(l + 1), kFisTile));
+    }
+    return;
+  }
+  if (strategy_ == MipStrategy::kSinglePass) {
+    // One group per 64x64 tile of level 0 (= one per in-bounds level-6 texel); one group covers a
+    // square of at most 64 texels.
+    const uint32_t gx = sq.levels > kFisSpdTileLevels ? sq.level_width(kFisSpdTileLevels) : 1;
+    const uint32_t gy = sq.levels > kFisSpdTileLevels ? sq.level_height(kFisSpdTileLevels) : 1;
+    const FisMipPush push{sq.width, sq.height, 0, gx * gy};
+    stream.dispatch(*mip_, mip_sets_.front(), push, gx, gy);
+    return;
+  }
+  // vkCmdBlitImage chain. A linear 2:1 blit samples each destination texel exactly between its
+  // four sources (weights 1/2 x 1/2), i.e. their mean. An odd extent does not halve exactly, so
+  // each blit reads the even-rounded region 2*ceil(w/2) x 2*ceil(h/2) of level l — its extra
+  // column/row is the zero padding of the virtual square — and writes only the in-bounds extent
+  // of level l + 1: the §4 mean with missing children zero (summation order is the driver's).
   for (uint32_t l = 0; l < sq.levels; ++l) {
-    if (l > 0) stream.compute_barrier();
-    const MipPush push{sq.width, sq.height, l};
-    stream.dispatch(mip_level_, mip_set_, push, div_up(sq.level_width(l + 1), kTile),
-                    div_up(sq.level_height(l + 1), kTile));
+    if (l > 0) {
+      VkMemoryBarrier b{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+      b.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+      b.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+      vkCmdPipelineBarrier(stream.get(), VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &b, 0,
+                           nullptr, 0, nullptr);
+    }
+    const auto w = static_cast<int32_t>(sq.level_width(l + 1));
+    const auto h = static_cast<int32_t>(sq.level_height(l + 1));
+    VkImageBlit region{};
+    region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, l, 0, kMomentLayers};
+    region.srcOffsets[1] = {2 * w, 2 * h, 1};
+    region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, l + 1, 0, kMomentLayers};
+    region.dstOffsets[1] = {w, h, 1};
+    vkCmdBlitImage(stream.get(), image_->get(), VK_IMAGE_LAYOUT_GENERAL, image_->get(), VK_IMAGE_LAYOUT_GENERAL, 1,
+                   &region, VK_FILTER_LINEAR);
   }
 }
 
 // One thread per VSGL: sample, choose the level, fetch, build (Eq. 1/4 or Eq. 3/5).
 void FisGenerator::record_filtered_sampling(CommandStream& stream) {
   const VirtualSquare& sq = view_.square;
-  const SamplingPush push{sq.width, sq.height, params_.vsgl_count, params_.offset_bits, params_.K};
-  stream.dispatch(filtered_sampling_, sampling_set_, push, div_up(params_.vsgl_count, kSamplingGroup));
+  const FisSamplingPush push{sq.width, sq.height, params_.vsgl_count, params_.offset_bits, params_.K};
+  stream.dispatch(*filtered_sampling_, *sampling_set_, push, div_up(params_.vsgl_count, kFisSamplingGroup));
+}
+
+std::vector<glm::vec4> FisGenerator::download_pyramid(Device& device) const {
+  const VirtualSquare& sq = view_.square;
+  const std::size_t count = std::size_t{kMomentLayers} * sq.total_texels();
+  if (path_ == PyramidPath::kBuffer) return download_vector<glm::vec4>(device, pyramid_, count);
+  Buffer readback(device, count * sizeof(glm::vec4), MemoryUsage::kReadback, name() + ".pyramid_readback");
+  std::vector<VkBufferImageCopy> regions;
+  for (uint32_t layer = 0; layer < kMomentLayers; ++layer)
+    for (uint32_t l = 0; l <= sq.levels; ++l) {
+      VkBufferImageCopy r{};
+      r.bufferOffset = (VkDeviceSize{layer} * sq.total_texels() + sq.level_offset(l)) * sizeof(glm::vec4);
+      r.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, l, layer, 1};
+      r.imageExtent = {sq.level_width(l), sq.level_height(l), 1};
+      regions.push_back(r);
+    }
+  device.submit_and_wait(
+      [&](VkCommandBuffer cmd) {
+        CommandStream(cmd).full_barrier();
+        vkCmdCopyImageToBuffer(cmd, image_->get(), VK_IMAGE_LAYOUT_GENERAL, readback.get(),
+                               static_cast<uint32_t>(regions.size()), regions.data());
+        VkMemoryBarrier b{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+        b.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+        b.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &b, 0, nullptr, 0,
+                             nullptr);
+      },
+      "reading back " + name() + "'s pyramid image");
+  std::vector<glm::vec4> out(count);
+  std::memcpy(out.data(), readback.mapped(), count * sizeof(glm::vec4));
+  return out;
 }
 
 }  // namespace vsgl

@@ -1,23 +1,66 @@
 #pragma once
 // The FIS generators on the GPU (SPEC §6.1): `fis_tok15` [Tok15] and `fis_modified` (the paper's
 // "Ours"). Phases, as in Table 1: additional -> mipmapping -> filtered_sampling. The variants
-// share every pass; the kernel fis_filtered_sampling.comp differs only in choose_level() and
-// estimate_power(), selected by a specialization constant.
+// share every pass; the kernel include/fis_filtered_sampling.glsl differs only in choose_level()
+// and estimate_power(), selected by a specialization constant.
+//
+// Two pyramid paths (SPEC §6.1a): `texture` (default) keeps the moment layers in a sampled
+// RGBA32F 2D-array image with a full mip chain and filters in hardware — one textureLod per
+// trilinear lookup, as the paper's GPU did; `buffer` keeps them in a storage buffer with software
+// filtering, bit-exact with the CPU reference. The texture path builds its mip chain with one of
+// three strategies (MipStrategy): a single-pass downsampler, the API's vkCmdBlitImage chain, or
+// one dispatch per level.
 #include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <vulkan/vulkan.h>
 
 #include "harness/vk/buffer.hpp"
 #include "harness/vk/compute_pipeline.hpp"
+#include "harness/vk/image.hpp"
 #include "harness/math/fis_params.hpp"
 #include "harness/generators/vsgl_generator.hpp"
 
 namespace vsgl {
 
 class Device;
+struct DeviceInfo;
 struct DeviceView;
+
+// The image format and sampler of the texture path, and the device limits that bound how
+// exactly its filter can agree with the CPU reference (recorded in every table, SPEC §6.1a).
+struct TextureFilterInfo {
+  VkFormat format = VK_FORMAT_R32G32B32A32_SFLOAT;
+  uint32_t sub_texel_precision_bits = 0;
+  uint32_t mipmap_precision_bits = 0;
+};
+inline constexpr const char* kPyramidImageFormat = "R32G32B32A32_SFLOAT";
+inline constexpr const char* kPyramidSampler =
+    "min/mag LINEAR, mipmap LINEAR, clamp to border (transparent black), normalized coordinates";
+
+// Why the device cannot run the texture path (empty: it can): RGBA32F must allow linear
+// filtering when sampled and storage-image writes.
+std::string texture_path_unsupported_reason(const DeviceInfo& info);
+// The mipmapping strategy a run uses when none is given, by kind of device, and why (measured on
+// lavapipe for CPU devices; the single-pass downsampler, unmeasured here, for GPUs).
+MipStrategy default_mip_strategy(const DeviceInfo& info);
+std::string default_mip_strategy_reason(const DeviceInfo& info);
+// The pyramid path a run takes for `requested` on this device: the texture path falls back to
+// the buffer path (with `reason` set) when the device cannot filter RGBA32F.
+PyramidPath effective_pyramid_path(const DeviceInfo& info, PyramidPath requested, std::string* reason = nullptr);
+
+struct GeneratorConfig;
+// `config` with the FIS pyramid path this device takes and its mipmapping strategy filled in
+// (what Table 3 and the JSON report).
+GeneratorConfig resolve_fis_config(const DeviceInfo& info, GeneratorConfig config);
 
 class FisGenerator : public VsglGenerator {
  public:
-  // Throws InputError for N = 0, N larger than the view's samplable texels, or K <= 0.
+  // Throws InputError for N = 0, N larger than the view's samplable texels, K <= 0, or the blit
+  // strategy on a device that cannot blit RGBA32F with a linear filter.
   FisGenerator(Device& device, const DeviceView& view, FisVariant variant, const FisParams& params);
 
   std::string name() const override { return fis_variant_name(variant_); }
@@ -26,25 +69,39 @@ class FisGenerator : public VsglGenerator {
   const Buffer& vsgls() const override { return vsgls_; }
   uint32_t vsgl_count() const override { return params_.vsgl_count; }
 
-  // The 3 moment layers' pyramids (layer-major, VirtualSquare layout), for verify.
-  const Buffer& pyramid() const { return pyramid_; }
+  PyramidPath pyramid_path() const { return path_; }
+  MipStrategy mip_strategy() const { return strategy_; }
+  // The 3 moment layers' pyramids (layer-major, VirtualSquare layout), read back from either
+  // path's storage, for verify. Submits and waits.
+  std::vector<glm::vec4> download_pyramid(Device& device) const;
+
+  // Records only the mipmapping phase (the microbenchmark times it alone).
+  void record_mipmapping(CommandStream& stream);
 
  private:
   void record_additional(CommandStream& stream);
-  void record_mipmapping(CommandStream& stream);
   void record_filtered_sampling(CommandStream& stream);
 
   const DeviceView& view_;
   FisVariant variant_;
   FisParams params_;
-  Buffer pyramid_;
+  PyramidPath path_;
+  MipStrategy strategy_;
   Buffer vsgls_;
-  ComputePipeline additional_;
-  ComputePipeline mip_level_;
-  ComputePipeline filtered_sampling_;
-  BindingSet additional_set_;
-  BindingSet mip_set_;
-  BindingSet sampling_set_;
+  // Buffer path.
+  Buffer pyramid_;
+  // Texture path.
+  std::optional<MipImage> image_;
+  std::optional<Sampler> sampler_;
+  Buffer spd_mid_;      // single pass: level-6 and coarser texels
+  Buffer spd_counter_;  // single pass: groups finished (reset by the last)
+  // Pipelines and sets of the chosen path.
+  std::optional<ComputePipeline> additional_;
+  std::optional<ComputePipeline> mip_;
+  std::optional<ComputePipeline> filtered_sampling_;
+  std::optional<BindingSet> additional_set_;
+  std::vector<BindingSet> mip_sets_;  // one (single pass / buffer) or one per level (per-level)
+  std::optional<BindingSet> sampling_set_;
 };
 
 }  // namespace vsgl

@@ -1,0 +1,134 @@
+// vsgl-mipbench: the FIS texture path's three mipmapping strategies (SPEC §6.1a) timed alone on
+// both views of the paper's captures, as Google Benchmark results with manual time = the GPU
+// timestamps around the `mipmapping` phase: single-pass (one dispatch, the last group finishes the
+// small levels), blit (the vkCmdBlitImage chain) and per-level (one dispatch per level). This is
+// the measurement behind each device kind's default strategy (fis_generator.cpp).
+//
+//   vsgl-mipbench [google benchmark flags] [--vsgl_captures=DIR] [--vsgl_device=D]
+//                 [--vsgl_tables=1,2] [--vsgl_replays=N]   (replays per benchmark, default 30)
+//
+// Level 0 is built once (untimed) by a full run of the generator; each replay rebuilds levels
+// 1..L from it, which leaves the pyramid as it was, so replays are alike.
+#include <benchmark/benchmark.h>
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "bench/cli/args.hpp"
+#include "bench/cli/exit_codes.hpp"
+#include "bench/cli/gbench_tokens.hpp"
+#include "bench/cli/gpu_session.hpp"
+#include "harness/core/error.hpp"
+#include "harness/generators/device_view.hpp"
+#include "harness/generators/fis/fis_generator.hpp"
+#include "harness/report/tables_run.hpp"
+#include "harness/scene/capture_provisioning.hpp"
+#include "harness/timing/run_provenance.hpp"
+#include "harness/timing/timing_runner.hpp"
+#include "harness/vk/command_stream.hpp"
+#include "harness/vk/device.hpp"
+
+namespace {
+
+using namespace vsgl;
+
+// Only the mipmapping phase of a built FIS generator, as a one-phase generator for TimingRunner.
+class MipmappingOnly : public VsglGenerator {
+ public:
+  explicit MipmappingOnly(std::unique_ptr<FisGenerator> fis) : fis_(std::move(fis)) {}
+  std::string name() const override { return fis_->name(); }
+  std::vector<std::string> phases() const override { return {"mipmapping"}; }
+  void record(CommandStream& stream, const std::function<void(VkCommandBuffer)>& boundary) override {
+    boundary(stream.get());
+    fis_->record_mipmapping(stream);
+    boundary(stream.get());
+  }
+  const Buffer& vsgls() const override { return fis_->vsgls(); }
+  uint32_t vsgl_count() const override { return fis_->vsgl_count(); }
+
+ private:
+  std::unique_ptr<FisGenerator> fis_;
+};
+
+struct TableState {
+  Capture capture;
+  std::unique_ptr<DeviceView> camera, light;
+  std::vector<std::unique_ptr<VsglGenerator>> cases;
+  std::unique_ptr<TimingRunner> runner;
+};
+
+int run(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  cli::Args args(cli::gbench_tokens(argc, argv));
+  const std::string captures = args.string("--captures", "captures");
+  std::vector<int> tables;
+  for (const auto& s : args.list("--tables", "1,2")) {
+    if (s != "1" && s != "2") throw UsageError("--vsgl_tables takes 1, 2 or 1,2, not '" + s + "'");
+    tables.push_back(s == "1" ? 1 : 2);
+  }
+  const uint32_t replays = args.u32("--replays", 30, 1);
+  cli::GpuSession session = cli::GpuSession::open(args);
+  args.finish();
+  Device& device = session.device();
+  const DeviceInfo& info = device.info();
+  require_timestamps(info);
+  if (const std::string why = texture_path_unsupported_reason(info); !why.empty())
+    throw DeviceError("the texture path cannot run on " + info.name + ": " + why);
+  const nlohmann::json build = build_json(VSGL_SOURCE_DIR);
+  benchmark::AddCustomContext("vsgl_device", info.name);
+  benchmark::AddCustomContext("vsgl_device_type", device_type_name(info.type));
+  benchmark::AddCustomContext("vsgl_driver", info.driver_name + " " + driver_version_string(info) + " " + info.driver_info);
+  benchmark::AddCustomContext("vsgl_git_commit", build["git_commit"].get<std::string>());
+  benchmark::AddCustomContext("vsgl_default_mipmapping", mip_strategy_name(default_mip_strategy(info)));
+
+  std::vector<std::unique_ptr<TableState>> states;
+  for (int number : tables) {
+    auto t = std::make_unique<TableState>();
+    const std::string scene = table_scene(number);
+    const std::filesystem::path dir = std::filesystem::path(captures) / scene;
+    t->capture = provide_capture(device, scene, RecordSizes{}, dir).capture;
+    benchmark::AddCustomContext("vsgl_table" + std::to_string(number) + "_capture", dir.string());
+    benchmark::AddCustomContext("vsgl_table" + std::to_string(number) + "_capture_hashes",
+                                capture_hashes_json(t->capture).dump());
+    t->camera = std::make_unique<DeviceView>(upload_view(device, t->capture, ViewKind::kCamera));
+    t->light = std::make_unique<DeviceView>(upload_view(device, t->capture, ViewKind::kLight));
+    t->runner = std::make_unique<TimingRunner>(device, TimingOptions::defaults_for(info));
+    for (MipStrategy m : {MipStrategy::kSinglePass, MipStrategy::kBlit, MipStrategy::kPerLevel})
+      for (const DeviceView* view : {t->camera.get(), t->light.get()}) {
+        FisParams p;
+        p.vsgl_count = 1;  // filtered sampling is not timed here
+        p.pyramid = PyramidPath::kTexture;
+        p.mipmapping = m;
+        auto fis = std::make_unique<FisGenerator>(device, *view, FisVariant::kModified, p);
+        run_untimed(device, *fis);  // level 0
+        t->cases.push_back(std::make_unique<MipmappingOnly>(std::move(fis)));
+        const std::size_t index = t->cases.size() - 1;
+        t->runner->add(TimingCase{"fis_mipmapping", view_name(view->kind), t->cases.back().get()});
+        for (int w = 0; w < 2; ++w) t->runner->replay_once(index);  // warm-up: discarded
+        TimingRunner* runner = t->runner.get();
+        const std::string name =
+            "table" + std::to_string(number) + "/" + mip_strategy_name(m) + "/" + view_name(view->kind) + "/mipmapping";
+        benchmark::RegisterBenchmark(name.c_str(),
+                                     [runner, index](benchmark::State& state) {
+                                       for (auto _ : state) state.SetIterationTime(runner->replay_once(index)[0] * 1e-3);
+                                     })
+            ->UseManualTime()
+            ->Iterations(replays)
+            ->Unit(benchmark::kMicrosecond);
+      }
+    states.push_back(std::move(t));
+  }
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return session.finish(0);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return vsgl::cli::run_reporting_errors("vsgl-mipbench", [&] { return run(argc, argv); });
+}

@@ -1,0 +1,47 @@
+// The FIS kernels' push constants and work-group sizes (SPEC §6.1, §6.1a), shared by GLSL and
+// harness/generators/fis/fis_generator.cpp through interop.h. Both pyramid paths (the storage
+// buffer of SPEC §4 and the sampled image of §6.1a) use these blocks.
+#ifndef VSGL_INTERFACE_FIS_H
+#define VSGL_INTERFACE_FIS_H
+#include "interop.h"
+
+VSGL_INTERFACE_BEGIN
+
+VSGL_CONST uint kFisTile = 16u;          // 16x16 threads per group in the per-texel passes
+VSGL_CONST uint kFisSamplingGroup = 64u; // threads per group in filtered sampling
+// Single-pass downsampler: a 16x16 group reduces a 64x64 tile of level 0 to one level-6 texel.
+VSGL_CONST uint kFisSpdTileLevels = 6u;
+
+// fis_additional*.comp
+struct FisAdditionalPush {
+  vec4 source_position;  // camera (G-buffer) or spot light (RSM)
+  uint width;
+  uint height;
+  uint pyramid_total;    // texels per buffer-pyramid layer (unused by the texture path)
+  uint camera_view;      // 1: G-buffer (power = reflectance), 0: RSM (power = flux)
+};
+VSGL_LAYOUT(FisAdditionalPush, 32);
+VSGL_VEC4_AT(FisAdditionalPush, source_position, 0);
+
+// fis_mip_level*.comp (one dispatch per level) and fis_mip_single_pass.comp
+struct FisMipPush {
+  uint width;
+  uint height;
+  uint source_level;     // per-level kernels: level l, writing l + 1
+  uint spd_groups;       // single pass: work groups of the dispatch (the last one finishes)
+};
+VSGL_LAYOUT(FisMipPush, 16);
+
+// fis_filtered_sampling*.comp
+struct FisSamplingPush {
+  uint width;
+  uint height;
+  uint count;        // N
+  uint offset_bits;  // per-frame lattice offset o in 32-bit fixed point (0 by default)
+  float K;           // kernel-size parameter (paper: K = 1)
+};
+VSGL_LAYOUT(FisSamplingPush, 20);
+
+VSGL_INTERFACE_END
+
+#endif  // VSGL_INTERFACE_FIS_H
