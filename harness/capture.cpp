@@ -14,6 +14,7 @@
 #include "harness/atomic_file.hpp"
 #include "harness/error.hpp"
 #include "harness/exr_io.hpp"
+#include "harness/printable_text.hpp"
 
 namespace vsgl {
 namespace {
@@ -29,6 +30,11 @@ constexpr const char* kRsmPdfName = "brsm";
 constexpr const char* kNoPdfName = "none";
 // Normals farther than this from unit length on a valid texel are rejected (SPEC §12).
 constexpr double kUnitNormalTolerance = 1e-3;
+// The largest view a capture may hold (the paper's G-buffer is 1920x1088, 2 Mi texels): a
+// sidecar that claims more is refused before any pixel memory is asked for (15 float planes of
+// 32 Mi texels are already 2 GiB).
+constexpr uint32_t kMaxViewSide = 16384;
+constexpr uint64_t kMaxViewTexels = uint64_t{1} << 25;
 
 constexpr std::array<const char*, kChannelCount> kCameraChannelNames = {
     "P.X", "P.Y", "P.Z", "valid", "N.X", "N.Y", "N.Z", "albedo_diffuse.R", "albedo_diffuse.G",
@@ -291,7 +297,7 @@ json parse_sidecar(const std::filesystem::path& path) {
   try {
     doc = json::parse(text);
   } catch (const json::exception& e) {
-    throw InputError(where + ": the capture sidecar is not valid JSON: " + e.what());
+    throw InputError(where + ": the capture sidecar is not valid JSON: " + printable_text(e.what()));
   }
   if (!doc.is_object()) {
     throw InputError(where + ": the capture sidecar is not a JSON object (it is a " +
@@ -352,7 +358,7 @@ void read_light(const SidecarReader& reader, const json& doc, CaptureMeta& meta)
 CaptureMeta read_meta(const SidecarReader& reader, const json& doc) {
   const std::string format = reader.string(doc, "", "format");
   if (format != kFormatName) {
-    reader.fail("key \"format\" is \"" + format + "\", expected \"" + kFormatName + "\"");
+    reader.fail("key \"format\" is " + quoted_text(format) + ", expected \"" + kFormatName + "\"");
   }
   const uint32_t version = reader.uint32(doc, "", "format_version");
   if (version != kFormatVersion) {
@@ -361,6 +367,16 @@ CaptureMeta read_meta(const SidecarReader& reader, const json& doc) {
   }
   CaptureMeta meta;
   meta.scene = reader.string(doc, "", "scene");
+  // The scene names output files (shade_<scene>_<generator>.png) and appears in messages: a
+  // name, not a path.
+  const bool scene_is_a_name =
+      !meta.scene.empty() && meta.scene.size() <= 64 && meta.scene.front() != '.' &&
+      meta.scene.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789._-") ==
+          std::string::npos;
+  if (!scene_is_a_name) {
+    reader.fail("key \"scene\" is " + quoted_text(meta.scene) +
+                ", expected a name of at most 64 letters, digits, '.', '_' or '-' (not starting with '.')");
+  }
   meta.frame = reader.uint32(doc, "", "frame");
   meta.frames = reader.uint32(doc, "", "frames");
   if (meta.frames == 0 || meta.frame >= meta.frames) {
@@ -375,7 +391,7 @@ CaptureMeta read_meta(const SidecarReader& reader, const json& doc) {
   for (const auto& [quantity, unit] : expected_units) {
     const std::string found = reader.string(units, "units", quantity);
     if (found != unit) {
-      reader.fail("key \"units." + std::string(quantity) + "\" is \"" + found + "\", expected \"" +
+      reader.fail("key \"units." + std::string(quantity) + "\" is " + quoted_text(found) + ", expected \"" +
                   unit + "\"");
     }
   }
@@ -401,13 +417,20 @@ ViewRecord read_view_record(const SidecarReader& reader, const json& doc, ViewKi
   ViewRecord record;
   record.file = reader.string(section, label, "file");
   if (record.file != view_file_name(kind)) {
-    reader.fail("key \"" + label + ".file\" is \"" + record.file + "\", expected \"" +
+    reader.fail("key \"" + label + ".file\" is " + quoted_text(record.file) + ", expected \"" +
                 view_file_name(kind) + "\"");
   }
   record.width = reader.uint32(section, label, "width");
   record.height = reader.uint32(section, label, "height");
   if (record.width == 0 || record.height == 0) {
     reader.fail("keys \"" + label + ".width\" and \"" + label + ".height\" must be positive");
+  }
+  if (record.width > kMaxViewSide || record.height > kMaxViewSide ||
+      uint64_t{record.width} * record.height > kMaxViewTexels) {
+    reader.fail("keys \"" + label + ".width\" and \"" + label + ".height\" say " +
+                std::to_string(record.width) + "x" + std::to_string(record.height) +
+                ", larger than a capture may be (at most " + std::to_string(kMaxViewSide) +
+                " per side and " + std::to_string(kMaxViewTexels) + " texels)");
   }
   record.has_pdf = reader.boolean(section, label, "has_pdf");
   if (kind == ViewKind::kCamera && !record.has_pdf) {
@@ -418,7 +441,7 @@ ViewRecord read_view_record(const SidecarReader& reader, const json& doc, ViewKi
                              : record.has_pdf          ? kRsmPdfName
                                                        : kNoPdfName;
   if (pdf != expected_pdf) {
-    reader.fail("key \"" + label + ".pdf\" is \"" + pdf + "\", expected \"" + expected_pdf +
+    reader.fail("key \"" + label + ".pdf\" is " + quoted_text(pdf) + ", expected \"" + expected_pdf +
                 "\" (has_pdf is " + (record.has_pdf ? "true" : "false") + ")");
   }
   const json& channels = reader.object(section, label, "channels");
@@ -431,7 +454,7 @@ ViewRecord read_view_record(const SidecarReader& reader, const json& doc, ViewKi
   }
   for (const auto& item : channels.items()) {
     if (expected.count(item.key()) == 0) {
-      reader.fail("key \"" + channels_path + "\" lists an unexpected channel \"" + item.key() + "\"");
+      reader.fail("key \"" + channels_path + "\" lists an unexpected channel " + quoted_text(item.key()));
     }
   }
   return record;
@@ -469,7 +492,7 @@ ViewImage read_view_file(const std::filesystem::path& path, ViewKind kind,
       std::string why = channel.name == names[kPdf]
                             ? std::string(" (") + kSidecarName + " says has_pdf is false)"
                             : std::string();
-      throw InputError(where + ": unexpected extra channel \"" + channel.name + "\"" + why);
+      throw InputError(where + ": unexpected extra channel " + quoted_text(channel.name) + why);
     }
   }
   for (int c = 0; c < stored; ++c) {
@@ -551,7 +574,7 @@ void check_hashes(const ViewImage& view, const ViewRecord& record, const std::st
     const std::string actual = plane_hash(view.planes[c]);
     if (actual != record.hashes[c]) {
       throw InputError(where + ": channel \"" + names[c] + "\" hash mismatch: " + kSidecarName +
-                       " records " + record.hashes[c] + " but the file has " + actual +
+                       " records " + quoted_text(record.hashes[c]) + " but the file has " + actual +
                        "; the file changed since it was recorded");
     }
   }

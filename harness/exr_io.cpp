@@ -20,6 +20,7 @@
 
 #include "harness/atomic_file.hpp"
 #include "harness/error.hpp"
+#include "harness/printable_text.hpp"
 
 namespace vsgl {
 namespace {
@@ -208,8 +209,8 @@ ExrImage read_exr(const std::filesystem::path& path, const ExrSizeCheck& check_s
     const std::size_t texels = std::size_t{image.width} * image.height;
     for (auto it = header.channels().begin(); it != header.channels().end(); ++it) {
       if (it.channel().xSampling != 1 || it.channel().ySampling != 1) {
-        throw InputError(where + ": channel \"" + it.name() +
-                         "\" is subsampled; every channel must have one sample per texel");
+        throw InputError(where + ": channel " + quoted_text(it.name()) +
+                         " is subsampled; every channel must have one sample per texel");
       }
       image.channels.push_back({it.name(), from_imf(it.channel().type), {}});
     }
@@ -226,7 +227,7 @@ ExrImage read_exr(const std::filesystem::path& path, const ExrSizeCheck& check_s
   } catch (const InputError&) {
     throw;
   } catch (const std::exception& e) {
-    throw InputError(where + ": cannot read EXR file (corrupt or truncated): " + e.what());
+    throw InputError(where + ": cannot read EXR file (corrupt or truncated): " + printable_text(e.what()));
   }
   return image;
 }

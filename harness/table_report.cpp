@@ -284,22 +284,6 @@ std::string generator_label(const std::string& g) {
   return g;
 }
 
-nlohmann::json load_paper_tables(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path.string() + ": cannot read the paper's tables (use --paper FILE)");
-  nlohmann::json doc;
-  try {
-    doc = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(path.string() + ": not valid JSON: " + e.what());
-  }
-  for (const char* t : {"1", "2", "3"})
-    if (!doc.contains("tables") || !doc["tables"].contains(t))
-      throw InputError(path.string() + ": lacks tables." + t);
-  if (!doc.contains("claims") || !doc["claims"].is_array()) throw InputError(path.string() + ": lacks the claims list");
-  return doc;
-}
-
 nlohmann::ordered_json table_json(const MeasuredTable& t, const MeasuredTable* other, const ReportContext& ctx) {
   const DeviceInfo& d = ctx.device;
   ojson doc;

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "harness/device_info.hpp"
+#include "harness/paper_tables.hpp"
 #include "harness/source_lines.hpp"
 #include "harness/timing_runner.hpp"
 
@@ -40,9 +41,7 @@ struct ReportContext {
   std::map<std::string, uint32_t> shaders;       // per generator: kernels (pipelines) it dispatches
 };
 
-// Loads the paper's numbers; throws InputError naming the file when it is missing or lacks
-// tables 1-3.
-nlohmann::json load_paper_tables(const std::filesystem::path& path);
+// load_paper_tables (the paper's numbers, validated) is in harness/paper_tables.hpp.
 
 // The table document. `other` is the other paper table of the same run (for the Table 1 ->
 // Table 2 change), or nullptr. Throws std::invalid_argument when a statistic cannot be computed.

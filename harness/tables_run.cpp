@@ -9,6 +9,7 @@
 
 #include "harness/atomic_file.hpp"
 #include "harness/capture_provisioning.hpp"
+#include "harness/printable_text.hpp"
 #include "harness/command_stream.hpp"
 #include "harness/device.hpp"
 #include "harness/device_view.hpp"
@@ -60,7 +61,7 @@ nlohmann::json load_schema(const std::filesystem::path& path) {
   try {
     return nlohmann::json::parse(in);
   } catch (const nlohmann::json::exception& e) {
-    throw InputError(path.string() + ": not valid JSON: " + e.what());
+    throw InputError(path.string() + ": not valid JSON: " + printable_text(e.what()));
   }
 }
 
