@@ -163,8 +163,11 @@ TablesOutcome run_tables(Device& device, const TablesOptions& o, const std::func
         GeneratorConfig cfg = o.generator;
         cfg.vsgl_count = view->kind == ViewKind::kCamera ? o.camera_vsgls : o.light_vsgls;
         generators.push_back(make_generator(g, device, *view, cfg));
-        if (std::find(o.debug_slow.begin(), o.debug_slow.end(), g) != o.debug_slow.end())  // TEST-ONLY
-          generators.back() = with_debug_slowdown(device, std::move(generators.back()), DebugSlowWork::for_device(device.info()));
+        if (std::find(o.debug_slow.begin(), o.debug_slow.end(), g) != o.debug_slow.end()) {  // TEST-ONLY
+          DebugSlowWork work = DebugSlowWork::for_device(device.info());
+          work.iterations *= std::max(1u, o.debug_slow_factor);
+          generators.back() = with_debug_slowdown(device, std::move(generators.back()), work);
+        }
         runner.add(TimingCase{g, view_name(view->kind), generators.back().get()});
       }
     say(number, "timing table " + std::to_string(number) + " (" + t.scene + "): " + std::to_string(generators.size()) +

@@ -38,6 +38,7 @@ struct TablesOptions {
   // TEST-ONLY (harness/regression_debug_slow.hpp): generators whose last phase gets extra work, so
   // that `compare` can be tested; recorded in the JSON as run.debug_slow.
   std::vector<std::string> debug_slow;
+  uint32_t debug_slow_factor = 1;  // TEST-ONLY: multiplies DebugSlowWork::for_device's iterations
 };
 
 // Scene and capture sub-directory of a paper table; throws UsageError for a table other than 1, 2.
