@@ -187,6 +187,10 @@ void write_exr(const std::filesystem::path& path, uint32_t width, uint32_t heigh
   write_file_atomic(path, bytes);
 }
 
+// OpenEXR's checkOpenEXRFile (ImfCheckFile.h) is not called first: measured with
+// tests/fuzz/measure_check_file (issue 12), it added ~70 % to reading a full-size view (2.8 s on
+// top of 3.9 s, ASan build) and, over 394 fuzzed EXR inputs, flagged none that this reader
+// accepted (this reader refused 2 that it passed).
 ExrImage read_exr(const std::filesystem::path& path, const ExrSizeCheck& check_size) {
   const std::string where = path.string();
   ExrImage image;
