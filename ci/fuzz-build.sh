@@ -23,5 +23,9 @@ if ! "$clangxx" -fsanitize=fuzzer,address,undefined "$probe/p.cpp" -o "$probe/p"
   sed 's/^/  /' "$probe/err" | head -5 >&2
   exit 77
 fi
+# One build at a time (the suite's fuzz_smoke and a long ci/fuzz.sh may start together).
+mkdir -p build
+exec 9>build/fuzz-build.lock
+flock 9
 cmake -S tests/fuzz -B build/fuzz -G Ninja -DCMAKE_CXX_COMPILER="$clangxx" >/dev/null
 cmake --build build/fuzz
