@@ -18,7 +18,8 @@ pin=()
 if command -v taskset >/dev/null 2>&1; then pin=(taskset -c "$(( $(nproc) - 1 ))"); fi
 "${pin[@]}" bash -c 'while :; do :; done' &
 hog=$!
-trap 'kill "$hog" 2>/dev/null || true; wait "$hog" 2>/dev/null || true' EXIT INT TERM
+trap 'kill "$hog" 2>/dev/null || true; wait "$hog" 2>/dev/null || true' EXIT
+trap 'exit 130' INT TERM
 echo "ci/stress-tests.sh: CPU hog pid $hog${pin:+ on core $(( $(nproc) - 1 ))}; $runs runs of the suite (ctest -j $(nproc))"
 
 logs=build/ci/stress
