@@ -12,8 +12,26 @@ packages=(
   nlohmann-json3-dev libglm-dev           # JSON, vector maths
   libopenexr-dev                          # EXR captures
   libstb-dev                              # PNG output of the shading pass
-  chromium                                # headless browser: the dashboard test renders results/dashboard
+  clang                                   # libFuzzer targets (tests/fuzz; the suite's fuzz smoke test)
 )
+
+# Headless Chromium renders results/dashboard in the dashboard test. Debian's `chromium` is a real
+# browser; Ubuntu's `chromium` / `chromium-browser` are transitional packages that install a snap,
+# which does not run in containers, so there nothing is installed for it: ci/find-chromium.sh
+# looks for one that runs (or $VSGL_CHROMIUM), and without one the dashboard test is skipped
+# and says why.
+os_id=unknown os_name="this system"
+if [[ -r /etc/os-release ]]; then
+  os_id=$(. /etc/os-release && echo "${ID:-unknown}")
+  os_name=$(. /etc/os-release && echo "${PRETTY_NAME:-$os_id}")
+fi
+if [[ "$os_id" == "debian" ]]; then
+  packages+=(chromium)
+elif ! bash "$(dirname "$0")/find-chromium.sh" >/dev/null 2>&1; then
+  echo "ci/install-deps.sh: no headless Chromium on $os_name, and none is installed for it (on Ubuntu the" >&2
+  echo "  chromium package is a snap, which fails in containers): the dashboard test will be skipped." >&2
+  echo "  For it, install Google Chrome or chrome-headless-shell and set VSGL_CHROMIUM=/path/to/it." >&2
+fi
 
 if ! command -v dpkg-query >/dev/null 2>&1 || ! command -v apt-get >/dev/null 2>&1; then
   echo "ci/install-deps.sh: this is not a Debian-family system (no dpkg/apt-get)." >&2

@@ -1,4 +1,5 @@
 // Capture storage (SPEC §3) and its rejection of bad input (SPEC §12). CPU only, no device.
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -534,6 +535,59 @@ TEST(CaptureIo, AtomicWriterReplacesAndLeavesNoTemporaries) {
   // A directory that does not exist: nothing to clean up, still a clear error.
   const fs::path nowhere = temp.path() / "missing" / "out.json";
   expect_input_error([&] { write_text_atomic(nowhere, "x"); }, {nowhere.string()});
+}
+
+
+// Issue 12: a corrupted channel name (the byte of 'i' in "valid" flipped to 0x97, as seen on a
+// damaged rsm.exr) reaches the message escaped, never as raw bytes (harness/printable_text.hpp).
+TEST(CaptureIo, CorruptChannelNameIsEscapedInTheMessage) {
+  TempDir temp;
+  write_capture(make_capture(), temp.path());
+  const fs::path rsm = temp.path() / "rsm.exr";
+  std::string bytes = [&] {
+    std::ifstream in(rsm, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  }();
+  const std::string name("valid\0", 6);
+  const std::size_t at = bytes.find(name);
+  ASSERT_NE(at, std::string::npos) << "the channel list names \"valid\"";
+  bytes[at + 3] = static_cast<char>(0x97);
+  write_file_atomic(rsm, std::span<const char>(bytes.data(), bytes.size()));
+  try {
+    load_capture(temp.path());
+    ADD_FAILURE() << "the corrupted capture loaded";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("unexpected extra channel \"val\\x97d\""), std::string::npos) << message;
+    for (const char ch : message) EXPECT_TRUE(ch >= 0x20 && ch <= 0x7e) << "raw byte " << int(ch) << " in: " << message;
+  }
+}
+
+// Issue 12: temporaries of a killed writer (".NAME.tmp-PID-N" whose PID is gone) are removed by
+// the next write of NAME; one of a live process is left alone (it may still be writing).
+TEST(CaptureIo, AtomicWriterRemovesTemporariesOfDeadWriters) {
+  TempDir temp;
+  const pid_t dead = ::fork();
+  if (dead == 0) ::_exit(0);
+  ASSERT_GT(dead, 0);
+  ::waitpid(dead, nullptr, 0);
+  const fs::path file = temp.path() / "table1.json";
+  const std::string stale = ".table1.json.tmp-" + std::to_string(dead) + "-0";
+  const std::string live = ".table1.json.tmp-" + std::to_string(::getppid()) + "-3";
+  const std::string other = ".table2.json.tmp-" + std::to_string(dead) + "-1";
+  for (const auto& name : {stale, live, other}) std::ofstream(temp.path() / name) << "partial";
+  write_text_atomic(file, "new");
+  EXPECT_EQ(file_names(temp.path()), (std::set<std::string>{"table1.json", live, other}));
+}
+
+// The scene names output files (`shade`): a sidecar whose scene is a path is refused, escaped.
+TEST(CaptureIo, SceneThatIsNotANameIsRejected) {
+  TempDir temp;
+  write_capture(make_capture(), temp.path());
+  nlohmann::json doc = read_json(temp.path() / "capture.json");
+  doc["scene"] = "../../tmp/x\x1b";
+  write_json(temp.path() / "capture.json", doc);
+  expect_load_fails(temp.path(), {"capture.json", "key \"scene\"", "\"../../tmp/x\\x1b\"", "a name"});
 }
 
 }  // namespace

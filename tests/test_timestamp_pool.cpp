@@ -1,6 +1,8 @@
 // The timestamp facility of SPEC §9 on a real queue, and its arithmetic without one.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "gpu_test.hpp"
 #include "harness/vk/buffer.hpp"
 #include "harness/vk/command_stream.hpp"
@@ -10,6 +12,8 @@
 #include "harness/vk/unique_handle.hpp"
 #include "harness/vk/vk_check.hpp"
 #include "kernels/include/interface/testing.h"
+#include "harness/scene/capture_recorder.hpp"
+#include "harness/scene/scene.hpp"
 
 namespace vsgl {
 namespace {
@@ -40,6 +44,12 @@ class TimestampPoolTest : public GpuTest {};
 // Three phases, light / heavy / light: the heavy one must dominate both neighbours. A driver that
 // resolves timestamps lazily (lavapipe reads the clock at its next flush) shifts every phase's time
 // onto a neighbour unless the pool orders the write on both sides; this test catches either shift.
+//
+// Noise cannot fail it (issue 12): noise only ever adds time to a phase, so each phase is judged
+// by its best (minimum) of several trials, and the heavy phase is first grown until it is 64x
+// either light one, leaving a margin of 8x for the verdict. A shifted phase is not noise: it
+// moves the heavy work into a light interval in every trial, so the light phase's minimum grows
+// with the heavy work, the heavy phase never dominates, and both checks fail.
 TEST_F(TimestampPoolTest, EachIntervalTimesItsOwnPhase) {
   Device& dev = device();
   ASSERT_TRUE(dev.info().timestamps());
@@ -49,6 +59,9 @@ TEST_F(TimestampPoolTest, EachIntervalTimesItsOwnPhase) {
   BindingSet set(dev, pipeline, {out}, "test.workload.set");
   TimestampPool pool(dev, 4, "test.timestamps");
 
+  struct Phases {
+    double light_before, heavy, light_after;
+  };
   auto run = [&](uint32_t heavy_iterations) {
     dev.submit_and_wait([&](VkCommandBuffer cmd) {
       CommandStream stream(cmd);
@@ -62,24 +75,44 @@ TEST_F(TimestampPoolTest, EachIntervalTimesItsOwnPhase) {
       pool.write(cmd);
       EXPECT_EQ(stream.dispatch_count(), 3u);
     });
-    return pool.read_ticks();
+    const std::vector<uint64_t> ticks = pool.read_ticks();
+    EXPECT_EQ(ticks.size(), 4u);
+    return Phases{pool.interval_ns(ticks[0], ticks[1]), pool.interval_ns(ticks[1], ticks[2]),
+                  pool.interval_ns(ticks[2], ticks[3])};
   };
-  run(8);  // warm-up: the first dispatch pays the driver's shader compilation (SPEC §9)
-  // Grow the heavy phase until it takes at least 1 ms on this device, so that it dwarfs the
-  // fixed cost of a dispatch and a barrier on a GPU as on a CPU driver.
-  uint32_t heavy_iterations = 256;
-  std::vector<uint64_t> ticks = run(heavy_iterations);
-  while (pool.interval_ns(ticks[1], ticks[2]) < 1e6 && heavy_iterations < (1u << 24)) {
-    heavy_iterations *= 4;
-    ticks = run(heavy_iterations);
+  // Each phase's minimum over `trials` runs: its own cost, without what noise added.
+  auto best_of = [&](int trials, uint32_t heavy_iterations) {
+    Phases best = run(heavy_iterations);
+    for (int t = 1; t < trials; ++t) {
+      const Phases p = run(heavy_iterations);
+      best = {std::min(best.light_before, p.light_before), std::min(best.heavy, p.heavy),
+              std::min(best.light_after, p.light_after)};
+    }
+    return best;
+  };
+  // lavapipe resolves timestamps lazily only once a graphics pipeline has run in the process (as
+  // in `tables`, which may record captures first); CTest runs this test in a process of its own,
+  // so it rasterizes a small capture first, or a shift would go unseen here.
+  {
+    CaptureRecorder recorder(dev);
+    (void)recorder.record(make_scene("tiny"), RecordSizes{32, 32, 16}, 0, 1);
   }
-  ASSERT_EQ(ticks.size(), 4u);
-  const double light_before = pool.interval_ns(ticks[0], ticks[1]);
-  const double heavy = pool.interval_ns(ticks[1], ticks[2]);
-  const double light_after = pool.interval_ns(ticks[2], ticks[3]);
-  EXPECT_GT(light_before, 0.0);
-  EXPECT_GT(heavy, 8.0 * light_before) << "light " << light_before << " ns, heavy " << heavy << " ns";
-  EXPECT_GT(heavy, 8.0 * light_after) << "heavy " << heavy << " ns, light " << light_after << " ns";
+  run(8);  // warm-up: the first dispatch pays the driver's shader compilation (SPEC §9)
+  // Grow the heavy phase until it is 64x both light ones (and at least 1 ms); a shift would make
+  // that unreachable, so growth also stops once a trial takes 2 s.
+  uint32_t heavy_iterations = 256;
+  Phases p = best_of(3, heavy_iterations);
+  while ((p.heavy < 64.0 * std::max(p.light_before, p.light_after) || p.heavy < 1e6) &&
+         p.light_before + p.heavy + p.light_after < 2e9 && heavy_iterations < (1u << 24)) {
+    heavy_iterations *= 4;
+    p = best_of(3, heavy_iterations);
+  }
+  p = best_of(5, heavy_iterations);
+  EXPECT_GT(p.light_before, 0.0);
+  EXPECT_GT(p.heavy, 8.0 * p.light_before) << "best of 5: light " << p.light_before << " ns, heavy " << p.heavy
+                                           << " ns (" << heavy_iterations << " iterations)";
+  EXPECT_GT(p.heavy, 8.0 * p.light_after) << "best of 5: heavy " << p.heavy << " ns, light " << p.light_after
+                                          << " ns (" << heavy_iterations << " iterations)";
   // The work really ran: check one value against the same hash on the host.
   const auto values = download_vector<uint32_t>(dev, out, count);
   uint32_t h = 7u * 2654435761u + 1u;

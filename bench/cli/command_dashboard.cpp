@@ -8,6 +8,7 @@
 #include "harness/core/atomic_file.hpp"
 #include "harness/compare/dashboard_page.hpp"
 #include "harness/core/error.hpp"
+#include "bench/cli/dashboard_generators.hpp"
 #include "harness/report/paper_tables.hpp"
 
 namespace vsgl::cli {
@@ -25,7 +26,7 @@ int run_dashboard(std::vector<std::string> tokens) {
   const nlohmann::json paper = load_paper_tables(paper_path);
   std::filesystem::create_directories(*out);
   const std::filesystem::path page = std::filesystem::path(*out) / "index.html";
-  write_text_atomic(page, dashboard_html(runs, paper, dirs[0]));
+  write_text_atomic(page, dashboard_html(runs, paper, dirs[0], dashboard_generators()));
   std::fprintf(stderr, "wrote %s (%zu table runs)\n", page.string().c_str(), runs.size());
   return 0;
 }

@@ -10,6 +10,7 @@
 #include "harness/capture/exr_io.hpp"
 #include "harness/core/atomic_file.hpp"
 #include "harness/core/error.hpp"
+#include "harness/core/printable_text.hpp"
 #include "harness/core/text_format.hpp"
 
 namespace vsgl {
@@ -88,7 +89,7 @@ ViewImage read_view_file(const std::filesystem::path& path, ViewKind kind,
       std::string why = channel.name == names[kPdf]
                             ? std::string(" (") + kSidecarName + " says has_pdf is false)"
                             : std::string();
-      throw InputError(where + ": unexpected extra channel \"" + channel.name + "\"" + why);
+      throw InputError(where + ": unexpected extra channel " + quoted_text(channel.name) + why);
     }
   }
   for (int c = 0; c < stored; ++c) {
@@ -170,7 +171,7 @@ void check_hashes(const ViewImage& view, const ViewRecord& record, const std::st
     const std::string actual = plane_hash(view.planes[c]);
     if (actual != record.hashes[c]) {
       throw InputError(where + ": channel \"" + names[c] + "\" hash mismatch: " + kSidecarName +
-                       " records " + record.hashes[c] + " but the file has " + actual +
+                       " records " + quoted_text(record.hashes[c]) + " but the file has " + actual +
                        "; the file changed since it was recorded");
     }
   }

@@ -10,6 +10,7 @@
 #include "harness/core/error.hpp"
 #include "harness/core/text_format.hpp"
 #include "harness/core/json_reader.hpp"
+#include "harness/core/printable_text.hpp"
 
 namespace vsgl {
 namespace {
@@ -24,6 +25,11 @@ constexpr const char* kRsmPdfName = "brsm";
 constexpr const char* kNoPdfName = "none";
 // A light direction farther than this from unit length is rejected.
 constexpr double kUnitTolerance = 1e-3;
+// The largest view a capture may hold (the paper's G-buffer is 1920x1088, 2 Mi texels): a
+// sidecar that claims more is refused before any pixel memory is asked for (15 float planes of
+// 32 Mi texels are already 2 GiB).
+constexpr uint32_t kMaxViewSide = 16384;
+constexpr uint64_t kMaxViewTexels = uint64_t{1} << 25;
 
 
 // ---- Sidecar writing ---------------------------------------------------------------------------
@@ -196,7 +202,7 @@ void read_light(const JsonReader& reader, const json& doc, CaptureMeta& meta) {
 CaptureMeta read_meta(const JsonReader& reader, const json& doc) {
   const std::string format = reader.string(doc, "", "format");
   if (format != kFormatName) {
-    reader.fail("", "key \"format\" is \"" + format + "\", expected \"" + kFormatName + "\"");
+    reader.fail("", "key \"format\" is " + quoted_text(format) + ", expected \"" + kFormatName + "\"");
   }
   const uint32_t version = reader.uint32(doc, "", "format_version");
   if (version != kFormatVersion) {
@@ -205,6 +211,16 @@ CaptureMeta read_meta(const JsonReader& reader, const json& doc) {
   }
   CaptureMeta meta;
   meta.scene = reader.string(doc, "", "scene");
+  // The scene names output files (shade_<scene>_<generator>.png) and appears in messages: a
+  // name, not a path.
+  const bool scene_is_a_name =
+      !meta.scene.empty() && meta.scene.size() <= 64 && meta.scene.front() != '.' &&
+      meta.scene.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789._-") ==
+          std::string::npos;
+  if (!scene_is_a_name) {
+    reader.fail("", "key \"scene\" is " + quoted_text(meta.scene) +
+                ", expected a name of at most 64 letters, digits, '.', '_' or '-' (not starting with '.')");
+  }
   meta.frame = reader.uint32(doc, "", "frame");
   meta.frames = reader.uint32(doc, "", "frames");
   if (meta.frames == 0 || meta.frame >= meta.frames) {
@@ -219,7 +235,7 @@ CaptureMeta read_meta(const JsonReader& reader, const json& doc) {
   for (const auto& [quantity, unit] : expected_units) {
     const std::string found = reader.string(units, "units", quantity);
     if (found != unit) {
-      reader.fail("", "key \"units." + std::string(quantity) + "\" is \"" + found + "\", expected \"" +
+      reader.fail("", "key \"units." + std::string(quantity) + "\" is " + quoted_text(found) + ", expected \"" +
                   unit + "\"");
     }
   }
@@ -236,13 +252,20 @@ ViewRecord read_view_record(const JsonReader& reader, const json& doc, ViewKind 
   ViewRecord record;
   record.file = reader.string(section, label, "file");
   if (record.file != view_file_name(kind)) {
-    reader.fail("", "key \"" + label + ".file\" is \"" + record.file + "\", expected \"" +
+    reader.fail("", "key \"" + label + ".file\" is " + quoted_text(record.file) + ", expected \"" +
                 view_file_name(kind) + "\"");
   }
   record.width = reader.uint32(section, label, "width");
   record.height = reader.uint32(section, label, "height");
   if (record.width == 0 || record.height == 0) {
     reader.fail("", "keys \"" + label + ".width\" and \"" + label + ".height\" must be positive");
+  }
+  if (record.width > kMaxViewSide || record.height > kMaxViewSide ||
+      uint64_t{record.width} * record.height > kMaxViewTexels) {
+    reader.fail("", "keys \"" + label + ".width\" and \"" + label + ".height\" say " +
+                std::to_string(record.width) + "x" + std::to_string(record.height) +
+                ", larger than a capture may be (at most " + std::to_string(kMaxViewSide) +
+                " per side and " + std::to_string(kMaxViewTexels) + " texels)");
   }
   record.has_pdf = reader.boolean(section, label, "has_pdf");
   if (kind == ViewKind::kCamera && !record.has_pdf) {
@@ -253,7 +276,7 @@ ViewRecord read_view_record(const JsonReader& reader, const json& doc, ViewKind 
                              : record.has_pdf          ? kRsmPdfName
                                                        : kNoPdfName;
   if (pdf != expected_pdf) {
-    reader.fail("", "key \"" + label + ".pdf\" is \"" + pdf + "\", expected \"" + expected_pdf +
+    reader.fail("", "key \"" + label + ".pdf\" is " + quoted_text(pdf) + ", expected \"" + expected_pdf +
                 "\" (has_pdf is " + (record.has_pdf ? "true" : "false") + ")");
   }
   const json& channels = reader.object(section, label, "channels");
@@ -266,7 +289,7 @@ ViewRecord read_view_record(const JsonReader& reader, const json& doc, ViewKind 
   }
   for (const auto& item : channels.items()) {
     if (expected.count(item.key()) == 0) {
-      reader.fail("", "key \"" + channels_path + "\" lists an unexpected channel \"" + item.key() + "\"");
+      reader.fail("", "key \"" + channels_path + "\" lists an unexpected channel " + quoted_text(item.key()));
     }
   }
   return record;

@@ -9,7 +9,6 @@
 
 #include "harness/compare/dashboard_svg.hpp"
 #include "harness/core/error.hpp"
-#include "harness/generators/generator_registry.hpp"
 
 namespace vsgl {
 namespace {
@@ -17,8 +16,10 @@ namespace {
 const char* const kViews[] = {"camera_view", "light_view"};
 
 // Bar labels must fit under a bar.
-std::string short_generator(const std::string& g) {
-  for (const auto& d : generator_descriptors())
+using Generators = std::vector<DashboardGenerator>;
+
+std::string short_generator(const Generators& generators, const std::string& g) {
+  for (const auto& d : generators)
     if (d.name == g) return d.short_label;
   return g;  // a run of a generator this build does not know
 }
@@ -61,16 +62,16 @@ void add_legend(std::vector<LegendEntry>& legend, std::set<std::string>& seen, c
 }
 
 // The measured chart of one run of one table.
-std::string run_bars(const BenchRun& run, int table) {
+std::string run_bars(const BenchRun& run, int table, const Generators& generators) {
   std::vector<StackedBar> bars;
   std::vector<LegendEntry> legend;
   std::set<std::string> seen;
-  std::vector<std::string> generators;
+  std::vector<std::string> timed;
   for (const RunSeries& s : run.series)
-    if (s.table == table && std::find(generators.begin(), generators.end(), s.generator) == generators.end())
-      generators.push_back(s.generator);
-  for (const auto& g : generators) {
-    StackedBar bar{short_generator(g), {}};
+    if (s.table == table && std::find(timed.begin(), timed.end(), s.generator) == timed.end())
+      timed.push_back(s.generator);
+  for (const auto& g : timed) {
+    StackedBar bar{short_generator(generators, g), {}};
     for (const char* view : kViews)
       for (const RunSeries& s : run.series)
         if (s.table == table && s.generator == g && s.view == view && !s.is_total()) {
@@ -86,18 +87,20 @@ std::string run_bars(const BenchRun& run, int table) {
 }
 
 // The paper's chart of one table (the generators the paper timed).
-std::string paper_bars(const nlohmann::json& paper, int table) {
+std::string paper_bars(const nlohmann::json& paper, int table, const Generators& generators) {
   const nlohmann::json& t = paper.at("tables").at(std::to_string(table));
   std::vector<StackedBar> bars;
   std::vector<LegendEntry> legend;
   std::set<std::string> seen;
   // The paper's column order.
-  for (const std::string& g : paper_generator_names()) {
+  for (const DashboardGenerator& d : generators) {
+    if (!d.in_paper) continue;
+    const std::string& g = d.name;
     if (!t.contains(g)) continue;
-    StackedBar bar{short_generator(g), {}};
+    StackedBar bar{short_generator(generators, g), {}};
     for (const char* view : kViews) {
       // paper_tables.json is read unordered; the phases in execution order.
-      for (const auto& phase : generator_descriptor(g).phases) {
+      for (const auto& phase : d.phases) {
         const double ms = t.at(g).at(view).at(phase).get<double>();
         add_legend(legend, seen, view, phase);
         bar.segments.push_back(BarSegment{std::string(view) + "/" + phase, ms,
@@ -156,7 +159,8 @@ std::vector<BenchRun> find_table_runs(const std::filesystem::path& results_dir) 
   return runs;
 }
 
-std::string dashboard_html(const std::vector<BenchRun>& runs, const nlohmann::json& paper, const std::string& source) {
+std::string dashboard_html(const std::vector<BenchRun>& runs, const nlohmann::json& paper, const std::string& source,
+                           const std::vector<DashboardGenerator>& generators) {
   std::map<std::string, std::string> device_colors;
   for (const auto& r : runs)
     if (!device_colors.contains(r.device))
@@ -188,15 +192,15 @@ std::string dashboard_html(const std::vector<BenchRun>& runs, const nlohmann::js
     const std::string scene = table == 1 ? "atrium" : "conference";
     os << "<section class=\"table\" id=\"table" << table << "\">\n<h2>Table " << table << " (" << scene << ")</h2>\n";
     os << "<h3>Phases per generator: camera view (dark) then light view (light), median ms</h3>\n<div class=\"charts\">\n";
-    if (paper.contains("tables") && paper["tables"].contains(std::to_string(table))) os << paper_bars(paper, table) << "\n";
-    for (const BenchRun* r : table_runs) os << run_bars(*r, table) << "\n";
+    if (paper.contains("tables") && paper["tables"].contains(std::to_string(table))) os << paper_bars(paper, table, generators) << "\n";
+    for (const BenchRun* r : table_runs) os << run_bars(*r, table, generators) << "\n";
     os << "</div>\n<h3>Totals across runs (date, commit), median with q1..q3, log axis</h3>\n<div class=\"charts\">\n";
-    std::vector<std::string> generators;
+    std::vector<std::string> timed;
     for (const BenchRun* r : table_runs)
       for (const RunSeries& s : r->series)
-        if (s.is_total() && s.view.empty() && std::find(generators.begin(), generators.end(), s.generator) == generators.end())
-          generators.push_back(s.generator);
-    for (const auto& g : generators) os << total_series(table_runs, table, g, device_colors) << "\n";
+        if (s.is_total() && s.view.empty() && std::find(timed.begin(), timed.end(), s.generator) == timed.end())
+          timed.push_back(s.generator);
+    for (const auto& g : timed) os << total_series(table_runs, table, g, device_colors) << "\n";
     os << "</div>\n</section>\n";
   }
 

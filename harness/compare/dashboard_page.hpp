@@ -23,8 +23,19 @@ namespace vsgl {
 // Throws InputError for a table JSON that cannot be read (regression_run.hpp), or none at all.
 std::vector<BenchRun> find_table_runs(const std::filesystem::path& results_dir);
 
+// What the page shows of a generator, from the descriptor table (generators/generator_registry.hpp;
+// dashboard_generators() in bench/cli builds it): the bar label, whether the paper timed it, and its
+// phases in order for the paper's bars. A run's generator missing here is labelled by its name.
+struct DashboardGenerator {
+  std::string name;
+  std::string short_label;
+  bool in_paper = false;
+  std::vector<std::string> phases;
+};
+
 // The page. `paper` is results/paper/paper_tables.json (report/paper_tables.hpp load_paper_tables);
 // `source` names where the runs came from (shown on the page).
-std::string dashboard_html(const std::vector<BenchRun>& runs, const nlohmann::json& paper, const std::string& source);
+std::string dashboard_html(const std::vector<BenchRun>& runs, const nlohmann::json& paper, const std::string& source,
+                           const std::vector<DashboardGenerator>& generators);
 
 }  // namespace vsgl

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "harness/core/error.hpp"
+#include "harness/core/printable_text.hpp"
 
 namespace vsgl {
 namespace {
@@ -68,8 +69,8 @@ RunComparison compare_runs(const BenchRun& base, const BenchRun& fresh, const Co
     if (bt.capture_hashes != it->second.capture_hashes)
       out.mismatches.push_back(table + ": the runs used different captures (capture hashes differ)");
     if (bt.workload != it->second.workload)
-      out.mismatches.push_back(table + ": the runs used different configs: BASE " + bt.workload.dump() + ", NEW " +
-                               it->second.workload.dump());
+      out.mismatches.push_back(table + ": the runs used different configs: BASE " + printable_text(bt.workload.dump(), 4000) +
+                               ", NEW " + printable_text(it->second.workload.dump(), 4000));
   }
   if (!out.mismatches.empty() && !options.allow_mismatch) {
     std::string all;
@@ -95,7 +96,7 @@ RunComparison compare_runs(const BenchRun& base, const BenchRun& fresh, const Co
     try {
       row.result = compare_samples(b.samples_ms, n->samples_ms, options.verdict);
     } catch (const std::invalid_argument& e) {
-      throw InputError(b.name + ": cannot compare the samples: " + e.what());
+      throw InputError(printable_text(b.name) + ": cannot compare the samples: " + e.what());
     }
     const double ratio = row.result.new_median / row.result.base_median;
     ratios.push_back(ratio);

@@ -9,6 +9,7 @@
 #include "harness/core/error.hpp"
 #include "harness/core/json_reader.hpp"
 #include "harness/core/statistics.hpp"
+#include "harness/core/printable_text.hpp"
 
 namespace vsgl {
 namespace {
@@ -30,6 +31,13 @@ class Reader : public OrderedJsonReader {
     const double t = number(v, pointer);
     if (!(t > 0)) fail(pointer, "is not a positive time (" + v.dump() + ")");
     return t;
+  }
+  // An optional flag: absent is `fallback`, present must be a boolean.
+  bool flag(const json& obj, const std::string& pointer, const std::string& key, bool fallback) const {
+    const auto it = obj.find(key);
+    if (it == obj.end()) return fallback;
+    if (!it->is_boolean()) fail(pointer + "/" + key, std::string("is ") + it->type_name() + ", not a boolean");
+    return it->get<bool>();
   }
   double time(const json& obj, const std::string& pointer, const std::string& key) const {
     return time(member(obj, pointer, key), pointer + "/" + key);
@@ -59,21 +67,24 @@ BenchRun parse_table_json(const json& doc, const Reader& r) {
   BenchRun run;
   run.format = "table";
   const json& table_value = r.member(doc, "", "table");
-  if (!table_value.is_number_integer()) r.fail("/table", "is not a table number");
+  if (!table_value.is_number_integer() || (table_value != 1 && table_value != 2))
+    r.fail("/table", "is " + printable_text(table_value.dump()) + ", not 1 or 2");
   const int table = table_value.get<int>();
-  if (table != 1 && table != 2) r.fail("/table", "is " + std::to_string(table) + ", not 1 or 2");
   const json& device = r.object(doc, "", "device");
   run.device = r.text(device, "/device", "name");
   run.device_type = text_or(device, "type", "");
   const json& build = r.object(doc, "", "build");
   run.git_commit = r.text(build, "/build", "git_commit");
-  run.git_dirty = build.value("git_dirty", false);
+  run.git_dirty = r.flag(build, "/build", "git_dirty", false);
   const json& meta = r.object(doc, "", "run");
   run.date = r.text(meta, "/run", "started_utc");
-  run.quick = meta.value("quick", false);
+  run.quick = r.flag(meta, "/run", "quick", false);
   if (const auto slow = meta.find("debug_slow"); slow != meta.end()) {
     if (!slow->is_array()) r.fail("/run/debug_slow", "is not an array");
-    for (const auto& g : *slow) run.debug_slow.push_back(g.get<std::string>());
+    for (std::size_t i = 0; i < slow->size(); ++i) {
+      if (!(*slow)[i].is_string()) r.fail("/run/debug_slow/" + std::to_string(i), "is not a generator name");
+      run.debug_slow.push_back((*slow)[i].get<std::string>());
+    }
   }
 
   RunTable t;
@@ -122,7 +133,7 @@ double to_ms(double value, const std::string& unit, const Reader& r, const std::
   if (unit == "us") return value * 1e-3;
   if (unit == "ms") return value;
   if (unit == "s") return value * 1e3;
-  r.fail(pointer, "unknown time unit '" + unit + "'");
+  r.fail(pointer, "unknown time unit " + quoted_text(unit));
 }
 
 json parse_embedded(const Reader& r, const json& context, const std::string& key) {
@@ -130,7 +141,7 @@ json parse_embedded(const Reader& r, const json& context, const std::string& key
   try {
     return json::parse(text);
   } catch (const json::exception& e) {
-    r.fail("/context/" + key, std::string("is not JSON text: ") + e.what());
+    r.fail("/context/" + key, "is not JSON text: " + printable_text(e.what()));
   }
 }
 
@@ -152,16 +163,18 @@ BenchRun parse_gbench_json(const json& doc, const Reader& r) {
     const std::string bp = "/benchmarks/" + std::to_string(i);
     if (text_or(b, "run_type", "iteration") == "aggregate") continue;  // mean/median/stddev of the repetitions
     const std::string name = r.text(b, bp, "name");
-    if (b.value("error_occurred", false))
-      r.fail(bp, "benchmark '" + name + "' reported an error: " + text_or(b, "error_message", "(no message)"));
+    if (r.flag(b, bp, "error_occurred", false))
+      r.fail(bp, "benchmark " + quoted_text(name) + " reported an error: " +
+                     quoted_text(text_or(b, "error_message", "(no message)")));
     // "table1/fis_modified/light_view/filtered_sampling/iterations:30/manual_time": the first four
     // parts name it; the rest is Google Benchmark's decoration.
     std::vector<std::string> parts;
     std::stringstream ss(text_or(b, "run_name", name));
     for (std::string part; std::getline(ss, part, '/');) parts.push_back(part);
     if (parts.size() < 4 || parts[0].rfind("table", 0) != 0 || (parts[0] != "table1" && parts[0] != "table2"))
-      r.fail(bp + "/name", "'" + name + "' is not a vsgl-gbench benchmark name (tableN/generator/view/phase/...)");
+      r.fail(bp + "/name", quoted_text(name) + " is not a vsgl-gbench benchmark name (tableN/generator/view/phase/...)");
     const double ms = to_ms(r.time(b, bp, "real_time"), r.text(b, bp, "time_unit"), r, bp + "/time_unit");
+    if (!std::isfinite(ms) || !(ms > 0)) r.fail(bp + "/real_time", "is not a positive time in ms (out of range)");
     const std::string stable = parts[0] + "/" + parts[1] + "/" + parts[2] + "/" + parts[3];
     auto [it, fresh] = index.try_emplace(stable, run.series.size());
     if (fresh) {
@@ -234,7 +247,7 @@ BenchRun merge_bench_runs(const std::vector<BenchRun>& runs) {
       if (!merged.tables.emplace(n, t).second)
         throw InputError(r.path + ": table " + std::to_string(n) + " is also in " + runs.front().path);
     for (const auto& s : r.series) {
-      if (!names.insert(s.name).second) throw InputError(r.path + ": " + s.name + " appears twice");
+      if (!names.insert(s.name).second) throw InputError(r.path + ": " + quoted_text(s.name) + " appears twice");
       merged.series.push_back(s);
     }
     merged.date = std::min(merged.date, r.date);

@@ -11,6 +11,8 @@ namespace vsgl {
 // Writes `bytes` to `path` atomically (temporary + fsync + rename + fsync of the directory).
 // The directory must exist. Throws InputError naming `path` and the reason; no temporary file
 // is left behind on failure.
+// A process killed mid-write leaves only its temporary (".NAME.tmp-PID-N", which no reader
+// opens); the next write of the same path removes temporaries whose process is gone.
 void write_file_atomic(const std::filesystem::path& path, std::span<const char> bytes);
 
 // The same for text (JSON results, sidecars).

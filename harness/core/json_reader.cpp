@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "harness/core/error.hpp"
+#include "harness/core/printable_text.hpp"
 #include "harness/core/text_format.hpp"
 
 namespace vsgl {
@@ -18,7 +19,7 @@ nlohmann::ordered_json read_json_file(const std::filesystem::path& path, const s
   try {
     return nlohmann::ordered_json::parse(text);
   } catch (const nlohmann::json::exception& e) {
-    throw InputError(path.string() + ": " + what + " is not valid JSON (truncated or corrupt?): " + e.what());
+    throw InputError(path.string() + ": " + what + " is not valid JSON (truncated or corrupt?): " + printable_text(e.what()));
   }
 }
 
@@ -36,8 +37,9 @@ std::string BasicJsonReader<Json>::element(const std::string& parent, std::size_
 
 template <typename Json>
 std::string BasicJsonReader<Json>::place(const std::string& path) const {
-  if (style_ == JsonPathStyle::kPointer) return path.empty() ? "" : path + ": ";
-  return path.empty() ? "" : "key \"" + path + "\" ";
+  // Paths are made of the file's keys: escaped, as every text from a file in a message.
+  if (style_ == JsonPathStyle::kPointer) return path.empty() ? "" : printable_text(path) + ": ";
+  return path.empty() ? "" : "key " + quoted_text(path) + " ";
 }
 
 template <typename Json>

@@ -10,9 +10,16 @@
 
 namespace vsgl {
 
-// Loads the paper's numbers; throws InputError naming the file when it is missing, not JSON, or
-// lacks tables 1-3 or the claims.
+// Loads and validates the file, so that every reader of the document may rely on its shape:
+// an object with "source" (a string, optional), "setup" (an object with "gpu", a string),
+// "tables" with "1" and "2" (generator -> {"camera_view": {phase: ms}, "light_view": {phase: ms},
+// "total": ms}) and "3" (generator -> {"shaders", "dispatch_calls", "lines_of_code"}), every
+// number finite and non-negative, and "claims", an array of the paper's 6 claims as strings.
+// Throws InputError naming the file, the key (escaped, core/printable_text.hpp) and the problem.
 nlohmann::json load_paper_tables(const std::filesystem::path& path);
+
+// The same checks on a parsed document; `what` names it in messages.
+void check_paper_tables(const nlohmann::json& doc, const std::string& what);
 
 // The number at `path` (e.g. {"tables", "1", "fis_tok15", "total"}), if the paper gives one.
 std::optional<double> paper_number(const nlohmann::json& paper, std::initializer_list<std::string> path);

@@ -64,10 +64,17 @@ Instance::Instance(const InstanceOptions& options) : validation_(options.validat
   app.pEngineName = "vsgl-bench";
   app.apiVersion = VK_API_VERSION_1_2;
 
-  const VkValidationFeatureEnableEXT enables[] = {VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
+  const VkValidationFeatureEnableEXT sync_enables[] = {VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
+  const VkValidationFeatureEnableEXT gpu_av_enables[] = {
+      VK_VALIDATION_FEATURE_ENABLE_GPU_ASSISTED_EXT, VK_VALIDATION_FEATURE_ENABLE_GPU_ASSISTED_RESERVE_BINDING_SLOT_EXT};
   VkValidationFeaturesEXT features{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT};
-  features.enabledValidationFeatureCount = 1;
-  features.pEnabledValidationFeatures = enables;
+  if (options.gpu_assisted) {
+    features.enabledValidationFeatureCount = 2;
+    features.pEnabledValidationFeatures = gpu_av_enables;
+  } else {
+    features.enabledValidationFeatureCount = 1;
+    features.pEnabledValidationFeatures = sync_enables;
+  }
 
   VkDebugUtilsMessengerCreateInfoEXT messenger_info{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
   messenger_info.messageSeverity =

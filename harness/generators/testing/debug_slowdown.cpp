@@ -67,10 +67,12 @@ std::unique_ptr<VsglGenerator> with_debug_slowdown(Device& device, std::unique_p
   return std::make_unique<DebugSlowGenerator>(device, std::move(inner), work);
 }
 
-GeneratorWrapper debug_slowdown_of(std::vector<std::string> names) {
-  return [names = std::move(names)](Device& device, std::unique_ptr<VsglGenerator> generator) {
+GeneratorWrapper debug_slowdown_of(std::vector<std::string> names, uint32_t factor) {
+  return [names = std::move(names), factor](Device& device, std::unique_ptr<VsglGenerator> generator) {
     if (std::find(names.begin(), names.end(), generator->name()) == names.end()) return generator;
-    return with_debug_slowdown(device, std::move(generator), DebugSlowWork::for_device(device.info()));
+    DebugSlowWork work = DebugSlowWork::for_device(device.info());
+    work.iterations *= std::max(1u, factor);
+    return with_debug_slowdown(device, std::move(generator), work);
   };
 }
 

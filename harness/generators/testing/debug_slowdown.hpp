@@ -33,7 +33,7 @@ std::unique_ptr<VsglGenerator> with_debug_slowdown(Device& device, std::unique_p
                                                    DebugSlowWork work);
 
 // A wrapper for TablesOptions::wrap_generator: slows the generators named in `names` by
-// DebugSlowWork::for_device() and leaves the others as they are.
-GeneratorWrapper debug_slowdown_of(std::vector<std::string> names);
+// DebugSlowWork::for_device() with its iterations times `factor`, and leaves the others as they are.
+GeneratorWrapper debug_slowdown_of(std::vector<std::string> names, uint32_t factor = 1);
 
 }  // namespace vsgl

@@ -1,0 +1,46 @@
+// libFuzzer target: the run/table JSON loader behind `compare`, `export` and `dashboard`
+// (harness/regression_run.cpp load_bench_run: a table JSON or vsgl-gbench JSON), and what those
+// commands then do with a run that loaded: both export formats, a comparison of the run with
+// itself and its markdown report, and (table JSON) the dashboard page. Bad input must end in InputError;
+// anything else is a bug.
+#include <cstdint>
+#include <string_view>
+
+#include "fuzz_input_files.hpp"
+#include "harness/compare/dashboard_page.hpp"
+#include "harness/core/error.hpp"
+#include "harness/compare/export_formats.hpp"
+#include "harness/report/paper_tables.hpp"
+#include "harness/compare/regression_compare.hpp"
+#include "harness/compare/regression_run.hpp"
+
+namespace {
+
+const vsgl::fuzz::ScratchDir& scratch() {
+  static const vsgl::fuzz::ScratchDir dir;
+  return dir;
+}
+
+const nlohmann::json& paper() {
+  static const nlohmann::json doc =
+      vsgl::load_paper_tables(std::filesystem::path(VSGL_SOURCE_DIR) / "results/paper/paper_tables.json");
+  return doc;
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  const std::string_view input(reinterpret_cast<const char*>(data), size);
+  const auto file = scratch().write("table1.json", input);
+  try {
+    const vsgl::BenchRun run = vsgl::load_bench_run(file);
+    for (auto format : {vsgl::ExportFormat::kGithubActionBenchmark, vsgl::ExportFormat::kBencherMetricFormat})
+      (void)vsgl::export_run(run, format).dump();
+    vsgl::CompareOptions options;
+    const vsgl::RunComparison c = vsgl::compare_runs(run, run, options);
+    (void)vsgl::comparison_markdown(run, run, c, options);
+    if (run.format == "table") (void)vsgl::dashboard_html({run}, paper(), "fuzz", {});  // it reads table JSON only
+  } catch (const vsgl::InputError&) {
+  }
+  return 0;
+}

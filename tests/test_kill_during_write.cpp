@@ -1,0 +1,242 @@
+// No half-written output after a kill (SPEC §10, §12; issue 12). Real `vsgl-bench tables` and
+// `record` runs are stopped at known points of writing a known output file by the atomic
+// writer's TEST-ONLY pause hook (harness/test_pause.hpp) and then sent SIGKILL by this test.
+// Afterwards every output path must hold the complete old file or the complete new one, the
+// file being written at "partial" or "complete" must still be the old one (and its temporary
+// must exist: the hook really stopped mid-write), at "renamed" the new one; the next run must
+// succeed and leave no temporary behind.
+#include <gtest/gtest.h>
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "harness/capture/capture.hpp"
+#include "harness/capture/capture_files.hpp"
+#include "harness/core/error.hpp"
+#include "harness/capture/exr_io.hpp"
+#include "harness/core/json_schema_subset.hpp"
+
+namespace vsgl {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+std::string test_device() {
+  const char* env = std::getenv("VSGL_TEST_DEVICE");
+  return env != nullptr ? env : "llvmpipe";
+}
+
+struct Child {
+  pid_t pid = -1;
+  fs::path log;
+};
+
+// Starts vsgl-bench with `args`, stdout and stderr to `log`, and the pause hook set when
+// `pause_at` is not empty.
+Child start(const std::vector<std::string>& args, const fs::path& log, const std::string& pause_at,
+            const fs::path& notify) {
+  Child c{-1, log};
+  c.pid = ::fork();
+  if (c.pid == 0) {
+    const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (fd >= 0) {
+      ::dup2(fd, 1);
+      ::dup2(fd, 2);
+    }
+    if (!pause_at.empty()) {
+      ::setenv("VSGL_TEST_PAUSE_AT", pause_at.c_str(), 1);
+      ::setenv("VSGL_TEST_PAUSE_NOTIFY", notify.c_str(), 1);
+    } else {
+      ::unsetenv("VSGL_TEST_PAUSE_AT");
+    }
+    std::vector<char*> argv;
+    std::string exe = VSGL_BENCH_EXE;
+    argv.push_back(exe.data());
+    std::vector<std::string> copy = args;
+    for (auto& a : copy) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    ::execv(exe.c_str(), argv.data());
+    ::_exit(127);
+  }
+  return c;
+}
+
+// Runs to the end; returns the exit code (-1 when killed by a signal).
+int finish(const Child& c) {
+  int status = 0;
+  ::waitpid(c.pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+int run_to_end(const std::vector<std::string>& args, const fs::path& log) {
+  return finish(start(args, log, "", {}));
+}
+
+// Waits until the child reached the pause point (the marker appears), then sends SIGKILL.
+// Fails (and kills the child) when it exits first or takes longer than the limit.
+void kill_at_pause(const Child& c, const fs::path& notify) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(8);
+  bool paused = false;
+  while (std::chrono::steady_clock::now() < deadline) {
+    if (fs::exists(notify) && !slurp(notify).empty()) {
+      paused = true;
+      break;
+    }
+    int status = 0;
+    if (::waitpid(c.pid, &status, WNOHANG) == c.pid) {
+      ADD_FAILURE() << "the run ended (status " << status << ") before the pause point:\n" << slurp(c.log);
+      return;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  ::kill(c.pid, SIGKILL);
+  int status = 0;
+  ::waitpid(c.pid, &status, 0);
+  EXPECT_TRUE(paused) << "the run never reached the pause point:\n" << slurp(c.log);
+  EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL);
+  fs::remove(notify);
+}
+
+// The atomic writer's temporaries in `dir` (".NAME.tmp-PID-N"), of file `name` or of any file.
+std::vector<std::string> temporaries(const fs::path& dir, const std::string& name = "") {
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(dir)) {
+    const std::string n = e.path().filename().string();
+    if (name.empty() ? n.find(".tmp-") != std::string::npos : n.rfind("." + name + ".tmp-", 0) == 0) names.push_back(n);
+  }
+  return names;
+}
+
+// A table JSON is complete when it parses and conforms to the schema; its markdown when it ends
+// with the newline of its last line and names its table.
+bool complete_table_file(const fs::path& p) {
+  const std::string text = slurp(p);
+  if (text.empty() || text.back() != '\n') return false;
+  if (p.extension() == ".md") return text.find("Table") != std::string::npos;
+  try {
+    std::ifstream in(VSGL_SOURCE_DIR "/results/schema/table.schema.json");
+    const nlohmann::json schema = nlohmann::json::parse(in);
+    return validate_against_schema(nlohmann::json::parse(text), schema).empty();
+  } catch (const nlohmann::json::exception&) {
+    return false;
+  }
+}
+
+fs::path fresh_root(const std::string& name) {
+  const fs::path root = fs::temp_directory_path() / ("vsgl_kill_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(root);
+  fs::create_directories(root);
+  return root;
+}
+
+TEST(KillDuringWrite, TablesOutputsAreOldOrNewNeverPartial) {
+  const fs::path root = fresh_root("tables");
+  const fs::path out = root / "out";
+  const std::vector<std::string> args = {
+      "tables", "--quick", "--captures", (root / "captures").string(), "--out", out.string(), "--gbuffer", "96x64",
+      "--rsm", "64", "--camera-vsgls", "48", "--light-vsgls", "24", "--generators", "fis_tok15",
+      "--repetitions", "2", "--max-repetitions", "2", "--no-progress", "--device", test_device()};
+  ASSERT_EQ(run_to_end(args, root / "first.log"), 0) << slurp(root / "first.log");
+  const std::vector<std::string> outputs = {"table1.json", "table1.md", "table2.json", "table2.md"};  // write order
+
+  const fs::path notify = root / "paused";
+  // Every point once, on files early and late in the write order.
+  for (const auto& [point, file] : std::vector<std::pair<std::string, std::string>>{
+           {"partial", "table1.json"}, {"complete", "table2.md"}, {"renamed", "table1.md"}}) {
+    {
+      SCOPED_TRACE(point + ":" + file);
+      std::map<std::string, std::string> old;
+      for (const auto& f : outputs) old[f] = slurp(out / f);
+      kill_at_pause(start(args, root / "killed.log", point + ":" + file, notify), notify);
+      for (const auto& f : outputs) {
+        const std::string now = slurp(out / f);
+        EXPECT_TRUE(now == old[f] || complete_table_file(out / f)) << f << " is neither the old file nor a complete new one";
+      }
+      if (point == "renamed") {
+        EXPECT_NE(slurp(out / file), old[file]) << "renamed: the new file is in place";
+        EXPECT_TRUE(complete_table_file(out / file));
+      } else {
+        EXPECT_EQ(slurp(out / file), old[file]) << point << ": the old file is untouched";
+        // The killed writer's temporary (proof that it stopped mid-write); older ones of this
+        // file, left by earlier kills, were removed when this run began to write it.
+        EXPECT_EQ(temporaries(out, file).size(), 1u);
+      }
+      // Files after the paused one were not touched.
+      bool after = false;
+      for (const auto& f : outputs) {
+        if (after) {
+          EXPECT_EQ(slurp(out / f), old[f]) << f << " was written after the kill";
+        }
+        after = after || f == file;
+      }
+    }
+  }
+  // The next run completes and removes what killed runs left behind.
+  ASSERT_EQ(run_to_end(args, root / "last.log"), 0) << slurp(root / "last.log");
+  for (const auto& f : outputs) EXPECT_TRUE(complete_table_file(out / f)) << f;
+  EXPECT_TRUE(temporaries(out).empty()) << temporaries(out).front();
+  fs::remove_all(root);
+}
+
+TEST(KillDuringWrite, RecordOutputsAreOldOrNewNeverPartial) {
+  const fs::path root = fresh_root("record");
+  const fs::path dir = root / "tiny";
+  const std::vector<std::string> args = {"record", "--scene", "tiny", "--gbuffer", "96x64", "--rsm", "64",
+                                         "--out", dir.string(), "--device", test_device()};
+  ASSERT_EQ(run_to_end(args, root / "first.log"), 0) << slurp(root / "first.log");
+  const std::vector<std::string> outputs = {"gbuffer.exr", "rsm.exr", "capture.json"};  // write order
+  auto complete = [&](const std::string& f) {
+    try {
+      if (f == "capture.json") {
+        const nlohmann::json doc = nlohmann::json::parse(slurp(dir / f));
+        return doc.is_object();
+      } else {
+        (void)read_exr(dir / f);  // reads every pixel: a partial file fails
+      }
+      return true;
+    } catch (const std::exception&) {
+      return false;
+    }
+  };
+  const fs::path notify = root / "paused";
+  for (const auto& [point, file] : std::vector<std::pair<std::string, std::string>>{
+           {"partial", "rsm.exr"}, {"complete", "capture.json"}, {"renamed", "gbuffer.exr"}}) {
+    SCOPED_TRACE(point + ":" + file);
+    std::map<std::string, std::string> old;
+    for (const auto& f : outputs) old[f] = slurp(dir / f);
+    kill_at_pause(start(args, root / "killed.log", point + ":" + file, notify), notify);
+    for (const auto& f : outputs) EXPECT_TRUE(slurp(dir / f) == old[f] || complete(f)) << f;
+    if (point != "renamed") {
+      EXPECT_EQ(slurp(dir / file), old[file]);
+      EXPECT_EQ(temporaries(dir, file).size(), 1u);
+    }
+    // Whatever the kill left, the capture loads: recording is deterministic, so the old and the
+    // new files are the same capture (and the loader's hashes would refuse a mix of two).
+    EXPECT_NO_THROW((void)load_capture(dir));
+  }
+  ASSERT_EQ(run_to_end(args, root / "last.log"), 0) << slurp(root / "last.log");
+  EXPECT_NO_THROW((void)load_capture(dir));
+  EXPECT_TRUE(temporaries(dir).empty()) << temporaries(dir).front();
+  fs::remove_all(root);
+}
+
+}  // namespace
+}  // namespace vsgl
