@@ -12,6 +12,8 @@ packages=(
   nlohmann-json3-dev libglm-dev           # JSON, vector maths
   libopenexr-dev                          # EXR captures
   libstb-dev                              # PNG output of the shading pass
+  libtinygltf-dev                         # glTF 2.0 import (record --gltf)
+  assimp-testmodels                       # Khronos sample glTF files the tests import
   chromium                                # headless browser: the dashboard test renders results/dashboard
 )
 
