@@ -59,6 +59,10 @@ BenchRun parse_table_json(const json& doc, const Reader& r) {
   BenchRun run;
   run.format = "table";
   const json& table_value = r.member(doc, "", "table");
+  if (table_value.is_null())
+    r.fail("/table", "is null: this is the table of a capture that is not one of the paper's (scene '" +
+                         (doc.contains("scene") && doc["scene"].is_string() ? doc["scene"].get<std::string>() : std::string("?")) +
+                         "'); compare, export and dashboard key runs by paper table (1, 2) and do not read it yet");
   if (!table_value.is_number_integer()) r.fail("/table", "is not a table number");
   const int table = table_value.get<int>();
   if (table != 1 && table != 2) r.fail("/table", "is " + std::to_string(table) + ", not 1 or 2");

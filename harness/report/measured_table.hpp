@@ -16,9 +16,9 @@ namespace vsgl {
 
 inline constexpr int kTableSchemaVersion = 1;
 
-// One measured paper table (1: atrium, 2: conference).
+// One measured table: a paper table (1: atrium, 2: conference) or another capture (number 0).
 struct MeasuredTable {
-  int number = 1;
+  int number = 1;  // 0: not a paper table (no paper numbers beside it)
   std::string scene;
   std::string capture_dir;
   bool recorded_now = false;
