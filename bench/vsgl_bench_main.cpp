@@ -20,9 +20,18 @@ usage: vsgl-bench <command> [options]
 commands:
   devices [--json]            list Vulkan devices: type, driver, API version, timestamp support,
                               and the default (first discrete GPU, else integrated, virtual, CPU)
-  record  [options]           rasterize a procedural scene into a capture (EXR + JSON sidecar), with its BRSM PDF
+  record  [options]           rasterize a scene into a capture (EXR + JSON sidecar), with its BRSM PDF
       --scene NAME[,NAME]     atrium (Table 1), conference (Table 2), tiny (tests)   [atrium]
-      --out DIR               capture directory                              [captures/NAME]
+      --gltf FILE             a glTF 2.0 file (.gltf or .glb) instead: its default scene, materials,
+                              textures and normal maps (README "Your own scenes")
+      --camera NAME|INDEX     glTF: the file's camera        [the file's first, else framing]
+      --eye X,Y,Z --look-at X,Y,Z --fov DEG   glTF: a camera given here
+      --light-pos X,Y,Z --light-dir X,Y,Z --cone DEG --intensity W|R,G,B
+                              glTF: the spot light (replaces those values of the file's first
+                              KHR_lights_punctual spot, else of a spot placed above the bounds)
+      --ground                glTF: add a grey floor under the model (a lone convex model has no
+                              indirect light: its BRSM PDF is zero)
+      --out DIR               capture directory                  [captures/NAME; glTF: file stem]
       --gbuffer WxH           G-buffer size                                   [1920x1088]
       --rsm N                 RSM size N x N                                  [512]
       --frames F              animated sequence of F frames (DIR/frame_0000 ...)  [1]
@@ -30,6 +39,9 @@ commands:
   tables  [options]           time every generator on the paper's inputs: Tables 1 and 2 (+ Table 3
                               analog) as OUT/tableN.json + OUT/tableN.md, beside the paper's numbers
       --tables 1,2            which tables (1: captures/atrium, 2: captures/conference)  [1,2]
+      --capture DIR           time this capture instead (repeatable): a glTF scene's capture gives
+                              OUT/<scene>.json + .md ("table": null, no paper columns); a capture of
+                              atrium/conference gives that paper table
       --captures DIR          capture root; missing captures are recorded first   [captures]
       --gbuffer WxH, --rsm N  sizes of captures recorded because missing      [1920x1088, 512]
       --generators G[,G]      fis_tok15, fis_modified, kmeans_2d, kmeans_3d, kmeans_2d_segsum,

@@ -4,6 +4,8 @@
 // Device, driver, git commit and every capture hash are in the JSON's "context".
 //
 //   vsgl-gbench [google benchmark flags] [--vsgl_captures=DIR] [--vsgl_device=D] [--vsgl_tables=1,2]
+//               [--vsgl_capture=DIR ...]   (time these captures instead: benchmarks <scene>/..., or
+//                                           tableN/... for a capture of a paper table's scene)
 //               [--vsgl_generators=G,G] [--vsgl_camera_vsgls=N] [--vsgl_light_vsgls=N] [--vsgl_K=K]
 //               [--vsgl_iterations=I] [--vsgl_kmeans_iterations=I] [--vsgl_validate]
 //               [--vsgl_pyramid=texture|buffer] [--vsgl_mipmapping=single-pass|blit|per-level]
@@ -19,6 +21,7 @@
 
 #include <cstdio>
 #include <memory>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -30,6 +33,7 @@
 #include "bench/cli/gbench_tokens.hpp"
 #include "bench/cli/generator_options.hpp"
 #include "bench/cli/gpu_session.hpp"
+#include "harness/capture/capture_files.hpp"
 #include "harness/scene/capture_provisioning.hpp"
 #include "harness/vk/device.hpp"
 #include "harness/generators/device_view.hpp"
@@ -47,6 +51,7 @@ using namespace vsgl;
 struct Options {
   std::string captures = "captures";
   std::vector<int> tables{1, 2};
+  std::vector<std::string> capture_dirs;  // --vsgl_capture: instead of the paper's tables
   cli::GeneratorOptions generator;
   // Replays per benchmark. Fixed, because each iteration replays the whole case while reporting
   // one phase's manual time: letting Google Benchmark accumulate its min_time of a 20 us phase
@@ -57,8 +62,18 @@ struct Options {
 Options parse(cli::Args& args) {
   Options o;
   o.captures = args.string("--captures", "captures");
+  o.capture_dirs = args.values("--capture");
+  const auto tables = args.value("--tables");
+  if (!o.capture_dirs.empty() && tables)
+    throw UsageError("--vsgl_capture times the given captures; --vsgl_tables picks the paper's: give one of them");
   o.tables.clear();
-  for (const auto& s : args.list("--tables", "1,2")) {
+  if (!o.capture_dirs.empty()) {
+    o.generator = cli::read_generator_options(args);
+    if (o.generator.generators.empty()) o.generator.generators = generator_names();
+    o.replays = args.u32("--replays", 30, 1);
+    return o;
+  }
+  for (const auto& s : cli::Args(std::vector<std::string>{"--tables", tables.value_or("1,2")}).list("--tables", "1,2")) {
     if (s != "1" && s != "2") throw UsageError("--vsgl_tables takes 1, 2 or 1,2, not '" + s + "'");
     o.tables.push_back(s == "1" ? 1 : 2);
   }
@@ -71,6 +86,7 @@ Options parse(cli::Args& args) {
 // Everything the registered benchmarks replay; alive until the end of main.
 struct TableState {
   int number = 0;
+  std::string stem;  // "tableN", or the scene of another capture: the benchmarks' first name part
   Capture capture;
   std::unique_ptr<DeviceView> camera, light;
   std::vector<std::unique_ptr<VsglGenerator>> generators;
@@ -105,16 +121,29 @@ int run(int argc, char** argv) {
                                                             {"replays", o.replays}}
                                                  .dump());
 
+  // The inputs: the paper's tables (recorded when missing), or the captures given (loaded).
   std::vector<std::unique_ptr<TableState>> tables;
-  for (int number : o.tables) {
+  std::vector<std::pair<int, std::filesystem::path>> inputs;
+  for (int number : o.tables) inputs.emplace_back(number, std::filesystem::path(o.captures) / table_scene(number));
+  for (const auto& dir : o.capture_dirs) inputs.emplace_back(-1, dir);
+  std::set<std::string> stems;
+  for (const auto& [given, dir] : inputs) {
     auto t = std::make_unique<TableState>();
-    t->number = number;
-    const std::string scene = table_scene(number);
-    t->capture = provide_capture(device, scene, RecordSizes{}, std::filesystem::path(o.captures) / scene).capture;
-    benchmark::AddCustomContext("vsgl_table" + std::to_string(number) + "_capture",
-                                (std::filesystem::path(o.captures) / scene).string());
-    benchmark::AddCustomContext("vsgl_table" + std::to_string(number) + "_capture_hashes",
-                                capture_hashes_json(t->capture).dump());
+    if (given > 0) {
+      t->capture = provide_capture(device, table_scene(given), RecordSizes{}, dir).capture;
+      t->number = given;
+    } else {
+      t->capture = load_capture(dir);
+      t->number = paper_table_of(t->capture.meta);
+    }
+    t->stem = table_file_stem(t->number, t->capture.meta.scene);
+    if (!stems.insert(t->stem).second)
+      throw UsageError("two captures give the benchmarks " + t->stem + "/...: time captures of one scene separately");
+    benchmark::AddCustomContext("vsgl_" + t->stem + "_capture", dir.string());
+    benchmark::AddCustomContext("vsgl_" + t->stem + "_capture_hashes", capture_hashes_json(t->capture).dump());
+    if (t->capture.meta.source)
+      benchmark::AddCustomContext("vsgl_" + t->stem + "_source",
+                                  t->capture.meta.source->file + " " + t->capture.meta.source->content_hash);
     t->camera = std::make_unique<DeviceView>(upload_view(device, t->capture, ViewKind::kCamera));
     t->light = std::make_unique<DeviceView>(upload_view(device, t->capture, ViewKind::kLight));
     t->runner = std::make_unique<TimingRunner>(device, TimingOptions::defaults_for(info));
@@ -128,7 +157,7 @@ int run(int argc, char** argv) {
         for (int w = 0; w < 2; ++w) t->runner->replay_once(index);  // warm-up: discarded
         TimingRunner* runner = t->runner.get();
         const auto phases = t->generators.back()->phases();
-        const std::string prefix = "table" + std::to_string(number) + "/" + g + "/" + view_name(view->kind) + "/";
+        const std::string prefix = t->stem + "/" + g + "/" + view_name(view->kind) + "/";
         for (std::size_t p = 0; p <= phases.size(); ++p) {
           const bool total = p == phases.size();
           benchmark::RegisterBenchmark((prefix + (total ? "total" : phases[p])).c_str(),

@@ -13,6 +13,8 @@ packages=(
   libopenexr-dev                          # EXR captures
   libstb-dev                              # PNG output of the shading pass
   clang                                   # libFuzzer targets (tests/fuzz; the suite's fuzz smoke test)
+  libtinygltf-dev                         # glTF 2.0 import (record --gltf)
+  assimp-testmodels                       # Khronos sample glTF files the tests import
 )
 
 # Headless Chromium renders results/dashboard in the dashboard test. Debian's `chromium` is a real

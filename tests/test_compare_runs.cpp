@@ -93,6 +93,19 @@ struct TempDir {
   }
 };
 
+TEST(CompareRuns, RefusesTheTableOfAUserCaptureClearly) {
+  ojson doc = synthetic_table(1, noisy(1.0, 0.01));
+  doc["table"] = nullptr;
+  doc["scene"] = "Sponza";
+  try {
+    run_of(doc);
+    FAIL() << "a table of a user capture was read as a paper table";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("is null"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("scene 'Sponza'"), std::string::npos) << e.what();
+  }
+}
+
 TEST(CompareRuns, IdenticalRunsAreSameEverywhere) {
   const ojson doc = synthetic_table(1, noisy(1.0, 0.01));
   const RunComparison c = compare_runs(run_of(doc), run_of(doc), {});

@@ -17,6 +17,7 @@
 #include "harness/core/json_schema_subset.hpp"
 #include "harness/core/source_lines.hpp"
 #include "harness/report/tables_run.hpp"
+#include "harness/scene/capture_provisioning.hpp"
 
 namespace vsgl {
 namespace {
@@ -184,6 +185,44 @@ TEST_F(TablesRunTest, CaptureHashMismatchIsRefusedAndNothingIsWritten) {
     EXPECT_NE(std::string(e.what()).find("hash mismatch"), std::string::npos) << e.what();
   }
   EXPECT_FALSE(fs::exists(o.out_dir / "table1.json"));
+  fs::remove_all(root);
+}
+
+// --capture: a capture that is not a paper table's (here the tiny scene) gets OUT/<scene>.json with
+// "table": null, every paper value null and no paper column; a paper scene's capture is its table;
+// two captures of one scene are refused; compare refuses the null table with a clear message.
+TEST_F(TablesRunTest, UserCapturesGetTheirOwnTables) {
+  const fs::path root = fresh_dir("user");
+  record_scene_capture(device(), "tiny", RecordSizes{96, 64, 64}, 0, 1, root / "tiny");
+  TablesOptions o = tiny_options(root);
+  o.tables.clear();
+  o.captures = {root / "tiny"};
+  o.generators = {"fis_tok15", "fis_modified"};
+  const TablesOutcome out = run_tables(device(), o);
+  ASSERT_EQ(out.documents.size(), 1u);
+  ASSERT_TRUE(fs::exists(o.out_dir / "tiny.json"));
+  EXPECT_TRUE(fs::exists(o.out_dir / "tiny.md"));
+  const nlohmann::json doc = read_json(o.out_dir / "tiny.json");
+  EXPECT_TRUE(doc["table"].is_null());
+  EXPECT_EQ(doc["scene"], "tiny");
+  EXPECT_EQ(doc["capture"]["recorded_now"], false);
+  EXPECT_TRUE(doc["generators"]["fis_modified"]["total"]["paper_ms"].is_null());
+  EXPECT_GT(doc["generators"]["fis_modified"]["total"]["median_ms"].get<double>(), 0.0);
+  EXPECT_TRUE(doc["ratios"]["modified_minus_tok15_us"]["total"]["paper"].is_null());
+  EXPECT_EQ(doc["claims"].size(), 6u);
+  EXPECT_TRUE(validate_against_schema(doc, read_json(kSchema)).empty());
+  // No paper column in the timings or the ratios (Table 3's counts are the same for any scene).
+  const std::string& md = out.markdown[0];
+  EXPECT_EQ(md.substr(0, md.find("### Table 3")).find("paper |"), std::string::npos) << md;
+  EXPECT_NE(out.markdown[0].find("## Scene tiny"), std::string::npos);
+
+  o.captures = {root / "tiny", root / "tiny"};
+  try {
+    run_tables(device(), o);
+    FAIL() << "two captures of one scene were accepted";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("both of scene 'tiny'"), std::string::npos) << e.what();
+  }
   fs::remove_all(root);
 }
 

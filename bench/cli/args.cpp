@@ -37,6 +37,23 @@ std::optional<std::string> Args::value(const std::string& name) {
   return out;
 }
 
+std::vector<std::string> Args::values(const std::string& name) {
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < tokens_.size(); ++i) {
+    if (used_[i]) continue;
+    if (tokens_[i] == name) {
+      if (i + 1 >= tokens_.size()) throw UsageError(name + " needs a value");
+      used_[i] = used_[i + 1] = true;
+      out.push_back(tokens_[i + 1]);
+      ++i;
+    } else if (tokens_[i].rfind(name + "=", 0) == 0) {
+      used_[i] = true;
+      out.push_back(tokens_[i].substr(name.size() + 1));
+    }
+  }
+  return out;
+}
+
 std::string Args::string(const std::string& name, const std::string& fallback) {
   return value(name).value_or(fallback);
 }

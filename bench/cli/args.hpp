@@ -14,7 +14,9 @@ class Args {
   explicit Args(std::vector<std::string> tokens) : tokens_(std::move(tokens)), used_(tokens_.size(), false) {}
 
   bool flag(const std::string& name);
-  std::optional<std::string> value(const std::string& name);
+  std::optional<std::string> value(const std::string& name);  // the last occurrence
+  // Every occurrence, in order (an option that may be repeated: --capture A --capture B).
+  std::vector<std::string> values(const std::string& name);
   std::string string(const std::string& name, const std::string& fallback);
   // "a,b,c" -> {"a", "b", "c"} (empty items dropped).
   std::vector<std::string> list(const std::string& name, const std::string& fallback);

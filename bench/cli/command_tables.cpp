@@ -47,7 +47,11 @@ int run_tables(Args& args) {
   o.captures_dir = args.string("--captures", "captures");
   const auto gbuffer = args.size("--gbuffer", {1920, 1088});  // only for captures recorded now
   o.record_sizes = RecordSizes{gbuffer.first, gbuffer.second, args.u32("--rsm", 512, 1)};
-  o.tables = parse_tables(args.string("--tables", "1,2"));
+  const auto tables_arg = args.value("--tables");
+  for (const auto& c : args.values("--capture")) o.captures.emplace_back(c);
+  if (!o.captures.empty() && tables_arg)
+    throw UsageError("--capture times the given captures; --tables picks the paper's: give one of them");
+  o.tables = o.captures.empty() ? parse_tables(tables_arg.value_or("1,2")) : std::vector<int>{};
   const GeneratorOptions gen = read_generator_options(args);
   if (!gen.generators.empty()) o.generators = gen.generators;
   o.camera_vsgls = gen.camera_vsgls;

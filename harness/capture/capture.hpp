@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -64,8 +65,20 @@ struct SpotLightDesc {
   float far_plane = 100.0f;
 };
 
+// Where the scene of a capture came from when it is a user's file rather than a procedural scene
+// (sidecar key "source"; absent for the procedural scenes).
+struct SceneSource {
+  std::string format;        // "gltf"
+  std::string file;          // the file as named on the command line (escaped)
+  std::string content_hash;  // "fnv1a64:<16 hex>" over the file, its buffers and its decoded images
+  uint32_t triangles = 0;
+  std::string camera;        // which camera was used, in words
+  std::string light;         // which light was used, in words
+};
+
 struct CaptureMeta {
   std::string scene;
+  std::optional<SceneSource> source;  // a user's file; none for the procedural scenes
   uint32_t frame = 0;
   uint32_t frames = 1;
   CameraDesc camera;

@@ -98,6 +98,16 @@ std::string sidecar_text(const CaptureMeta& meta, const Capture& capture) {
   light["view"] = mat4_json(meta.light_view);
   light["projection"] = mat4_json(meta.light_projection);
   doc["light"] = std::move(light);
+  if (meta.source) {
+    ordered_json source;
+    source["format"] = meta.source->format;
+    source["file"] = meta.source->file;
+    source["content_hash"] = meta.source->content_hash;
+    source["triangles"] = meta.source->triangles;
+    source["camera"] = meta.source->camera;
+    source["light"] = meta.source->light;
+    doc["source"] = std::move(source);
+  }
   doc["brsm_build_ms"] = meta.brsm_build_ms;
   doc["gbuffer"] = view_json(capture.gbuffer, meta.gbuffer_hashes);
   doc["rsm"] = view_json(capture.rsm, meta.rsm_hashes);
@@ -241,6 +251,19 @@ CaptureMeta read_meta(const JsonReader& reader, const json& doc) {
   }
   read_camera(reader, doc, meta);
   read_light(reader, doc, meta);
+  if (doc.contains("source")) {
+    const json& source = reader.object(doc, "", "source");
+    SceneSource src;
+    src.format = reader.string(source, "source", "format");
+    if (src.format != "gltf") reader.fail("", "key \"source.format\" is \"" + src.format + "\", expected \"gltf\"");
+    src.file = reader.string(source, "source", "file");
+    src.content_hash = reader.string(source, "source", "content_hash");
+    src.triangles = reader.uint32(source, "source", "triangles");
+    if (src.triangles == 0) reader.fail("", "key \"source.triangles\" is 0");
+    src.camera = reader.string(source, "source", "camera");
+    src.light = reader.string(source, "source", "light");
+    meta.source = std::move(src);
+  }
   meta.brsm_build_ms = reader.number(doc, "", "brsm_build_ms");
   if (meta.brsm_build_ms < 0.0) reader.fail("", "key \"brsm_build_ms\" is negative");
   return meta;

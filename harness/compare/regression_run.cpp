@@ -67,6 +67,10 @@ BenchRun parse_table_json(const json& doc, const Reader& r) {
   BenchRun run;
   run.format = "table";
   const json& table_value = r.member(doc, "", "table");
+  if (table_value.is_null())
+    r.fail("/table", "is null: this is the table of a capture that is not one of the paper's (scene '" +
+                         (doc.contains("scene") && doc["scene"].is_string() ? printable_text(doc["scene"].get<std::string>()) : std::string("?")) +
+                         "'); compare, export and dashboard key runs by paper table (1, 2) and do not read it yet");
   if (!table_value.is_number_integer() || (table_value != 1 && table_value != 2))
     r.fail("/table", "is " + printable_text(table_value.dump()) + ", not 1 or 2");
   const int table = table_value.get<int>();

@@ -23,9 +23,9 @@ struct ViewExtent {
   uint32_t height = 0;
 };
 
-// One measured paper table (1: atrium, 2: conference).
+// One measured table: a paper table (1: atrium, 2: conference) or another capture (number 0).
 struct MeasuredTable {
-  int number = 1;
+  int number = 1;  // 0: not a paper table (no paper numbers beside it)
   std::string scene;
   std::string capture_dir;
   bool recorded_now = false;

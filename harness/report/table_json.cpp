@@ -202,8 +202,15 @@ nlohmann::ordered_json table_json(const MeasuredTable& t, const MeasuredTable* o
   const DeviceInfo& d = ctx.device;
   ojson doc;
   doc["schema_version"] = kTableSchemaVersion;
-  doc["table"] = t.number;
-  doc["title"] = "Computation times of VSGL generation (ms), Table " + std::to_string(t.number) + " of Tokuyoshi 2016";
+  if (t.number != 0) {
+    doc["table"] = t.number;
+    doc["title"] = "Computation times of VSGL generation (ms), Table " + std::to_string(t.number) + " of Tokuyoshi 2016";
+  } else {  // a user's capture: the paper has no numbers for it (every "paper" value is null)
+    doc["table"] = nullptr;
+    doc["title"] = "Computation times of VSGL generation (ms) on scene " + t.scene +
+                   ", measured as for the tables of Tokuyoshi 2016";
+  }
+  doc["scene"] = t.scene;
   doc["unit"] = "ms";
   doc["device"] = to_json(d);
   doc["driver"] = ojson{{"name", d.driver_name}, {"info", d.driver_info}, {"version", driver_version_string(d)}};

@@ -45,42 +45,56 @@ std::string table_markdown(const ojson& t) {
   std::ostringstream os;
   const ojson& gens = t.at("generators");
   const ojson& views = t.at("config").at("views");
-  os << "## Table " << t.at("table").get<int>() << ": " << t.at("title").get<std::string>() << "\n\n";
+  // The paper's columns only for the paper's tables; another capture has no paper numbers.
+  const bool paper = t.at("table").is_number();
+  if (paper) {
+    os << "## Table " << t.at("table").get<int>() << ": " << t.at("title").get<std::string>() << "\n\n";
+  } else {
+    os << "## Scene " << t.at("capture").at("scene").get<std::string>() << ": " << t.at("title").get<std::string>() << "\n\n";
+  }
   os << "Scene `" << t.at("capture").at("scene").get<std::string>() << "` on **" << t.at("device").at("name").get<std::string>()
      << "** (" << t.at("driver").at("name").get<std::string>() << " " << t.at("driver").at("version").get<std::string>()
-     << ", Vulkan " << t.at("api_version").get<std::string>() << "); paper: " << t.at("paper").at("gpu").get<std::string>()
-     << ". Median of " << t.at("timing").at("repetitions").get<int>() << " repetitions (stop: "
+     << ", Vulkan " << t.at("api_version").get<std::string>() << ")";
+  if (paper) os << "; paper: " << t.at("paper").at("gpu").get<std::string>();
+  const ojson& capture = t.at("capture");
+  if (capture.contains("source")) {
+    const ojson& src = capture.at("source");
+    os << "; from " << src.at("format").get<std::string>() << " file `" << src.at("file").get<std::string>() << "` ("
+       << src.at("triangles").get<uint64_t>() << " triangles, " << src.at("content_hash").get<std::string>() << ")";
+  }
+  os << ". Median of " << t.at("timing").at("repetitions").get<int>() << " repetitions (stop: "
      << t.at("timing").at("stop_reason").get<std::string>() << ", worst IQR/median "
      << fixed(t.at("timing").at("worst_relative_iqr").get<double>()) << "), ms.\n\n";
 
   std::vector<std::string> head{""}, rule{"---"};
   for (const auto& [g, gj] : gens.items()) {
     head.push_back(gj.at("label").get<std::string>());
+    rule.push_back("---:");
+    if (!paper) continue;
     head.push_back("paper");
     rule.push_back("---:");
-    rule.push_back("---:");
   }
+  const std::size_t per_generator = paper ? 2 : 1;
   row(os, head);
   row(os, rule);
   for (const char* view : {"camera_view", "light_view"}) {
     const ojson& vc = views.at(view);
     std::vector<std::string> title{std::string("**") + (std::string(view) == "camera_view" ? "PDF for BRSM (camera view)" : "PDF (light view)") +
                                    "**, N = " + std::to_string(vc.at("vsgl_count").get<int>())};
-    for (std::size_t i = 0; i < 2 * gens.size(); ++i) title.emplace_back("");
+    for (std::size_t i = 0; i < per_generator * gens.size(); ++i) title.emplace_back("");
     row(os, title);
     for (std::size_t p = 0; p < 3; ++p) {
       std::vector<std::string> cells{"phase " + std::to_string(p + 1)};
       for (const auto& [g, gj] : gens.items()) {
         const ojson& phases = gj.at("views").at(view).at("phases");
         if (p >= phases.size()) {
-          cells.emplace_back("");
-          cells.emplace_back("");
+          for (std::size_t i = 0; i < per_generator; ++i) cells.emplace_back("");
           continue;
         }
         auto it = phases.begin();
         std::advance(it, static_cast<std::ptrdiff_t>(p));
         cells.push_back(phase_title(it.key(), view) + ": " + fixed(it.value().at("median_ms").get<double>()));
-        cells.push_back(paper_cell(it.value().at("paper_ms")));
+        if (paper) cells.push_back(paper_cell(it.value().at("paper_ms")));
       }
       row(os, cells);
     }
@@ -88,21 +102,25 @@ std::string table_markdown(const ojson& t) {
   std::vector<std::string> total{"**Total**"};
   for (const auto& [g, gj] : gens.items()) {
     total.push_back("**" + fixed(gj.at("total").at("median_ms").get<double>()) + "**");
-    total.push_back(paper_cell(gj.at("total").at("paper_ms")));
+    if (paper) total.push_back(paper_cell(gj.at("total").at("paper_ms")));
   }
   row(os, total);
 
   const ojson& r = t.at("ratios");
   if (!r.empty()) {
     os << "\n### Ratios the paper argues with\n\n";
-    row(os, {"ratio", "this run", "paper"});
-    row(os, {"---", "---:", "---:"});
+    const auto ratio_row = [&](const std::string& name, const std::string& measured, const std::string& paper_value) {
+      if (paper) row(os, {name, measured, paper_value});
+      else row(os, {name, measured});
+    };
+    ratio_row("ratio", "this run", "paper");
+    ratio_row("---", "---:", "---:");
     if (r.contains("modified_minus_tok15_us"))
       for (const auto& [k, v] : r["modified_minus_tok15_us"].items())
-        row(os, {"modified − Tok15, " + k + " (µs)", fixed(v.at("measured").get<double>(), 1), paper_cell(v.at("paper"), 1)});
+        ratio_row("modified − Tok15, " + k + " (µs)", fixed(v.at("measured").get<double>(), 1), paper_cell(v.at("paper"), 1));
     if (r.contains("kmeans_over_modified"))
       for (const auto& [k, v] : r["kmeans_over_modified"].items())
-        row(os, {k + " / modified total", fixed(v.at("measured").get<double>(), 2), paper_cell(v.at("paper"), 2)});
+        ratio_row(k + " / modified total", fixed(v.at("measured").get<double>(), 2), paper_cell(v.at("paper"), 2));
     if (r.contains("table1_to_table2"))
       for (const auto& [k, v] : r["table1_to_table2"].items())
         row(os, {k + " total, Table 2 / Table 1", fixed(v.at("measured").get<double>(), 3), paper_cell(v.at("paper"), 3)});

@@ -8,6 +8,7 @@
 #include "harness/generators/device_view.hpp"
 #include "harness/generators/generator_registry.hpp"
 #include "harness/report/run_context.hpp"
+#include "harness/capture/capture_files.hpp"
 #include "harness/scene/capture_provisioning.hpp"
 #include "harness/timing/copy_bandwidth.hpp"
 #include "harness/timing/timing_runner.hpp"
@@ -15,8 +16,9 @@
 
 namespace vsgl {
 
-TableMeasurement measure_table(Device& device, const TablesOptions& o, int number,
+TableMeasurement measure_table(Device& device, const TablesOptions& o, const TableInput& input,
                                const std::function<void(const TablesEvent&)>& on_event) {
+  const int number = input.paper_table;
   using ojson = nlohmann::ordered_json;
   const auto say = [&](const std::string& msg) {
     if (on_event) on_event(TablesEvent{msg, nullptr, number});
@@ -24,19 +26,29 @@ TableMeasurement measure_table(Device& device, const TablesOptions& o, int numbe
   TableMeasurement out;
   MeasuredTable& t = out.table;
   t.number = number;
-  t.scene = table_scene(number);
   t.generators = o.generators;
-  const std::filesystem::path dir = o.captures_dir / t.scene;
+  const std::filesystem::path& dir = input.capture_dir;
   t.capture_dir = dir.string();
-  if (!std::filesystem::exists(dir / "capture.json")) say("recording the missing capture " + dir.string());
-  ProvidedCapture provided = provide_capture(device, t.scene, o.record_sizes, dir);
+  ProvidedCapture provided;
+  if (input.record_if_missing) {
+    if (!std::filesystem::exists(dir / "capture.json")) say("recording the missing capture " + dir.string());
+    provided = provide_capture(device, table_scene(number), o.record_sizes, dir);
+  } else {
+    provided.capture = load_capture(dir);  // every hash checked
+  }
   t.recorded_now = provided.recorded;
   const Capture& capture = provided.capture;
+  t.scene = capture.meta.scene;
   t.capture = ojson{{"hashes", capture_hashes_json(capture)},
                     {"frame", capture.meta.frame},
                     {"recorded_on", capture.meta.device},
                     {"tool_version", capture.meta.tool_version},
                     {"brsm_build_ms", capture.meta.brsm_build_ms}};
+  if (capture.meta.source) {
+    const SceneSource& src = *capture.meta.source;
+    t.capture["source"] = ojson{{"format", src.format},         {"file", src.file},     {"content_hash", src.content_hash},
+                                {"triangles", src.triangles},   {"camera", src.camera}, {"light", src.light}};
+  }
   out.config = config_json(o, capture, device.info());
   t.views["camera_view"] = ViewExtent{capture.gbuffer.width, capture.gbuffer.height};
   t.views["light_view"] = ViewExtent{capture.rsm.width, capture.rsm.height};
@@ -66,8 +78,8 @@ TableMeasurement measure_table(Device& device, const TablesOptions& o, int numbe
       if (o.wrap_generator) generators.back() = o.wrap_generator(device, std::move(generators.back()));
       runner.add(TimingCase{g, view_name(view->kind), generators.back().get()});
     }
-  say("timing table " + std::to_string(number) + " (" + t.scene + "): " + std::to_string(generators.size()) +
-                  " cases");
+  say("timing " + (number != 0 ? "table " + std::to_string(number) + " (" + t.scene + ")" : "capture " + t.scene) + ": " +
+      std::to_string(generators.size()) + " cases");
   t.timing = runner.run([&](const TimingProgress& p) {
     if (on_event) on_event(TablesEvent{"", &p, number});
   });

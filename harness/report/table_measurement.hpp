@@ -1,5 +1,6 @@
 #pragma once
-// Step 2 of `tables`, once per table: provide its capture (record it when missing), upload both
+// Step 2 of `tables`, once per table input: provide its capture (record a paper table's when
+// missing; a --capture must exist), upload both
 // views, build and record every generator on each (SPEC §9: inputs uploaded and command buffers
 // recorded before any timing), and time them interleaved with the protocol of timing_runner.hpp.
 #include <functional>
@@ -18,7 +19,7 @@ struct TableMeasurement {
   nlohmann::ordered_json config;  // config_json() of its capture
 };
 
-TableMeasurement measure_table(Device& device, const TablesOptions& options, int number,
+TableMeasurement measure_table(Device& device, const TablesOptions& options, const TableInput& input,
                                const std::function<void(const TablesEvent&)>& on_event);
 
 }  // namespace vsgl

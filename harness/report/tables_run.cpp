@@ -1,7 +1,10 @@
 #include "harness/report/tables_run.hpp"
 
+#include <algorithm>
+#include <map>
 #include <set>
 
+#include "harness/capture/capture_sidecar.hpp"
 #include "harness/core/atomic_file.hpp"
 #include "harness/core/error.hpp"
 #include "harness/core/json_schema_subset.hpp"
@@ -17,9 +20,15 @@ namespace {
 
 using ojson = nlohmann::ordered_json;
 
+// "table1", "table22": the names compare/dashboard read as paper tables.
+bool is_reserved_stem(const std::string& stem) {
+  return stem.size() > 5 && stem.rfind("table", 0) == 0 &&
+         std::all_of(stem.begin() + 5, stem.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
 void check_options(const TablesOptions& o) {
   if (o.out_dir.empty()) throw UsageError("tables needs an output directory");
-  if (o.tables.empty()) throw UsageError("no table to produce");
+  if (o.tables.empty() && o.captures.empty()) throw UsageError("no table to produce");
   std::set<int> seen;
   for (int t : o.tables) {
     table_scene(t);
@@ -42,6 +51,40 @@ void check_options(const TablesOptions& o) {
 
 }  // namespace
 
+int paper_table_of(const CaptureMeta& meta) {
+  if (meta.source) return 0;  // a user's file is never a paper scene, whatever its name
+  if (meta.scene == "atrium") return 1;
+  if (meta.scene == "conference") return 2;
+  return 0;
+}
+
+std::string table_file_stem(int paper_table, const std::string& scene) {
+  return paper_table != 0 ? "table" + std::to_string(paper_table) : scene;
+}
+
+std::vector<TableInput> table_inputs(const TablesOptions& o) {
+  std::vector<TableInput> out;
+  if (o.captures.empty()) {
+    for (int t : o.tables) out.push_back(TableInput{o.captures_dir / table_scene(t), t, true});
+    return out;
+  }
+  std::map<std::string, std::filesystem::path> stems;  // output stem -> the capture that takes it
+  for (const auto& dir : o.captures) {
+    const CaptureMeta meta = read_sidecar(dir / kSidecarName).meta;
+    const int table = paper_table_of(meta);
+    const std::string stem = table_file_stem(table, meta.scene);
+    if (table == 0 && is_reserved_stem(stem))
+      throw UsageError("capture " + dir.string() + ": its scene is named '" + stem +
+                       "', which is the name of a paper table's output; rename the file it was recorded from");
+    const auto [it, fresh] = stems.emplace(stem, dir);
+    if (!fresh)
+      throw UsageError("captures " + it->second.string() + " and " + dir.string() + " are both of scene '" + meta.scene +
+                       "': their tables would both be " + stem + ".json; time them in separate runs (--out)");
+    out.push_back(TableInput{dir, table, false});
+  }
+  return out;
+}
+
 std::string table_scene(int table) {
   if (table == 1) return "atrium";
   if (table == 2) return "conference";
@@ -54,8 +97,9 @@ TablesOutcome run_tables(Device& device, const TablesOptions& o, const std::func
   // 1. Everything that is not a measurement, checked before any timing.
   const RunContext run = make_run_context(device.info(), o);
   // 2. Each table: its capture, its generators, their interleaved timing.
+  const std::vector<TableInput> inputs = table_inputs(o);
   std::vector<TableMeasurement> measured;
-  for (int number : o.tables) measured.push_back(measure_table(device, o, number, on_event));
+  for (const TableInput& input : inputs) measured.push_back(measure_table(device, o, input, on_event));
   // 3. The documents, each complete and schema-valid before anything is written.
   TablesOutcome out;
   std::filesystem::create_directories(o.out_dir);
@@ -63,7 +107,9 @@ TablesOutcome run_tables(Device& device, const TablesOptions& o, const std::func
   for (std::size_t i = 0; i < measured.size(); ++i) {
     const MeasuredTable* other = nullptr;  // the other paper table, for the Table 1 -> 2 change
     for (std::size_t j = 0; j < measured.size(); ++j)
-      if (j != i) other = &measured[j].table;
+      if (j != i && measured[i].table.number != 0 && measured[j].table.number != 0 &&
+          measured[j].table.number != measured[i].table.number)
+        other = &measured[j].table;
     ReportContext table_ctx = run.report;
     table_ctx.config = measured[i].config;
     ojson doc;
@@ -71,15 +117,16 @@ TablesOutcome run_tables(Device& device, const TablesOptions& o, const std::func
       doc = table_json(measured[i].table, other, table_ctx);
       require_finite_numbers(doc);
     } catch (const std::invalid_argument& e) {
-      throw DeviceError("table " + std::to_string(measured[i].table.number) + ": " + e.what());
+      throw DeviceError("table " + table_file_stem(measured[i].table.number, measured[i].table.scene) + ": " + e.what());
     }
     const auto problems = validate_against_schema(nlohmann::json::parse(doc.dump()), run.schema);
     if (!problems.empty()) {
       std::string all;
       for (const auto& p : problems) all += "\n  " + p;
-      throw std::logic_error("table " + std::to_string(measured[i].table.number) + " does not conform to " + o.schema.string() + ":" + all);
+      throw std::logic_error("table " + table_file_stem(measured[i].table.number, measured[i].table.scene) +
+                             " does not conform to " + o.schema.string() + ":" + all);
     }
-    const std::string stem = "table" + std::to_string(measured[i].table.number);
+    const std::string stem = table_file_stem(measured[i].table.number, measured[i].table.scene);
     files.emplace_back(o.out_dir / (stem + ".json"), doc.dump(2) + "\n");
     out.markdown.push_back(table_markdown(doc));
     if (!o.json_only) files.emplace_back(o.out_dir / (stem + ".md"), out.markdown.back());

@@ -2,7 +2,10 @@
 // `vsgl-bench tables` as a library function (the CLI and the tests call it): provide the captures
 // (record the paper's scenes when missing, else load and validate them), time every generator on
 // both views of each table with the protocol of timing_runner.hpp, and write OUT/tableN.json
-// (validated against results/schema/table.schema.json) and OUT/tableN.md, atomically.
+// (validated against results/schema/table.schema.json) and OUT/tableN.md, atomically. With
+// `captures` (--capture DIR ...) it times those captures instead, one table each: a capture of a
+// paper table's scene is that table (tableN.*, the paper's numbers beside it), any other capture
+// (a glTF file's, the tiny scene's) is OUT/<scene>.json and .md with "table": null.
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -10,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "harness/capture/capture.hpp"
 #include "harness/scene/capture_recorder.hpp"
 #include "harness/generators/generator_registry.hpp"
 #include "harness/timing/copy_bandwidth.hpp"
@@ -23,6 +27,7 @@ struct TablesOptions {
   std::filesystem::path captures_dir = "captures";  // Table 1: DIR/atrium, Table 2: DIR/conference
   std::filesystem::path out_dir;                     // required
   std::vector<int> tables{1, 2};
+  std::vector<std::filesystem::path> captures;     // --capture: time these instead (never recorded here)
   std::vector<std::string> generators = generator_names();
   uint32_t camera_vsgls = 2048;  // N on the G-buffer (the paper's)
   uint32_t light_vsgls = 1024;   // N on the RSM (the paper's)
@@ -47,10 +52,29 @@ struct TablesOptions {
 // Scene and capture sub-directory of a paper table; throws UsageError for a table other than 1, 2.
 std::string table_scene(int table);
 
+// The paper table a capture is the input of: 1 or 2 for a procedural atrium or conference
+// capture, 0 for any other (a user's file, the tiny scene).
+int paper_table_of(const CaptureMeta& meta);
+
+// One table to produce: a capture and, for the paper's tables, its number.
+struct TableInput {
+  std::filesystem::path capture_dir;
+  int paper_table = 0;             // 1, 2, or 0: not a paper table
+  bool record_if_missing = false;  // the paper's captures under --captures only
+};
+
+// What run_tables() will measure, in order: the paper tables of `tables`, or one per `captures`
+// entry (each loaded once to read its scene). Throws UsageError for two captures of one scene, and
+// what load_capture() throws.
+std::vector<TableInput> table_inputs(const TablesOptions& options);
+
+// The file stem of a table's outputs: "tableN" for a paper table, else the scene's name.
+std::string table_file_stem(int paper_table, const std::string& scene);
+
 struct TablesEvent {
   std::string message;      // a line for the log ("recording captures/atrium ...")
   const TimingProgress* progress = nullptr;  // non-null during timing
-  int table = 0;
+  int table = 0;  // the paper table, 0 for another capture
 };
 
 struct TablesOutcome {

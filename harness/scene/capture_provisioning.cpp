@@ -4,20 +4,48 @@
 #include <nlohmann/json.hpp>
 
 #include "harness/capture/capture_files.hpp"
+#include "harness/core/error.hpp"
 #include "harness/scene/brsm_pdf.hpp"
 #include "harness/scene/scene.hpp"
 
 namespace vsgl {
 
-RecordedCapture record_scene_capture(Device& device, const std::string& scene_name, const RecordSizes& sizes,
-                                     uint32_t frame, uint32_t frames, const std::filesystem::path& dir) {
+namespace {
+
+double plane_sum(const std::vector<float>& plane) {
+  double sum = 0.0;
+  for (float v : plane) sum += static_cast<double>(v);
+  return sum;
+}
+
+// What would make every generator's input empty, named in terms of the scene.
+void refuse_empty_views(const Capture& capture, const std::string& scene, bool with_brsm) {
+  const std::string where = "scene '" + scene + "': ";
+  if (plane_sum(capture.gbuffer.planes[kValid]) == 0.0)
+    throw InputError(where + "the camera sees no surface (every G-buffer texel is empty): choose another camera");
+  if (plane_sum(capture.rsm.planes[kValid]) == 0.0)
+    throw InputError(where + "the spot light reaches no surface (every RSM texel is empty): choose another light");
+  if (plane_sum(capture.gbuffer.planes[kPdf]) == 0.0)
+    throw InputError(where + "the camera PDF is zero everywhere (every surface the camera sees is black)");
+  if (with_brsm && plane_sum(capture.rsm.planes[kPdf]) == 0.0)
+    throw InputError(where + "the BRSM PDF is zero everywhere: no flux the light brings reaches what the camera "
+                     "sees (is the cone outside the camera's view, or are the lit surfaces black?)");
+}
+
+}  // namespace
+
+RecordedCapture record_capture(Device& device, const Scene& scene, const RecordSizes& sizes, uint32_t frame,
+                               uint32_t frames, const std::filesystem::path& dir,
+                               const std::optional<SceneSource>& source) {
   const auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
   RecordedCapture out;
   const auto t0 = std::chrono::steady_clock::now();
-  const Scene scene = make_scene(scene_name, frame, frames);
   CaptureRecorder recorder(device);
   out.capture = recorder.record(scene, sizes, frame, frames);
+  out.capture.meta.source = source;
+  refuse_empty_views(out.capture, scene.name, false);
   const BrsmBuild brsm = build_brsm_pdf(device, out.capture);  // SPEC §8: once per capture
+  refuse_empty_views(out.capture, scene.name, true);
   const auto t1 = std::chrono::steady_clock::now();
   out.capture.meta = write_capture(out.capture, dir);
   const auto t2 = std::chrono::steady_clock::now();
@@ -26,6 +54,11 @@ RecordedCapture record_scene_capture(Device& device, const std::string& scene_na
   out.brsm_camera_vsgls = brsm.camera_vsgls;
   out.write_ms = ms(t1, t2);
   return out;
+}
+
+RecordedCapture record_scene_capture(Device& device, const std::string& scene_name, const RecordSizes& sizes,
+                                     uint32_t frame, uint32_t frames, const std::filesystem::path& dir) {
+  return record_capture(device, make_scene(scene_name, frame, frames), sizes, frame, frames, dir);
 }
 
 ProvidedCapture provide_capture(Device& device, const std::string& scene, const RecordSizes& sizes,

@@ -3,6 +3,7 @@
 // BRSM PDF once per capture (SPEC §8), write atomically), shared by `tables`, which records the
 // paper's captures when they are missing and otherwise loads and validates them.
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json_fwd.hpp>
@@ -10,6 +11,7 @@
 #include "harness/capture/capture.hpp"
 #include "harness/capture/capture_files.hpp"
 #include "harness/scene/capture_recorder.hpp"
+#include "harness/scene/scene.hpp"
 
 namespace vsgl {
 
@@ -23,8 +25,16 @@ struct RecordedCapture {
   double write_ms = 0;
 };
 
-// Renders frame `frame` of `frames` of scene `scene`, builds its BRSM PDF and writes it to `dir`.
-// Throws InputError for an unknown scene, and what write_capture() throws.
+// Renders frame `frame` of `frames` of `scene`, builds its BRSM PDF and writes it to `dir`, the
+// sidecar naming `source` (a user's file) when given. A capture in which the generators would
+// have nothing to work on is refused before anything is written (InputError): a camera or a
+// light that sees no surface, an all-zero camera PDF or BRSM PDF.
+RecordedCapture record_capture(Device& device, const Scene& scene, const RecordSizes& sizes, uint32_t frame,
+                               uint32_t frames, const std::filesystem::path& dir,
+                               const std::optional<SceneSource>& source = std::nullopt);
+
+// record_capture() of the procedural scene named `scene`. Throws InputError for an unknown scene,
+// and what write_capture() throws.
 RecordedCapture record_scene_capture(Device& device, const std::string& scene, const RecordSizes& sizes, uint32_t frame,
                                      uint32_t frames, const std::filesystem::path& dir);
 

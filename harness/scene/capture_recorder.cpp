@@ -3,6 +3,9 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <map>
+#include <memory>
+#include <optional>
 #include <glm/gtc/type_ptr.hpp>
 
 #include "harness/vk/buffer.hpp"
@@ -15,6 +18,7 @@
 #include "harness/capture/view_matrices.hpp"
 #include "harness/vk/vk_check.hpp"
 #include "kernels/include/interface/raster.h"
+#include "harness/scene/scene_textures.hpp"
 
 namespace vsgl {
 namespace {
@@ -23,6 +27,17 @@ constexpr uint32_t kTargets = 5;  // position+valid, normal, diffuse, specular+r
 constexpr VkFormat kColorFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
 
 using gpu::RasterPush;  // kernels/include/interface/raster.h
+
+// Mirrors MaterialBlock in kernels/include/scene_raster.glsl (std140).
+struct MaterialBlock {
+  glm::vec4 base_color_factor;
+  glm::vec4 factors;  // metallic, perceptual roughness, normal scale, alpha cutoff
+  glm::uvec4 mode;    // model (0 constants, 1 metallic-roughness, 2 vertex albedo), alpha mask, double-sided
+  glm::uvec4 maps;    // base colour, metallic-roughness, normal map bound
+};
+static_assert(sizeof(MaterialBlock) == 64);
+constexpr uint32_t kModelConstants = 0;
+constexpr uint32_t kMapBindings = 3;  // base colour, metallic-roughness, normal (bindings 1..3)
 
 VkFormat pick_depth_format(const Device& device) {
   for (VkFormat f : {VK_FORMAT_D32_SFLOAT, VK_FORMAT_X8_D24_UNORM_PACK32, VK_FORMAT_D16_UNORM}) {
@@ -106,21 +121,37 @@ UniqueHandle<VkRenderPass> make_render_pass(Device& device, VkFormat depth_forma
   return UniqueHandle<VkRenderPass>(device.get(), pass, vkDestroyRenderPass);
 }
 
-struct RasterPipeline {
-  UniqueHandle<VkPipelineLayout> layout;
-  UniqueHandle<VkPipeline> pipeline;
-};
+UniqueHandle<VkDescriptorSetLayout> make_material_set_layout(Device& device) {
+  std::array<VkDescriptorSetLayoutBinding, 1 + kMapBindings> bindings{};
+  bindings[0] = {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr};
+  for (uint32_t b = 1; b <= kMapBindings; ++b)
+    bindings[b] = {b, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr};
+  VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+  info.bindingCount = static_cast<uint32_t>(bindings.size());
+  info.pBindings = bindings.data();
+  VkDescriptorSetLayout layout = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateDescriptorSetLayout(device.get(), &info, nullptr, &layout));
+  device.set_name(layout, VK_OBJECT_TYPE_DESCRIPTOR_SET_LAYOUT, "recorder.material_set_layout");
+  return UniqueHandle<VkDescriptorSetLayout>(device.get(), layout, vkDestroyDescriptorSetLayout);
+}
 
-RasterPipeline make_pipeline(Device& device, VkRenderPass pass) {
+UniqueHandle<VkPipelineLayout> make_pipeline_layout(Device& device, VkDescriptorSetLayout set_layout) {
   VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(RasterPush)};
   VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+  layout_info.setLayoutCount = 1;
+  layout_info.pSetLayouts = &set_layout;
   layout_info.pushConstantRangeCount = 1;
   layout_info.pPushConstantRanges = &push;
   VkPipelineLayout layout = VK_NULL_HANDLE;
   VK_CHECK(vkCreatePipelineLayout(device.get(), &layout_info, nullptr, &layout));
-  RasterPipeline out;
-  out.layout = UniqueHandle<VkPipelineLayout>(device.get(), layout, vkDestroyPipelineLayout);
+  device.set_name(layout, VK_OBJECT_TYPE_PIPELINE_LAYOUT, "recorder.pipeline_layout");
+  return UniqueHandle<VkPipelineLayout>(device.get(), layout, vkDestroyPipelineLayout);
+}
 
+// cull_mode: back faces culled for one-sided surfaces (rooms face inward), none for glTF's
+// double-sided materials.
+UniqueHandle<VkPipeline> make_pipeline(Device& device, VkRenderPass pass, VkPipelineLayout layout,
+                                       VkCullModeFlags cull_mode) {
   auto vert = make_module(device, "scene.vert");
   auto frag = make_module(device, "capture.frag");
   std::array<VkPipelineShaderStageCreateInfo, 2> stages{};
@@ -134,12 +165,14 @@ RasterPipeline make_pipeline(Device& device, VkRenderPass pass) {
   stages[1].pName = "main";
 
   VkVertexInputBindingDescription binding{0, sizeof(SceneVertex), VK_VERTEX_INPUT_RATE_VERTEX};
-  const std::array<VkVertexInputAttributeDescription, 5> attrs{{
+  const std::array<VkVertexInputAttributeDescription, 7> attrs{{
       {0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(SceneVertex, position)},
       {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(SceneVertex, normal)},
       {2, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(SceneVertex, diffuse)},
       {3, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(SceneVertex, specular)},
       {4, 0, VK_FORMAT_R32_SFLOAT, offsetof(SceneVertex, roughness)},
+      {5, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(SceneVertex, uv)},
+      {6, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(SceneVertex, tangent)},
   }};
   VkPipelineVertexInputStateCreateInfo vertex_input{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
   vertex_input.vertexBindingDescriptionCount = 1;
@@ -154,8 +187,7 @@ RasterPipeline make_pipeline(Device& device, VkRenderPass pass) {
   viewport.scissorCount = 1;
   VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
   raster.polygonMode = VK_POLYGON_MODE_FILL;
-  // Surfaces are seen from their normal side only (rooms face inward): cull what faces away.
-  raster.cullMode = VK_CULL_MODE_BACK_BIT;
+  raster.cullMode = cull_mode;
   raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
   raster.lineWidth = 1.0f;
   VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
@@ -191,9 +223,9 @@ RasterPipeline make_pipeline(Device& device, VkRenderPass pass) {
   info.renderPass = pass;
   VkPipeline pipeline = VK_NULL_HANDLE;
   VK_CHECK(vkCreateGraphicsPipelines(device.get(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
-  device.set_name(pipeline, VK_OBJECT_TYPE_PIPELINE, "recorder.pipeline");
-  out.pipeline = UniqueHandle<VkPipeline>(device.get(), pipeline, vkDestroyPipeline);
-  return out;
+  device.set_name(pipeline, VK_OBJECT_TYPE_PIPELINE,
+                  cull_mode == VK_CULL_MODE_NONE ? "recorder.pipeline.double_sided" : "recorder.pipeline");
+  return UniqueHandle<VkPipeline>(device.get(), pipeline, vkDestroyPipeline);
 }
 
 // Target t's four RGBA components go to these capture channels (-1: dropped).
@@ -205,26 +237,277 @@ constexpr int kTargetChannels[kTargets][4] = {
     {kPdf, -1, -1, -1},
 };
 
-struct MeshBuffers {
-  Buffer vertices;
-  Buffer indices;
+// One draw: a run of triangles that share a material (and so a descriptor set and a pipeline).
+struct DrawGroup {
+  uint32_t first_index;
   uint32_t index_count;
+  uint32_t set;          // index into SceneResources::sets (0: no material)
+  bool double_sided;
 };
 
-MeshBuffers upload_mesh(Device& device, const SceneMesh& mesh) {
-  if (mesh.vertices.empty() || mesh.indices.empty()) throw InputError("scene mesh is empty");
-  MeshBuffers out{Buffer(device, mesh.vertices.size() * sizeof(SceneVertex), MemoryUsage::kDeviceLocal,
-                         "recorder.vertices", VK_BUFFER_USAGE_VERTEX_BUFFER_BIT),
-                  Buffer(device, mesh.indices.size() * sizeof(uint32_t), MemoryUsage::kDeviceLocal,
-                         "recorder.indices", VK_BUFFER_USAGE_INDEX_BUFFER_BIT),
-                  static_cast<uint32_t>(mesh.indices.size())};
-  upload(device, out.vertices, mesh.vertices.data(), out.vertices.size());
-  upload(device, out.indices, mesh.indices.data(), out.indices.size());
+struct Texture {
+  Image2D image;
+  UniqueHandle<VkSampler> sampler;
+};
+
+// Everything the two views draw with: vertices, indices grouped by material, the textures with
+// their mip chains, one descriptor set per material.
+struct SceneResources {
+  Buffer vertices;
+  Buffer indices;
+  std::vector<DrawGroup> groups;
+  std::vector<Texture> textures;  // the scene's, then one 1x1 white texture for unbound maps
+  Buffer materials;               // one MaterialBlock per set, at aligned offsets
+  UniqueHandle<VkDescriptorPool> pool;
+  std::vector<VkDescriptorSet> sets;  // freed with the pool
+};
+
+VkSamplerAddressMode address_mode(TextureWrap wrap) {
+  switch (wrap) {
+    case TextureWrap::kClampToEdge: return VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    case TextureWrap::kMirroredRepeat: return VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT;
+    case TextureWrap::kRepeat: break;
+  }
+  return VK_SAMPLER_ADDRESS_MODE_REPEAT;
+}
+
+VkFormat texture_format(Device& device, const TextureImage& tex) {
+  if (!tex.rgba8.empty()) return tex.srgb ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM;
+  VkFormatProperties props{};
+  vkGetPhysicalDeviceFormatProperties(device.physical(), VK_FORMAT_R32G32B32A32_SFLOAT, &props);
+  if ((props.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT) == 0)
+    throw DeviceError("device " + device.info().name + " cannot filter RGBA32F textures linearly (texture '" +
+                      tex.name + "'); use 8-bit textures");
+  return VK_FORMAT_R32G32B32A32_SFLOAT;
+}
+
+// Uploads every level of the texture's mip chain (built on the CPU: the same levels on every
+// device) and leaves it in SHADER_READ_ONLY_OPTIMAL for the fragment shader.
+Texture upload_texture(Device& device, const TextureImage& tex, const std::string& name) {
+  const std::vector<MipLevel> levels = build_mip_chain(tex);
+  const VkFormat format = texture_format(device, tex);
+  const std::size_t texel_bytes = tex.rgba8.empty() ? 4 * sizeof(float) : 4;
+  std::vector<VkDeviceSize> offsets;
+  VkDeviceSize total = 0;
+  for (const MipLevel& level : levels) {
+    offsets.push_back(total);
+    total += VkDeviceSize{level.width} * level.height * texel_bytes;
+    total = (total + 15) & ~VkDeviceSize{15};  // keeps every level at a multiple of the texel size
+  }
+  Buffer staging(device, total, MemoryUsage::kUpload, name + ".staging");
+  for (std::size_t l = 0; l < levels.size(); ++l) {
+    auto* dst = static_cast<unsigned char*>(staging.mapped()) + offsets[l];
+    if (tex.rgba8.empty()) {
+      std::memcpy(dst, levels[l].rgba32f.data(), levels[l].rgba32f.size() * sizeof(float));
+    } else {
+      std::memcpy(dst, levels[l].rgba8.data(), levels[l].rgba8.size());
+    }
+  }
+  const auto mip_count = static_cast<uint32_t>(levels.size());
+  Texture out{Image2D(device, tex.width, tex.height, format, VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                      VK_IMAGE_ASPECT_COLOR_BIT, name, mip_count),
+              {}};
+  device.submit_and_wait(
+      [&](VkCommandBuffer cmd) {
+        VkImageMemoryBarrier to_dst{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+        to_dst.srcAccessMask = 0;
+        to_dst.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+        to_dst.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+        to_dst.newLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+        to_dst.srcQueueFamilyIndex = to_dst.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+        to_dst.image = out.image.get();
+        to_dst.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, mip_count, 0, 1};
+        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0,
+                             nullptr, 1, &to_dst);
+        std::vector<VkBufferImageCopy> regions(levels.size());
+        for (uint32_t l = 0; l < mip_count; ++l) {
+          regions[l].bufferOffset = offsets[l];
+          regions[l].imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, l, 0, 1};
+          regions[l].imageExtent = {levels[l].width, levels[l].height, 1};
+        }
+        vkCmdCopyBufferToImage(cmd, staging.get(), out.image.get(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, mip_count,
+                               regions.data());
+        VkImageMemoryBarrier to_read = to_dst;
+        to_read.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+        to_read.dstAccessMask = VK_ACCESS_SHADER_READ_BIT;
+        to_read.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+        to_read.newLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0, 0, nullptr,
+                             0, nullptr, 1, &to_read);
+      },
+      "upload texture " + name);
+
+  VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+  info.magFilter = VK_FILTER_LINEAR;
+  info.minFilter = VK_FILTER_LINEAR;
+  info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_LINEAR;
+  info.addressModeU = address_mode(tex.wrap_u);
+  info.addressModeV = address_mode(tex.wrap_v);
+  info.addressModeW = VK_SAMPLER_ADDRESS_MODE_REPEAT;
+  info.minLod = 0.0f;
+  info.maxLod = static_cast<float>(mip_count);
+  VkSampler sampler = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateSampler(device.get(), &info, nullptr, &sampler));
+  device.set_name(sampler, VK_OBJECT_TYPE_SAMPLER, name + ".sampler");
+  out.sampler = UniqueHandle<VkSampler>(device.get(), sampler, vkDestroySampler);
   return out;
 }
 
-ViewImage render_view(Device& device, VkRenderPass pass, const RasterPipeline& pipeline, VkFormat depth_format,
-                      const MeshBuffers& mesh, ViewKind kind, uint32_t width, uint32_t height,
+std::string material_label(const Scene& scene, uint32_t m) {
+  const std::string& name = scene.materials[m].name;
+  return "material " + std::to_string(m) + (name.empty() ? "" : " ('" + name + "')");
+}
+
+// Checks the scene's material and texture references (a broken reference is the importer's or a
+// scene builder's bug, but it must not reach the device as an out-of-range descriptor).
+void check_scene_references(const Scene& scene) {
+  const auto materials = static_cast<uint32_t>(scene.materials.size());
+  const auto textures = static_cast<int32_t>(scene.textures.size());
+  for (std::size_t i = 0; i < scene.mesh.indices.size(); ++i) {
+    const uint32_t v = scene.mesh.indices[i];
+    if (v >= scene.mesh.vertices.size())
+      throw InputError("scene '" + scene.name + "': index " + std::to_string(i) + " refers to vertex " +
+                       std::to_string(v) + " of " + std::to_string(scene.mesh.vertices.size()));
+  }
+  for (const SceneVertex& v : scene.mesh.vertices)
+    if (v.material != kNoMaterial && v.material >= materials)
+      throw InputError("scene '" + scene.name + "': a vertex refers to material " + std::to_string(v.material) +
+                       " of " + std::to_string(materials));
+  for (uint32_t m = 0; m < materials; ++m) {
+    const Material& mat = scene.materials[m];
+    for (int32_t t : {mat.base_color_texture, mat.metallic_roughness_texture, mat.normal_texture})
+      if (t < -1 || t >= textures)
+        throw InputError("scene '" + scene.name + "': " + material_label(scene, m) + " refers to texture " +
+                         std::to_string(t) + " of " + std::to_string(textures));
+  }
+}
+
+MaterialBlock material_block(const Material& m) {
+  MaterialBlock b{};
+  b.base_color_factor = m.base_color_factor;
+  b.factors = glm::vec4(m.metallic_factor, m.roughness_factor, m.normal_scale, m.alpha_cutoff);
+  b.mode = glm::uvec4(static_cast<uint32_t>(m.model), m.alpha_mask ? 1u : 0u, m.double_sided ? 1u : 0u, 0u);
+  b.maps = glm::uvec4(m.base_color_texture >= 0 ? 1u : 0u, m.metallic_roughness_texture >= 0 ? 1u : 0u,
+                      m.normal_texture >= 0 ? 1u : 0u, 0u);
+  return b;
+}
+
+SceneResources upload_scene(Device& device, const Scene& scene, VkDescriptorSetLayout set_layout) {
+  const SceneMesh& mesh = scene.mesh;
+  if (mesh.vertices.empty() || mesh.indices.empty())
+    throw InputError("scene '" + scene.name + "' has no triangles");
+  if (mesh.indices.size() % 3 != 0)
+    throw InputError("scene '" + scene.name + "': " + std::to_string(mesh.indices.size()) +
+                     " indices are not a whole number of triangles");
+  check_scene_references(scene);
+
+  // Triangles grouped by material, each group in the scene's order (a stable partition): a
+  // scene without materials is one draw of its indices exactly as given.
+  const auto triangle_material = [&](std::size_t t) { return mesh.vertices[mesh.indices[3 * t]].material; };
+  std::map<uint32_t, std::vector<uint32_t>> by_material;  // kNoMaterial sorts last
+  for (std::size_t t = 0; t < mesh.indices.size() / 3; ++t) by_material[triangle_material(t)].push_back(static_cast<uint32_t>(t));
+  SceneResources out;
+  std::vector<uint32_t> indices;
+  indices.reserve(mesh.indices.size());
+  for (const auto& [material, triangles] : by_material) {
+    const auto first = static_cast<uint32_t>(indices.size());
+    for (uint32_t t : triangles) indices.insert(indices.end(), &mesh.indices[3 * t], &mesh.indices[3 * t] + 3);
+    const bool has = material != kNoMaterial;
+    out.groups.push_back(DrawGroup{first, static_cast<uint32_t>(indices.size()) - first, has ? material + 1 : 0u,
+                                   has && scene.materials[material].double_sided});
+  }
+  out.vertices = Buffer(device, mesh.vertices.size() * sizeof(SceneVertex), MemoryUsage::kDeviceLocal,
+                        "recorder.vertices", VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+  out.indices = Buffer(device, indices.size() * sizeof(uint32_t), MemoryUsage::kDeviceLocal, "recorder.indices",
+                       VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+  upload(device, out.vertices, mesh.vertices.data(), out.vertices.size());
+  upload(device, out.indices, indices.data(), out.indices.size());
+
+  for (std::size_t t = 0; t < scene.textures.size(); ++t)
+    out.textures.push_back(upload_texture(device, scene.textures[t], "recorder.texture" + std::to_string(t)));
+  TextureImage white;
+  white.name = "white";
+  white.width = white.height = 1;
+  white.rgba8 = {255, 255, 255, 255};
+  out.textures.push_back(upload_texture(device, white, "recorder.texture.white"));
+  const Texture& unbound = out.textures.back();
+
+  // Set 0 draws the material-less vertices (constants); set m + 1 material m.
+  const auto set_count = static_cast<uint32_t>(scene.materials.size() + 1);
+  VkPhysicalDeviceProperties props{};
+  vkGetPhysicalDeviceProperties(device.physical(), &props);
+  const VkDeviceSize align = std::max<VkDeviceSize>(props.limits.minUniformBufferOffsetAlignment, sizeof(MaterialBlock));
+  const VkDeviceSize stride = (sizeof(MaterialBlock) + align - 1) / align * align;
+  std::vector<unsigned char> blocks(static_cast<std::size_t>(stride * set_count), 0);
+  for (uint32_t m = 0; m < scene.materials.size(); ++m) {
+    const MaterialBlock b = material_block(scene.materials[m]);
+    std::memcpy(blocks.data() + stride * (m + 1), &b, sizeof b);
+  }
+  out.materials = Buffer(device, blocks.size(), MemoryUsage::kDeviceLocal, "recorder.materials",
+                         VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+  upload(device, out.materials, blocks.data(), blocks.size());
+
+  const std::array<VkDescriptorPoolSize, 2> sizes{{
+      {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, set_count},
+      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, set_count * kMapBindings},
+  }};
+  VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+  pool_info.maxSets = set_count;
+  pool_info.poolSizeCount = static_cast<uint32_t>(sizes.size());
+  pool_info.pPoolSizes = sizes.data();
+  VkDescriptorPool pool = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateDescriptorPool(device.get(), &pool_info, nullptr, &pool));
+  device.set_name(pool, VK_OBJECT_TYPE_DESCRIPTOR_POOL, "recorder.material_pool");
+  out.pool = UniqueHandle<VkDescriptorPool>(device.get(), pool, vkDestroyDescriptorPool);
+  const std::vector<VkDescriptorSetLayout> layouts(set_count, set_layout);
+  VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+  alloc.descriptorPool = pool;
+  alloc.descriptorSetCount = set_count;
+  alloc.pSetLayouts = layouts.data();
+  out.sets.resize(set_count);
+  VK_CHECK(vkAllocateDescriptorSets(device.get(), &alloc, out.sets.data()));
+
+  for (uint32_t set = 0; set < set_count; ++set) {
+    device.set_name(out.sets[set], VK_OBJECT_TYPE_DESCRIPTOR_SET,
+                    set == 0 ? std::string("recorder.set.constants") : "recorder.set.material" + std::to_string(set - 1));
+    VkDescriptorBufferInfo block{out.materials.get(), stride * set, sizeof(MaterialBlock)};
+    std::array<int32_t, kMapBindings> maps{-1, -1, -1};
+    if (set > 0) {
+      const Material& m = scene.materials[set - 1];
+      maps = {m.base_color_texture, m.metallic_roughness_texture, m.normal_texture};
+    }
+    std::array<VkDescriptorImageInfo, kMapBindings> images{};
+    std::array<VkWriteDescriptorSet, 1 + kMapBindings> writes{};
+    writes[0] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    writes[0].dstSet = out.sets[set];
+    writes[0].dstBinding = 0;
+    writes[0].descriptorCount = 1;
+    writes[0].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+    writes[0].pBufferInfo = &block;
+    for (uint32_t k = 0; k < kMapBindings; ++k) {
+      const Texture& t = maps[k] >= 0 ? out.textures[static_cast<std::size_t>(maps[k])] : unbound;
+      images[k] = {t.sampler.get(), t.image.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+      writes[1 + k] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+      writes[1 + k].dstSet = out.sets[set];
+      writes[1 + k].dstBinding = 1 + k;
+      writes[1 + k].descriptorCount = 1;
+      writes[1 + k].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+      writes[1 + k].pImageInfo = &images[k];
+    }
+    vkUpdateDescriptorSets(device.get(), static_cast<uint32_t>(writes.size()), writes.data(), 0, nullptr);
+  }
+  return out;
+}
+
+struct RasterState {
+  UniqueHandle<VkDescriptorSetLayout> set_layout;
+  UniqueHandle<VkPipelineLayout> layout;
+  UniqueHandle<VkPipeline> one_sided;
+  UniqueHandle<VkPipeline> double_sided;
+};
+
+ViewImage render_view(Device& device, VkRenderPass pass, const RasterState& pipeline, VkFormat depth_format,
+                      const SceneResources& mesh, ViewKind kind, uint32_t width, uint32_t height,
                       const RasterPush& push) {
   const std::string label = view_label(kind);
   std::vector<Image2D> targets;
@@ -268,7 +551,6 @@ ViewImage render_view(Device& device, VkRenderPass pass, const RasterPipeline& p
         begin.clearValueCount = static_cast<uint32_t>(clears.size());
         begin.pClearValues = clears.data();
         vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.pipeline.get());
         VkViewport vp{0.0f, 0.0f, static_cast<float>(width), static_cast<float>(height), 0.0f, 1.0f};
         VkRect2D scissor{{0, 0}, {width, height}};
         vkCmdSetViewport(cmd, 0, 1, &vp);
@@ -279,7 +561,13 @@ ViewImage render_view(Device& device, VkRenderPass pass, const RasterPipeline& p
         VkBuffer vb = mesh.vertices.get();
         vkCmdBindVertexBuffers(cmd, 0, 1, &vb, &offset);
         vkCmdBindIndexBuffer(cmd, mesh.indices.get(), 0, VK_INDEX_TYPE_UINT32);
-        vkCmdDrawIndexed(cmd, mesh.index_count, 1, 0, 0, 0);
+        for (const DrawGroup& g : mesh.groups) {
+          vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
+                            g.double_sided ? pipeline.double_sided.get() : pipeline.one_sided.get());
+          vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.layout.get(), 0, 1, &mesh.sets[g.set],
+                                  0, nullptr);
+          vkCmdDrawIndexed(cmd, g.index_count, 1, g.first_index, 0, 0);
+        }
         vkCmdEndRenderPass(cmd);
         for (uint32_t t = 0; t < kTargets; ++t) {
           VkBufferImageCopy region{};
@@ -332,8 +620,14 @@ Capture CaptureRecorder::record(const Scene& scene, const RecordSizes& sizes, ui
   check_size("RSM", sizes.rsm_size, sizes.rsm_size, device_.info());
   const VkFormat depth_format = pick_depth_format(device_);
   auto pass = make_render_pass(device_, depth_format);
-  const RasterPipeline pipeline = make_pipeline(device_, pass.get());
-  const MeshBuffers mesh = upload_mesh(device_, scene.mesh);
+  RasterState pipeline;
+  pipeline.set_layout = make_material_set_layout(device_);
+  pipeline.layout = make_pipeline_layout(device_, pipeline.set_layout.get());
+  // Surfaces are seen from their normal side only (rooms face inward): cull what faces away,
+  // except for glTF's double-sided materials.
+  pipeline.one_sided = make_pipeline(device_, pass.get(), pipeline.layout.get(), VK_CULL_MODE_BACK_BIT);
+  pipeline.double_sided = make_pipeline(device_, pass.get(), pipeline.layout.get(), VK_CULL_MODE_NONE);
+  const SceneResources mesh = upload_scene(device_, scene, pipeline.set_layout.get());
 
   Capture capture;
   CaptureMeta& meta = capture.meta;

@@ -13,26 +13,12 @@
 namespace vsgl {
 namespace {
 
-// How a sequence (frames > 1) moves the light and the camera along smooth periodic paths of phase
-// phi = 2*pi*frame/frames. Every offset is zero at phi = 0, so frame 0 is the static scene.
-struct SceneMotion {
-  float light_circle_m;    // the light's position runs on a horizontal circle of this radius
-  float aim_wobble_deg;    // the spot axis precesses by up to about twice this angle
-  float camera_dolly_m;    // the camera moves this far along its view direction and back
-};
-
 struct SceneSetup {
   Scene scene;
   SceneMotion motion;
 };
 
-// The light's `up` (the RSM image's orientation): the component of a fixed hint orthogonal to
-// the spot axis, so that it is a unit vector never parallel to the axis.
-glm::vec3 light_up_for(glm::vec3 direction) {
-  glm::vec3 hint(0.0f, 0.0f, -1.0f);
-  if (std::abs(glm::dot(hint, direction)) > 0.9f) hint = glm::vec3(1.0f, 0.0f, 0.0f);
-  return glm::normalize(hint - glm::dot(hint, direction) * direction);
-}
+glm::vec3 light_up_for(glm::vec3 direction) { return spot_light_up(direction); }
 
 SpotLightDesc spot_light(glm::vec3 position, glm::vec3 direction, float cone_half_angle_deg,
                          glm::vec3 intensity, float far_plane) {
@@ -56,26 +42,6 @@ CameraDesc camera(glm::vec3 position, glm::vec3 target, float fov_y_deg, float f
   c.near_plane = 0.05f;
   c.far_plane = far_plane;
   return c;
-}
-
-// Moves light and camera to phase phi. Applied to every frame, the static one included (phi = 0),
-// so frame 0 of a sequence and the static scene come from the same arithmetic on the same inputs.
-void apply_motion(Scene& scene, const SceneMotion& motion, float phi) {
-  const float s = std::sin(phi), c1 = 1.0f - std::cos(phi);  // both exactly 0 at phi = 0
-
-  SpotLightDesc& light = scene.light;
-  light.position += motion.light_circle_m * glm::vec3(c1, 0.0f, s);
-  // Precession of the axis: tilt it towards its own "right" and "up" by a small vector.
-  const glm::vec3 right = glm::cross(light.direction, light.up);
-  const float tilt = std::tan(motion.aim_wobble_deg * std::numbers::pi_v<float> / 180.0f);
-  light.direction = glm::normalize(light.direction + tilt * (s * right + c1 * light.up));
-  light.up = light_up_for(light.direction);
-
-  CameraDesc& cam = scene.camera;
-  const glm::vec3 forward = glm::normalize(cam.target - cam.position);
-  const glm::vec3 dolly = motion.camera_dolly_m * 0.5f * c1 * forward;
-  cam.position += dolly;
-  cam.target += dolly;
 }
 
 // A long hall standing in for Table 1: broad lighting, coloured walls, a glossy floor.
@@ -213,6 +179,26 @@ SceneSetup make_tiny() {
   return {scene, SceneMotion{0.2f, 1.5f, 0.3f}};
 }
 
+// Moves light and camera to phase phi. Applied to every frame, the static one included (phi = 0),
+// so frame 0 of a sequence and the static scene come from the same arithmetic on the same inputs.
+void apply_motion(Scene& scene, const SceneMotion& motion, float phi) {
+  const float s = std::sin(phi), c1 = 1.0f - std::cos(phi);  // both exactly 0 at phi = 0
+
+  SpotLightDesc& light = scene.light;
+  light.position += motion.light_circle_m * glm::vec3(c1, 0.0f, s);
+  // Precession of the axis: tilt it towards its own "right" and "up" by a small vector.
+  const glm::vec3 right = glm::cross(light.direction, light.up);
+  const float tilt = std::tan(motion.aim_wobble_deg * std::numbers::pi_v<float> / 180.0f);
+  light.direction = glm::normalize(light.direction + tilt * (s * right + c1 * light.up));
+  light.up = light_up_for(light.direction);
+
+  CameraDesc& cam = scene.camera;
+  const glm::vec3 forward = glm::normalize(cam.target - cam.position);
+  const glm::vec3 dolly = motion.camera_dolly_m * 0.5f * c1 * forward;
+  cam.position += dolly;
+  cam.target += dolly;
+}
+
 std::string valid_names_text() {
   std::string text;
   for (const std::string& name : scene_names()) text += (text.empty() ? "" : ", ") + name;
@@ -220,6 +206,21 @@ std::string valid_names_text() {
 }
 
 }  // namespace
+
+glm::vec3 spot_light_up(glm::vec3 direction) {
+  glm::vec3 hint(0.0f, 0.0f, -1.0f);
+  if (std::abs(glm::dot(hint, direction)) > 0.9f) hint = glm::vec3(1.0f, 0.0f, 0.0f);
+  return glm::normalize(hint - glm::dot(hint, direction) * direction);
+}
+
+void animate_scene(Scene& scene, const SceneMotion& motion, uint32_t frame, uint32_t frames) {
+  if (frames == 0 || frame >= frames) {
+    throw InputError("scene '" + scene.name + "': frame " + std::to_string(frame) + " is outside a sequence of " +
+                     std::to_string(frames) + " frames (need frames >= 1 and frame < frames)");
+  }
+  const float phi = 2.0f * std::numbers::pi_v<float> * static_cast<float>(frame) / static_cast<float>(frames);
+  apply_motion(scene, motion, phi);
+}
 
 std::vector<std::string> scene_names() { return {"atrium", "conference", "tiny"}; }
 
@@ -234,12 +235,7 @@ Scene make_scene(const std::string& name, uint32_t frame, uint32_t frames) {
   } else {
     throw InputError("scene: unknown scene '" + name + "' (valid scenes: " + valid_names_text() + ")");
   }
-  if (frames == 0 || frame >= frames) {
-    throw InputError("scene '" + name + "': frame " + std::to_string(frame) + " is outside a sequence of " +
-                     std::to_string(frames) + " frames (need frames >= 1 and frame < frames)");
-  }
-  const float phi = 2.0f * std::numbers::pi_v<float> * static_cast<float>(frame) / static_cast<float>(frames);
-  apply_motion(setup.scene, setup.motion, phi);
+  animate_scene(setup.scene, setup.motion, frame, frames);
   return setup.scene;
 }
 

@@ -9,8 +9,9 @@
 namespace vsgl {
 namespace {
 
-SceneVertex make_vertex(glm::vec3 position, glm::vec3 normal, const SurfaceMaterial& m) {
-  return SceneVertex{position, normal, m.diffuse, m.specular, m.roughness};
+SceneVertex make_vertex(glm::vec3 position, glm::vec3 normal, const SurfaceMaterial& m, glm::vec2 uv = glm::vec2(0.0f),
+                        glm::vec4 tangent = glm::vec4(0.0f)) {
+  return SceneVertex{position, normal, m.diffuse, m.specular, m.roughness, uv, tangent, m.material};
 }
 
 uint32_t next_index(const SceneMesh& mesh) { return static_cast<uint32_t>(mesh.vertices.size()); }
@@ -56,6 +57,8 @@ void add_quad(SceneMesh& mesh, glm::vec3 origin, glm::vec3 edge_u, glm::vec3 edg
   const glm::vec3 normal = glm::normalize(glm::cross(edge_u, edge_v));
   const glm::vec3 du = edge_u / static_cast<float>(cells_u);
   const glm::vec3 dv = edge_v / static_cast<float>(cells_v);
+  const float len_u = glm::length(edge_u), len_v = glm::length(edge_v);
+  const glm::vec4 tangent(edge_u / len_u, 1.0f);
   for (uint32_t j = 0; j < cells_v; ++j) {
     for (uint32_t i = 0; i < cells_u; ++i) {
       // Corners from the origin (not accumulated) so that neighbouring cells share exact edges.
@@ -64,7 +67,14 @@ void add_quad(SceneMesh& mesh, glm::vec3 origin, glm::vec3 edge_u, glm::vec3 edg
       const glm::vec3 p11 = origin + du * static_cast<float>(i + 1) + dv * static_cast<float>(j + 1);
       const glm::vec3 p01 = origin + du * static_cast<float>(i) + dv * static_cast<float>(j + 1);
       const uint32_t first = next_index(mesh);
-      for (const glm::vec3& p : {p00, p10, p11, p01}) mesh.vertices.push_back(make_vertex(p, normal, material));
+      const float u0 = len_u * static_cast<float>(i) / static_cast<float>(cells_u);
+      const float u1 = len_u * static_cast<float>(i + 1) / static_cast<float>(cells_u);
+      const float v0 = len_v * static_cast<float>(j) / static_cast<float>(cells_v);
+      const float v1 = len_v * static_cast<float>(j + 1) / static_cast<float>(cells_v);
+      mesh.vertices.push_back(make_vertex(p00, normal, material, {u0, v0}, tangent));
+      mesh.vertices.push_back(make_vertex(p10, normal, material, {u1, v0}, tangent));
+      mesh.vertices.push_back(make_vertex(p11, normal, material, {u1, v1}, tangent));
+      mesh.vertices.push_back(make_vertex(p01, normal, material, {u0, v1}, tangent));
       // cross(du, dv) is the normal: (p00, p10, p11) turns counter-clockwise around it.
       push_quad_indices(mesh, first, first + 1, first + 2, first + 3);
     }

@@ -17,6 +17,9 @@ struct SurfaceMaterial {
   glm::vec3 diffuse{0.5f};    // diffuse albedo in [0,1]
   glm::vec3 specular{0.04f};  // specular albedo in [0,1]
   float roughness = 0.5f;     // GGX alpha in (0,1]
+  // An index into Scene::materials (textures, normal maps; usually MaterialModel::kVertexAlbedo,
+  // which modulates the three constants above), or kNoMaterial: the constants as they are.
+  uint32_t material = kNoMaterial;
 };
 
 // One bit per face of an axis-aligned box, named by the side of the box it lies on.
@@ -33,6 +36,8 @@ enum BoxFace : uint32_t {
 // The parallelogram origin + s*edge_u + t*edge_v, s,t in [0,1], split into cells_u x cells_v
 // quads (smaller triangles rasterize and interpolate better). Its normal is
 // normalize(cross(edge_u, edge_v)): pick the edge order so that it points to the seen side.
+// Texture coordinates are metres along the edges (u along edge_u, v along edge_v), so a repeating
+// texture tiles at 1 m; the tangent is edge_u's direction (handedness +1).
 void add_quad(SceneMesh& mesh, glm::vec3 origin, glm::vec3 edge_u, glm::vec3 edge_v,
               const SurfaceMaterial& material, uint32_t cells_u = 1, uint32_t cells_v = 1);
 

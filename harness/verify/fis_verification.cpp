@@ -109,7 +109,7 @@ class ViewVerifier {
       check_sampler(out, gen, gpu, samples);
       check_levels(out, variant, gpu, read, samples);
       check_generator(out, variant, gpu, read, samples);
-      check_total_power(out, gen, gpu, read);
+      check_total_power(out, variant, gpu, read, samples);
     }
     check_histogram(out);
   }
@@ -331,18 +331,43 @@ class ViewVerifier {
     out.push_back(r);
   }
 
-  void check_total_power(std::vector<CheckResult>& out, const std::string& gen, const GpuRun& gpu,
-                         const std::array<MipPyramid, 3>& chain) const {
-    CheckResult r = result(gen, "total_power");
+  // Sum of the VSGLs' power. Pass/fail (buffer path): the device's sum against the CPU generator's
+  // on the same pyramid (correctness; the texture path's per-VSGL filter bound in `vsgls` already
+  // covers it). Reported: the sum over the view's total reflectance / flux, which FIS only
+  // estimates (exact in expectation only where the PDF is proportional to the power; on a
+  // high-frequency BRSM PDF Tok15 drifts from 1, the paper's point), so no tolerance is set on it.
+  void check_total_power(std::vector<CheckResult>& out, FisVariant variant, const GpuRun& gpu,
+                         const std::array<MipPyramid, 3>& chain, const std::vector<SamplePoint>& samples) const {
+    const std::string gen = labelled(fis_variant_name(variant));
     double sum = 0;
     for (const auto& v : gpu.vsgls) sum += double{v.power().r} + double{v.power().g} + double{v.power().b};
+    if (!texture()) {
+      const auto expected = reference_fis(chain, variant, params_);
+      double reference = 0;
+      uint32_t excused_count = 0;
+      for (uint32_t i = 0; i < expected.size(); ++i) {
+        const double g = double{gpu.vsgls[i].power().r} + double{gpu.vsgls[i].power().g} + double{gpu.vsgls[i].power().b};
+        // An excused sample (a near tie the device decided the other way) counts as the device's.
+        reference += excused(samples[i], gpu.vsgls[i]) ? (++excused_count, g)
+                                                       : double{expected[i].power().r} + double{expected[i].power().g} +
+                                                             double{expected[i].power().b};
+      }
+      CheckResult check = result(gen, "power_vs_cpu");
+      check.measured = reference > 0 ? std::abs(sum / reference - 1.0) : std::abs(sum);
+      // Each VSGL's power is within the vsgls check's 5e-3 of the CPU's, so their sum is too.
+      check.tolerance = 5e-3;
+      check.detail = "|sum of VSGL power (device) / sum (CPU generator) - 1|" +
+                     (excused_count > 0 ? "; " + num(excused_count) + " near-tie samples taken as the device's" : "");
+      out.push_back(check);
+    }
     const glm::vec4 top = chain[0].top();  // mean over the square
     const double total = (double{top.r} + double{top.g} + double{top.b}) * view_.square.square_texels();
-    const double ratio = sum / total;
-    r.measured = std::abs(ratio - 1.0);
-    r.tolerance = total_power_tolerance(capture_.meta.scene, gen, view_.label);
-    r.detail = std::string("|sum of VSGL power / total ") +
-               (view_.kind == ViewKind::kCamera ? "reflectance" : "flux") + " - 1|; ratio " + num(ratio, 5);
+    CheckResult r = result(gen, "total_power");
+    r.measurement = true;
+    r.measured = sum / total;
+    r.expected = 1.0;
+    r.detail = std::string("sum of VSGL power / total ") + (view_.kind == ViewKind::kCamera ? "reflectance" : "flux") +
+               ": an estimate (exact only where the PDF is proportional to the power)";
     out.push_back(r);
   }
 
@@ -386,17 +411,6 @@ class ViewVerifier {
 };
 
 }  // namespace
-
-double total_power_tolerance(const std::string& scene, const std::string& generator, const std::string& view) {
-  // Measured on lavapipe (|ratio - 1|, camera / light view):
-  //   atrium      fis_tok15 0.0050 / 0.0123   fis_modified 0.00003 / 0.0292
-  //   conference  fis_tok15 0.0057 / 0.0065   fis_modified 0.0005  / 0.0042
-  // The light view's BRSM PDF is not proportional to the flux, so there even the modified
-  // estimator (exact when p follows the power) is an estimate. Tolerances leave ~2x headroom.
-  if (scene == "atrium" || scene == "conference") return view == "light_view" ? 0.06 : 0.02;
-  (void)generator;
-  return 0.15;  // other scenes (tiny, users' own): coarse captures, few texels per kernel
-}
 
 std::vector<CheckResult> verify_fis(Device& device, const Capture& capture, const VerifyConfig& config) {
   std::vector<CheckResult> out;

@@ -6,14 +6,14 @@
 namespace vsgl {
 
 Image2D::Image2D(Device& device, uint32_t width, uint32_t height, VkFormat format, VkImageUsageFlags usage,
-                 VkImageAspectFlags aspect, const std::string& name)
-    : format_(format), width_(width), height_(height) {
+                 VkImageAspectFlags aspect, const std::string& name, uint32_t mip_levels)
+    : format_(format), width_(width), height_(height), mip_levels_(mip_levels) {
   VkDevice dev = device.get();
   VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
   info.imageType = VK_IMAGE_TYPE_2D;
   info.format = format;
   info.extent = {width, height, 1};
-  info.mipLevels = 1;
+  info.mipLevels = mip_levels;
   info.arrayLayers = 1;
   info.samples = VK_SAMPLE_COUNT_1_BIT;
   info.tiling = VK_IMAGE_TILING_OPTIMAL;
@@ -35,7 +35,7 @@ Image2D::Image2D(Device& device, uint32_t width, uint32_t height, VkFormat forma
   view_info.image = image;
   view_info.viewType = VK_IMAGE_VIEW_TYPE_2D;
   view_info.format = format;
-  view_info.subresourceRange = {aspect, 0, 1, 0, 1};
+  view_info.subresourceRange = {aspect, 0, mip_levels, 0, 1};
   VkImageView view = VK_NULL_HANDLE;
   VK_CHECK(vkCreateImageView(dev, &view_info, nullptr, &view));
   view_ = UniqueHandle<VkImageView>(dev, view, vkDestroyImageView);
