@@ -347,7 +347,7 @@ TEST(GltfImport, CameraAndLightChoices) {
 
 TEST(GltfImport, NamesAreEscapedAndSceneNamesAreFileNames) {
   EXPECT_EQ(escape_name("abc"), "abc");
-  EXPECT_EQ(escape_name("a\tb\\"), "a\\x09b\\x5C");
+  EXPECT_EQ(escape_name("a\tb\\"), "a\\x09b\\x5c");
   EXPECT_EQ(escape_name(std::string(100, 'x')).size(), 83u);
   EXPECT_EQ(scene_name_from_file("dir/Crytek Sponza.glb"), "Crytek_Sponza");
   EXPECT_EQ(scene_name_from_file("/x/..glb"), "gltf");

@@ -21,6 +21,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "harness/core/error.hpp"
+#include "harness/core/printable_text.hpp"
 #include "harness/scene/scene_geometry.hpp"
 #include "harness/scene/scene_textures.hpp"
 
@@ -626,21 +627,7 @@ std::string vec_text(glm::vec3 v) {
 
 }  // namespace
 
-std::string escape_name(const std::string& name) {
-  std::string out;
-  for (std::size_t i = 0; i < name.size(); ++i) {
-    if (out.size() >= 80) return out + "...";
-    const auto c = static_cast<unsigned char>(name[i]);
-    if (c >= 0x20 && c < 0x7f && c != '\\') {
-      out += static_cast<char>(c);
-    } else {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\x%02X", c);
-      out += buf;
-    }
-  }
-  return out;
-}
+std::string escape_name(const std::string& name) { return printable_text(name, 80); }
 
 std::string scene_name_from_file(const std::filesystem::path& file) {
   std::string out;

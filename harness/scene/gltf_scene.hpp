@@ -66,6 +66,7 @@ Scene gltf_frame(const GltfImport& import, uint32_t frame, uint32_t frames);
 
 // A name from a file as it may appear in a message: printable ASCII as is, every other byte as
 // \xNN, at most 80 bytes (then "...").
+// core/printable_text, cut at 80 bytes: names are shown in one-line messages.
 std::string escape_name(const std::string& name);
 
 // A scene name usable as a file name (tables writes OUT/<scene>.json): letters, digits, '-', '_'
