@@ -278,7 +278,7 @@ TEST(GltfImport, FilesTheTestBreaksNameTheProblem) {
   bad.indices_out_of_range = true;
   bad.mesh_name = "r\xC3\xBCm\n";
   const std::string range = input_error([&] { import_gltf(write_room(dir, bad)); });
-  EXPECT_NE(range.find("'r\\xC3\\xBCm\\x0A'"), std::string::npos) << range;
+  EXPECT_NE(range.find("'r\\xc3\\xbcm\\x0a'"), std::string::npos) << range;
   EXPECT_NE(range.find("99"), std::string::npos) << range;
   // The texture's PNG is not there.
   RoomOptions no_png;

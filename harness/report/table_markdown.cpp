@@ -133,14 +133,20 @@ std::string table_markdown(const ojson& t) {
           "cancel): median, Hodges–Lehmann estimate and its "
        << fixed(100 * p.at("nominal_confidence").get<double>(), 0)
        << " % distribution-free interval (Wilcoxon signed-rank).\n\n";
-    row(os, {"difference", "median", "Hodges–Lehmann", "interval", "confidence", "rounds", "paper"});
-    row(os, {"---", "---:", "---:", "---:", "---:", "---:", "---:"});
+    // The paper's column only for the paper's tables, as above.
+    std::vector<std::string> columns{"difference", "median", "Hodges–Lehmann", "interval", "confidence", "rounds"};
+    if (paper) columns.push_back("paper");
+    row(os, columns);
+    row(os, std::vector<std::string>(columns.size(), "---:"));
     const auto line = [&](const std::string& name, const ojson& d) {
       const double conf = d.at("confidence").get<double>();
-      row(os, {name, signed_fixed(d.at("median_us").get<double>(), 1), signed_fixed(d.at("hodges_lehmann_us").get<double>(), 1),
-               "[" + signed_fixed(d.at("ci_low_us").get<double>(), 1) + ", " + signed_fixed(d.at("ci_high_us").get<double>(), 1) + "]",
-               fixed(100 * conf, 1) + " %" + (d.at("reaches_nominal").get<bool>() ? "" : " (short)"),
-               std::to_string(d.at("rounds").get<int>()), paper_cell(d.at("paper_us"), 1)});
+      std::vector<std::string> cells{
+          name, signed_fixed(d.at("median_us").get<double>(), 1), signed_fixed(d.at("hodges_lehmann_us").get<double>(), 1),
+          "[" + signed_fixed(d.at("ci_low_us").get<double>(), 1) + ", " + signed_fixed(d.at("ci_high_us").get<double>(), 1) + "]",
+          fixed(100 * conf, 1) + " %" + (d.at("reaches_nominal").get<bool>() ? "" : " (short)"),
+          std::to_string(d.at("rounds").get<int>())};
+      if (paper) cells.push_back(paper_cell(d.at("paper_us"), 1));
+      row(os, cells);
     };
     for (const char* view : {"camera_view", "light_view"}) {
       line(std::string(view) + " total", p.at(view).at("total"));
