@@ -25,12 +25,14 @@ fi
 rm -f build/fuzz-smoke-build.log
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
-for target in fuzz_capture fuzz_run_json fuzz_paper_tables; do
+for target in fuzz_capture fuzz_run_json fuzz_paper_tables fuzz_gltf; do
   corpus="tests/fuzz/corpus/$target"
   seeds=$(find "$corpus" -type f | wc -l)
   mkdir -p "$scratch/$target"
   # New inputs go to the scratch directory (first), never into the committed corpus.
-  if ! "build/fuzz/$target" "$scratch/$target" "$corpus" -dict="tests/fuzz/$target.dict" -seed=12345 \
+  dict=()
+  [[ -f "tests/fuzz/$target.dict" ]] && dict=(-dict="tests/fuzz/$target.dict")
+  if ! "build/fuzz/$target" "$scratch/$target" "$corpus" "${dict[@]}" -seed=12345 \
       -runs="$((seeds + runs))" -max_total_time=60 -timeout=20 -rss_limit_mb=4096 \
       -artifact_prefix="$scratch/" -print_final_stats=1 >"$scratch/$target.log" 2>&1; then
     tail -n 60 "$scratch/$target.log"
