@@ -5,31 +5,42 @@
 
 namespace vsgl {
 
+namespace {
+
+// A device-local image with its memory bound, named: what every image of the harness starts as.
+// The info's common fields (2D, one sample, optimal tiling, exclusive, undefined layout) are set here.
+VkImage create_bound_image(Device& device, VkImageCreateInfo info, const std::string& name,
+                           UniqueHandle<VkImage>& image_out, UniqueHandle<VkDeviceMemory>& memory_out) {
+  VkDevice dev = device.get();
+  info.imageType = VK_IMAGE_TYPE_2D;
+  info.samples = VK_SAMPLE_COUNT_1_BIT;
+  info.tiling = VK_IMAGE_TILING_OPTIMAL;
+  info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+  info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+  VkImage image = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateImage(dev, &info, nullptr, &image));
+  image_out = UniqueHandle<VkImage>(dev, image, vkDestroyImage);
+  device.set_name(image, VK_OBJECT_TYPE_IMAGE, name);
+  VkMemoryRequirements req{};
+  vkGetImageMemoryRequirements(dev, image, &req);
+  memory_out = device.allocate_memory(req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, 0, "image " + name);
+  VK_CHECK(vkBindImageMemory(dev, image, memory_out.get(), 0));
+  return image;
+}
+
+}  // namespace
+
 Image2D::Image2D(Device& device, uint32_t width, uint32_t height, VkFormat format, VkImageUsageFlags usage,
                  VkImageAspectFlags aspect, const std::string& name, uint32_t mip_levels)
     : format_(format), width_(width), height_(height), mip_levels_(mip_levels) {
   VkDevice dev = device.get();
   VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
-  info.imageType = VK_IMAGE_TYPE_2D;
   info.format = format;
   info.extent = {width, height, 1};
   info.mipLevels = mip_levels;
   info.arrayLayers = 1;
-  info.samples = VK_SAMPLE_COUNT_1_BIT;
-  info.tiling = VK_IMAGE_TILING_OPTIMAL;
   info.usage = usage;
-  info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-  info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-  VkImage image = VK_NULL_HANDLE;
-  VK_CHECK(vkCreateImage(dev, &info, nullptr, &image));
-  image_ = UniqueHandle<VkImage>(dev, image, vkDestroyImage);
-  device.set_name(image, VK_OBJECT_TYPE_IMAGE, name);
-
-  VkMemoryRequirements req{};
-  vkGetImageMemoryRequirements(dev, image, &req);
-  memory_ = device.allocate_memory(req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, 0, "image " + name);
-  VkDeviceMemory memory = memory_.get();
-  VK_CHECK(vkBindImageMemory(dev, image, memory, 0));
+  const VkImage image = create_bound_image(device, info, name, image_, memory_);
 
   VkImageViewCreateInfo view_info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
   view_info.image = image;
@@ -51,25 +62,12 @@ MipImage::MipImage(Device& device, uint32_t size, uint32_t levels, uint32_t laye
     : format_(format), size_(size), levels_(levels), layers_(layers) {
   VkDevice dev = device.get();
   VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
-  info.imageType = VK_IMAGE_TYPE_2D;
   info.format = format;
   info.extent = {size, size, 1};
   info.mipLevels = levels;
   info.arrayLayers = layers;
-  info.samples = VK_SAMPLE_COUNT_1_BIT;
-  info.tiling = VK_IMAGE_TILING_OPTIMAL;
   info.usage = usage | VK_IMAGE_USAGE_TRANSFER_DST_BIT;  // the clear at creation
-  info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-  info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-  VkImage image = VK_NULL_HANDLE;
-  VK_CHECK(vkCreateImage(dev, &info, nullptr, &image));
-  image_ = UniqueHandle<VkImage>(dev, image, vkDestroyImage);
-  device.set_name(image, VK_OBJECT_TYPE_IMAGE, name);
-
-  VkMemoryRequirements req{};
-  vkGetImageMemoryRequirements(dev, image, &req);
-  memory_ = device.allocate_memory(req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, 0, "image " + name);
-  VK_CHECK(vkBindImageMemory(dev, image, memory_.get(), 0));
+  const VkImage image = create_bound_image(device, info, name, image_, memory_);
 
   auto make_view = [&](uint32_t base, uint32_t count, const std::string& view_name) {
     VkImageViewCreateInfo v{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
