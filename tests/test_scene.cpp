@@ -7,6 +7,7 @@
 #include <limits>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "harness/core/error.hpp"
 #include "harness/scene/scene.hpp"
@@ -18,9 +19,49 @@ namespace {
 bool same_vec(glm::vec3 a, glm::vec3 b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
 
 bool same_mesh(const SceneMesh& a, const SceneMesh& b) {
-  // SceneVertex is 13 packed floats (static_assert in scene.hpp): bytes compare exactly.
+  // SceneVertex is 20 packed 4-byte fields (static_assert in scene.hpp): bytes compare exactly.
   return a.indices == b.indices && a.vertices.size() == b.vertices.size() &&
          std::memcmp(a.vertices.data(), b.vertices.data(), a.vertices.size() * sizeof(SceneVertex)) == 0;
+}
+
+// The GGX alpha of a triangle's surface at p (on its plane): the vertex roughness, scaled by the
+// material's roughness map (nearest texel of level 0, repeat wrap) as kVertexAlbedo does.
+float alpha_at(const Scene& scene, uint32_t triangle, glm::vec3 p) {
+  const SceneVertex& a = scene.mesh.vertices[scene.mesh.indices[3 * triangle]];
+  const SceneVertex& b = scene.mesh.vertices[scene.mesh.indices[3 * triangle + 1]];
+  const SceneVertex& c = scene.mesh.vertices[scene.mesh.indices[3 * triangle + 2]];
+  if (a.material == kNoMaterial) return a.roughness;
+  // Barycentric coordinates of p in the triangle.
+  const glm::vec3 e0 = b.position - a.position, e1 = c.position - a.position, ep = p - a.position;
+  const float d00 = glm::dot(e0, e0), d01 = glm::dot(e0, e1), d11 = glm::dot(e1, e1);
+  const float d20 = glm::dot(ep, e0), d21 = glm::dot(ep, e1), den = d00 * d11 - d01 * d01;
+  const float wb = (d11 * d20 - d01 * d21) / den, wc = (d00 * d21 - d01 * d20) / den;
+  const glm::vec2 uv = (1.0f - wb - wc) * a.uv + wb * b.uv + wc * c.uv;
+  const Material& m = scene.materials[a.material];
+  if (m.metallic_roughness_texture < 0) return a.roughness;
+  const TextureImage& t = scene.textures[static_cast<std::size_t>(m.metallic_roughness_texture)];
+  const auto texel = [](float s, uint32_t n) {
+    return static_cast<uint32_t>(std::floor((s - std::floor(s)) * static_cast<float>(n))) % n;
+  };
+  const std::size_t i = std::size_t{texel(uv.y, t.height)} * t.width + texel(uv.x, t.width);
+  const float g = m.roughness_factor * static_cast<float>(t.rgba8[4 * i + 1]) / 255.0f;
+  return a.roughness * g * g;
+}
+
+// The median GGX alpha over a 41 x 41 grid spanning 40 cm around a ray hit on a flat surface
+// (texture coordinates are linear on the hit triangle's plane): the surface's typical gloss,
+// whether the hit itself falls on a tile or in a joint.
+float alpha_around_hit(const Scene& scene, glm::vec3 origin, glm::vec3 direction, const RayHit& hit) {
+  const glm::vec3 p = origin + hit.distance * direction;
+  const glm::vec3 n = triangle_normal(scene.mesh, hit.triangle);
+  const glm::vec3 s = glm::normalize(glm::cross(n, std::abs(n.y) > 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0)));
+  const glm::vec3 t = glm::cross(n, s);
+  std::vector<float> alphas;
+  for (int i = -20; i <= 20; ++i)
+    for (int j = -20; j <= 20; ++j)
+      alphas.push_back(alpha_at(scene, hit.triangle, p + 0.01f * (static_cast<float>(i) * s + static_cast<float>(j) * t)));
+  std::nth_element(alphas.begin(), alphas.begin() + alphas.size() / 2, alphas.end());
+  return alphas[alphas.size() / 2];
 }
 
 bool same_camera(const CameraDesc& a, const CameraDesc& b) {
@@ -136,7 +177,8 @@ TEST(SceneViews, SpotAxisHitsAFrontFaceWithinTheFarPlane) {
     EXPECT_LT(glm::dot(triangle_normal(scene.mesh, hit->triangle), scene.light.direction), 0.0f);
   }
   // Where each axis lands is part of each scene's purpose: the glossy floor of the atrium, the
-  // glossy table of the conference room, the tiny floor straight below the light.
+  // glossy table of the conference room, the tiny floor straight below the light. The GGX alpha
+  // there is the material's, its roughness map read at the hit point.
   const Scene atrium = make_scene("atrium");
   const auto floor_hit = first_hit(atrium.mesh, atrium.light.position, atrium.light.direction, 100.0f);
   ASSERT_TRUE(floor_hit.has_value());
@@ -145,15 +187,16 @@ TEST(SceneViews, SpotAxisHitsAFrontFaceWithinTheFarPlane) {
   EXPECT_EQ(floor.position.y, 0.0f);
   EXPECT_GE(floor.specular.x, 0.3f);
   EXPECT_LE(floor.specular.x, 0.5f);
-  EXPECT_GE(floor.roughness, 0.1f);
-  EXPECT_LE(floor.roughness, 0.2f);
+  const float floor_alpha = alpha_around_hit(atrium, atrium.light.position, atrium.light.direction, *floor_hit);
+  EXPECT_GE(floor_alpha, 0.05f);
+  EXPECT_LE(floor_alpha, 0.2f);
 
   const Scene conference = make_scene("conference");
   const auto table_hit = first_hit(conference.mesh, conference.light.position, conference.light.direction, 100.0f);
   ASSERT_TRUE(table_hit.has_value());
   const SceneVertex& table = conference.mesh.vertices[conference.mesh.indices[3 * table_hit->triangle]];
   EXPECT_GE(table.specular.x, 0.5f);
-  EXPECT_LE(table.roughness, 0.1f);
+  EXPECT_LE(alpha_around_hit(conference, conference.light.position, conference.light.direction, *table_hit), 0.12f);
   EXPECT_GT(table.position.y, 0.5f);  // the table top, not the floor
 
   const Scene tiny = make_scene("tiny");
@@ -253,6 +296,12 @@ TEST(SceneDeterminism, TwoCallsAreIdentical) {
       EXPECT_TRUE(same_mesh(a.mesh, b.mesh)) << name;
       EXPECT_TRUE(same_camera(a.camera, b.camera)) << name;
       EXPECT_TRUE(same_light(a.light, b.light)) << name;
+      ASSERT_EQ(a.textures.size(), b.textures.size()) << name;
+      for (std::size_t t = 0; t < a.textures.size(); ++t) {
+        EXPECT_EQ(a.textures[t].rgba8, b.textures[t].rgba8) << name << " texture " << a.textures[t].name;
+        EXPECT_EQ(a.textures[t].rgba32f, b.textures[t].rgba32f) << name << " texture " << a.textures[t].name;
+      }
+      ASSERT_EQ(a.materials.size(), b.materials.size()) << name;
     }
   }
 }

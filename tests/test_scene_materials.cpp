@@ -74,15 +74,15 @@ Scene floor_scene(const Material& material, std::vector<TextureImage> textures, 
 }
 
 // The checker square a floor point lies in, and its distance to the nearest square edge.
-// Along the quad: u runs along +z from z = -1 and v along +x from x = -1 (add_axis_rect's edges);
+// Along the quad: u runs along +x from x = -1 and v along +z from z = -1 (add_axis_rect's rule);
 // texel (x_t, y_t) of the image is at (u, v) * 32 in its 64-texel period of 2 m.
 bool light_square(glm::vec3 p) {
-  const float u = p.z + 1.0f, v = p.x + 1.0f;
+  const float u = p.x + 1.0f, v = p.z + 1.0f;
   const int iu = static_cast<int>(std::floor(u / 0.5f)), iv = static_cast<int>(std::floor(v / 0.5f));
   return (iu + iv) % 2 == 0;
 }
 float edge_distance(glm::vec3 p) {
-  const float u = p.z + 1.0f, v = p.x + 1.0f;
+  const float u = p.x + 1.0f, v = p.z + 1.0f;
   const auto d = [](float s) { return std::abs(s / 0.5f - std::round(s / 0.5f)) * 0.5f; };
   return std::min(d(u), d(v));
 }
@@ -176,9 +176,9 @@ TEST_F(SceneMaterialsTest, NormalMapTiltsTheNormalInTheTangentFrame) {
   n.width = n.height = 4;
   for (int i = 0; i < 16; ++i) n.rgba8.insert(n.rgba8.end(), {204, 128, 230, 255});
   const Capture cap = record(floor_scene(m, {n}));
-  // The floor's tangent is +z (its u edge), the bitangent cross(n, t) = +x.
+  // The floor's tangent is +x (u runs along x), the bitangent +z (v runs along z).
   const glm::vec3 ts(204.0f / 255.0f * 2.0f - 1.0f, 128.0f / 255.0f * 2.0f - 1.0f, 230.0f / 255.0f * 2.0f - 1.0f);
-  const glm::vec3 expected = glm::normalize(glm::vec3(0.0f, 0.0f, 1.0f) * ts.x + glm::vec3(1.0f, 0.0f, 0.0f) * ts.y +
+  const glm::vec3 expected = glm::normalize(glm::vec3(1.0f, 0.0f, 0.0f) * ts.x + glm::vec3(0.0f, 0.0f, 1.0f) * ts.y +
                                             glm::vec3(0.0f, 1.0f, 0.0f) * ts.z);
   const ViewImage& g = cap.gbuffer;
   std::size_t valid = 0;
@@ -215,8 +215,8 @@ TEST_F(SceneMaterialsTest, AlphaMaskCutsOutAndDoubleSidedShowsTheBack) {
       const glm::vec3 p0 = glm::vec3(a) / a.w, p1 = glm::vec3(b) / b.w;
       const glm::vec3 hit = p0 + (p1 - p0) * (p0.y / (p0.y - p1.y));
       if (std::abs(hit.x) > 0.95f || std::abs(hit.z) > 0.95f) continue;
-      // The alpha is zero on texels x < 32: where the fraction of u (metres along +z) is below 0.5.
-      const float u = hit.z + 1.0f, fu = u - std::floor(u);
+      // The alpha is zero on texels x < 32: where the fraction of u (metres along +x) is below 0.5.
+      const float u = hit.x + 1.0f, fu = u - std::floor(u);
       if (std::abs(fu - 0.5f) < 0.1f || fu < 0.1f || fu > 0.9f) continue;
       if (fu < 0.5f) {
         EXPECT_EQ(g.at(kValid, x, y), 0.0f) << "cut-out texel drawn at " << x << "," << y;

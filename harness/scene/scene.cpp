@@ -5,10 +5,13 @@
 
 #include <array>
 #include <cmath>
+#include <map>
+#include <mutex>
 #include <numbers>
 
 #include "harness/core/error.hpp"
 #include "harness/scene/scene_geometry.hpp"
+#include "harness/scene/surface_detail.hpp"
 
 namespace vsgl {
 namespace {
@@ -44,18 +47,23 @@ CameraDesc camera(glm::vec3 position, glm::vec3 target, float fov_y_deg, float f
   return c;
 }
 
-// A long hall standing in for Table 1: broad lighting, coloured walls, a glossy floor.
+// A long hall standing in for Table 1: broad lighting, coloured walls, a glossy floor. Surface
+// detail (surface_detail.hpp): polished stone tiles with grout on the floor, dressed stone
+// blocks on the walls, speckled stone columns; the ceiling is plain plaster.
 SceneSetup make_atrium() {
   constexpr float kHalfWidth = 5.0f, kHeight = 12.0f, kHalfLength = 15.0f;
-  const SurfaceMaterial red_wall{{0.62f, 0.18f, 0.14f}, glm::vec3(0.04f), 0.6f};
-  const SurfaceMaterial green_wall{{0.18f, 0.52f, 0.20f}, glm::vec3(0.04f), 0.6f};
-  const SurfaceMaterial neutral_wall{{0.60f, 0.58f, 0.55f}, glm::vec3(0.04f), 0.7f};
-  const SurfaceMaterial ceiling{{0.70f, 0.70f, 0.70f}, glm::vec3(0.02f), 0.9f};
-  const SurfaceMaterial glossy_floor{{0.40f, 0.38f, 0.36f}, glm::vec3(0.40f), 0.15f};
-  const SurfaceMaterial stone{{0.72f, 0.68f, 0.60f}, glm::vec3(0.05f), 0.35f};
-
   Scene scene;
   scene.name = "atrium";
+  const DetailMaterial tiles = add_surface_detail(scene, stone_floor_tiles());
+  const DetailMaterial ashlar = add_surface_detail(scene, ashlar_wall());
+  const DetailMaterial column_stone = add_surface_detail(scene, speckled_stone());
+  const SurfaceMaterial red_wall = detailed_surface(ashlar, {0.62f, 0.18f, 0.14f}, glm::vec3(0.04f));
+  const SurfaceMaterial green_wall = detailed_surface(ashlar, {0.18f, 0.52f, 0.20f}, glm::vec3(0.04f));
+  const SurfaceMaterial neutral_wall = detailed_surface(ashlar, {0.60f, 0.58f, 0.55f}, glm::vec3(0.04f));
+  const SurfaceMaterial ceiling{{0.70f, 0.70f, 0.70f}, glm::vec3(0.02f), 0.9f};
+  const SurfaceMaterial glossy_floor = detailed_surface(tiles, {0.40f, 0.38f, 0.36f}, glm::vec3(0.40f));
+  const SurfaceMaterial stone = detailed_surface(column_stone, {0.72f, 0.68f, 0.60f}, glm::vec3(0.05f));
+
   SceneMesh& mesh = scene.mesh;
   add_room(mesh, {-kHalfWidth, 0.0f, -kHalfLength}, {kHalfWidth, kHeight, kHalfLength},
            {red_wall, green_wall, glossy_floor, ceiling, neutral_wall, neutral_wall}, 1.0f);
@@ -112,21 +120,30 @@ void add_chair(SceneMesh& mesh, float x, float z, glm::vec3 towards, const Surfa
 }
 
 // A meeting room standing in for Table 2: the spot light concentrated on a glossy table, so the
-// BRSM PDF is higher-frequency and more concentrated than in the atrium.
+// BRSM PDF is higher-frequency and more concentrated than in the atrium. Surface detail
+// (surface_detail.hpp): a lacquered plank table with growth rings, satin wood pedestals and
+// cabinet, carpet tiles, a painted brick accent wall, board-panelled walls, a smudged
+// whiteboard; the ceiling, the chairs' fabric and their metal legs are plain.
 SceneSetup make_conference() {
   constexpr float kHalfX = 6.0f, kHalfZ = 4.0f, kHeight = 3.5f;
-  const SurfaceMaterial wall{{0.70f, 0.68f, 0.62f}, glm::vec3(0.04f), 0.7f};
-  const SurfaceMaterial accent_wall{{0.25f, 0.35f, 0.55f}, glm::vec3(0.04f), 0.7f};
-  const SurfaceMaterial carpet{{0.30f, 0.28f, 0.26f}, glm::vec3(0.02f), 0.9f};
-  const SurfaceMaterial ceiling{{0.80f, 0.80f, 0.80f}, glm::vec3(0.02f), 0.9f};
-  const SurfaceMaterial glossy_table{{0.28f, 0.16f, 0.08f}, glm::vec3(0.60f), 0.07f};
-  const SurfaceMaterial wood{{0.45f, 0.30f, 0.18f}, glm::vec3(0.08f), 0.4f};
-  const SurfaceMaterial fabric{{0.15f, 0.18f, 0.32f}, glm::vec3(0.03f), 0.8f};
-  const SurfaceMaterial metal{{0.05f, 0.05f, 0.05f}, glm::vec3(0.70f), 0.25f};
-  const SurfaceMaterial whiteboard{{0.85f, 0.85f, 0.85f}, glm::vec3(0.30f), 0.10f};
-
   Scene scene;
   scene.name = "conference";
+  const DetailMaterial panels = add_surface_detail(scene, wall_panels());
+  const DetailMaterial brick = add_surface_detail(scene, painted_brick());
+  const DetailMaterial carpet_detail = add_surface_detail(scene, carpet_tiles());
+  const DetailMaterial lacquered = add_surface_detail(scene, wood_grain(0.07f));
+  const DetailMaterial satin = add_surface_detail(scene, wood_grain(0.4f));
+  const DetailMaterial board = add_surface_detail(scene, smudged_gloss());
+  const SurfaceMaterial wall = detailed_surface(panels, {0.70f, 0.68f, 0.62f}, glm::vec3(0.04f));
+  const SurfaceMaterial accent_wall = detailed_surface(brick, {0.25f, 0.35f, 0.55f}, glm::vec3(0.04f));
+  const SurfaceMaterial carpet = detailed_surface(carpet_detail, {0.30f, 0.28f, 0.26f}, glm::vec3(0.02f));
+  const SurfaceMaterial ceiling{{0.80f, 0.80f, 0.80f}, glm::vec3(0.02f), 0.9f};
+  const SurfaceMaterial glossy_table = detailed_surface(lacquered, {0.28f, 0.16f, 0.08f}, glm::vec3(0.60f));
+  const SurfaceMaterial wood = detailed_surface(satin, {0.45f, 0.30f, 0.18f}, glm::vec3(0.08f));
+  const SurfaceMaterial fabric{{0.15f, 0.18f, 0.32f}, glm::vec3(0.03f), 0.8f};
+  const SurfaceMaterial metal{{0.05f, 0.05f, 0.05f}, glm::vec3(0.70f), 0.25f};
+  const SurfaceMaterial whiteboard = detailed_surface(board, {0.85f, 0.85f, 0.85f}, glm::vec3(0.30f));
+
   SceneMesh& mesh = scene.mesh;
   add_room(mesh, {-kHalfX, 0.0f, -kHalfZ}, {kHalfX, kHeight, kHalfZ},
            {accent_wall, wall, carpet, ceiling, wall, wall}, 0.5f);
@@ -225,15 +242,27 @@ void animate_scene(Scene& scene, const SceneMotion& motion, uint32_t frame, uint
 std::vector<std::string> scene_names() { return {"atrium", "conference", "tiny"}; }
 
 Scene make_scene(const std::string& name, uint32_t frame, uint32_t frames) {
+  // Painting the surface detail takes a good part of a second, and a sequence asks for the same
+  // scene once per frame: each scene is built once per process, then copied.
+  static std::mutex mutex;
+  static std::map<std::string, SceneSetup> built;
   SceneSetup setup;
-  if (name == "atrium") {
-    setup = make_atrium();
-  } else if (name == "conference") {
-    setup = make_conference();
-  } else if (name == "tiny") {
-    setup = make_tiny();
-  } else {
-    throw InputError("scene: unknown scene '" + name + "' (valid scenes: " + valid_names_text() + ")");
+  {
+    const std::lock_guard<std::mutex> lock(mutex);
+    auto it = built.find(name);
+    if (it == built.end()) {
+      if (name == "atrium") {
+        setup = make_atrium();
+      } else if (name == "conference") {
+        setup = make_conference();
+      } else if (name == "tiny") {
+        setup = make_tiny();
+      } else {
+        throw InputError("scene: unknown scene '" + name + "' (valid scenes: " + valid_names_text() + ")");
+      }
+      it = built.emplace(name, setup).first;
+    }
+    setup = it->second;
   }
   animate_scene(setup.scene, setup.motion, frame, frames);
   return setup.scene;

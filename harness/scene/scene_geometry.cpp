@@ -49,36 +49,46 @@ glm::vec3 closest_point_on_triangle(glm::vec3 p, glm::vec3 a, glm::vec3 b, glm::
   return a + ab * (vb * denom) + ac * (vc * denom);
 }
 
+// The quad of add_quad, with its texture coordinates either along (edge_a, edge_b) or, with
+// uv_swapped, along (edge_b, edge_a): the winding (and so the normal) stays cross(edge_a, edge_b).
+void add_quad_mapped(SceneMesh& mesh, glm::vec3 origin, glm::vec3 edge_a, glm::vec3 edge_b,
+                     const SurfaceMaterial& material, uint32_t cells_a, uint32_t cells_b, bool uv_swapped) {
+  if (cells_a == 0 || cells_b == 0) throw std::logic_error("add_quad: zero cells");
+  const glm::vec3 normal = glm::normalize(glm::cross(edge_a, edge_b));
+  const glm::vec3 da = edge_a / static_cast<float>(cells_a);
+  const glm::vec3 db = edge_b / static_cast<float>(cells_b);
+  const float len_a = glm::length(edge_a), len_b = glm::length(edge_b);
+  // The tangent follows +u. Unswapped, cross(normal, edge_a) points along +edge_b = +v (w = +1);
+  // swapped, +u is edge_b and cross(normal, edge_b) points along -edge_a = -v (w = -1).
+  const glm::vec4 tangent = uv_swapped ? glm::vec4(edge_b / len_b, -1.0f) : glm::vec4(edge_a / len_a, 1.0f);
+  auto uv = [&](uint32_t i, uint32_t j) {
+    const glm::vec2 ab(len_a * static_cast<float>(i) / static_cast<float>(cells_a),
+                       len_b * static_cast<float>(j) / static_cast<float>(cells_b));
+    return uv_swapped ? glm::vec2(ab.y, ab.x) : ab;
+  };
+  for (uint32_t j = 0; j < cells_b; ++j) {
+    for (uint32_t i = 0; i < cells_a; ++i) {
+      // Corners from the origin (not accumulated) so that neighbouring cells share exact edges.
+      const glm::vec3 p00 = origin + da * static_cast<float>(i) + db * static_cast<float>(j);
+      const glm::vec3 p10 = origin + da * static_cast<float>(i + 1) + db * static_cast<float>(j);
+      const glm::vec3 p11 = origin + da * static_cast<float>(i + 1) + db * static_cast<float>(j + 1);
+      const glm::vec3 p01 = origin + da * static_cast<float>(i) + db * static_cast<float>(j + 1);
+      const uint32_t first = next_index(mesh);
+      mesh.vertices.push_back(make_vertex(p00, normal, material, uv(i, j), tangent));
+      mesh.vertices.push_back(make_vertex(p10, normal, material, uv(i + 1, j), tangent));
+      mesh.vertices.push_back(make_vertex(p11, normal, material, uv(i + 1, j + 1), tangent));
+      mesh.vertices.push_back(make_vertex(p01, normal, material, uv(i, j + 1), tangent));
+      // cross(da, db) is the normal: (p00, p10, p11) turns counter-clockwise around it.
+      push_quad_indices(mesh, first, first + 1, first + 2, first + 3);
+    }
+  }
+}
+
 }  // namespace
 
 void add_quad(SceneMesh& mesh, glm::vec3 origin, glm::vec3 edge_u, glm::vec3 edge_v,
               const SurfaceMaterial& material, uint32_t cells_u, uint32_t cells_v) {
-  if (cells_u == 0 || cells_v == 0) throw std::logic_error("add_quad: zero cells");
-  const glm::vec3 normal = glm::normalize(glm::cross(edge_u, edge_v));
-  const glm::vec3 du = edge_u / static_cast<float>(cells_u);
-  const glm::vec3 dv = edge_v / static_cast<float>(cells_v);
-  const float len_u = glm::length(edge_u), len_v = glm::length(edge_v);
-  const glm::vec4 tangent(edge_u / len_u, 1.0f);
-  for (uint32_t j = 0; j < cells_v; ++j) {
-    for (uint32_t i = 0; i < cells_u; ++i) {
-      // Corners from the origin (not accumulated) so that neighbouring cells share exact edges.
-      const glm::vec3 p00 = origin + du * static_cast<float>(i) + dv * static_cast<float>(j);
-      const glm::vec3 p10 = origin + du * static_cast<float>(i + 1) + dv * static_cast<float>(j);
-      const glm::vec3 p11 = origin + du * static_cast<float>(i + 1) + dv * static_cast<float>(j + 1);
-      const glm::vec3 p01 = origin + du * static_cast<float>(i) + dv * static_cast<float>(j + 1);
-      const uint32_t first = next_index(mesh);
-      const float u0 = len_u * static_cast<float>(i) / static_cast<float>(cells_u);
-      const float u1 = len_u * static_cast<float>(i + 1) / static_cast<float>(cells_u);
-      const float v0 = len_v * static_cast<float>(j) / static_cast<float>(cells_v);
-      const float v1 = len_v * static_cast<float>(j + 1) / static_cast<float>(cells_v);
-      mesh.vertices.push_back(make_vertex(p00, normal, material, {u0, v0}, tangent));
-      mesh.vertices.push_back(make_vertex(p10, normal, material, {u1, v0}, tangent));
-      mesh.vertices.push_back(make_vertex(p11, normal, material, {u1, v1}, tangent));
-      mesh.vertices.push_back(make_vertex(p01, normal, material, {u0, v1}, tangent));
-      // cross(du, dv) is the normal: (p00, p10, p11) turns counter-clockwise around it.
-      push_quad_indices(mesh, first, first + 1, first + 2, first + 3);
-    }
-  }
+  add_quad_mapped(mesh, origin, edge_u, edge_v, material, cells_u, cells_v, false);
 }
 
 void add_axis_rect(SceneMesh& mesh, glm::vec3 lo, glm::vec3 hi, glm::vec3 normal,
@@ -99,10 +109,13 @@ void add_axis_rect(SceneMesh& mesh, glm::vec3 lo, glm::vec3 hi, glm::vec3 normal
   edge_j[j] = hi[j] - lo[j];
   if (edge_i[i] <= 0.0f || edge_j[j] <= 0.0f) throw std::logic_error("add_axis_rect: empty rectangle");
   const uint32_t cells_i = cells_for(edge_i[i], max_cell), cells_j = cells_for(edge_j[j], max_cell);
+  // Texture u runs along x, except on faces across x (there along z); v along the remaining axis
+  // (up on walls). So a pattern has one orientation on every wall and floor of a scene.
+  const int u_axis = axis == 0 ? 2 : 0;
   if (normal[axis] > 0.0f) {
-    add_quad(mesh, lo, edge_i, edge_j, material, cells_i, cells_j);
+    add_quad_mapped(mesh, lo, edge_i, edge_j, material, cells_i, cells_j, u_axis != i);
   } else {
-    add_quad(mesh, lo, edge_j, edge_i, material, cells_j, cells_i);
+    add_quad_mapped(mesh, lo, edge_j, edge_i, material, cells_j, cells_i, u_axis != j);
   }
 }
 
@@ -139,18 +152,24 @@ void add_open_cylinder(SceneMesh& mesh, glm::vec3 base_centre, float radius, flo
   if (sides < 3) throw std::logic_error("add_open_cylinder: fewer than 3 sides");
   const glm::vec3 up(0.0f, height, 0.0f);
   const uint32_t first = next_index(mesh);
+  // u wraps around a whole number of metres (the circumference rounded, at least 1), so a
+  // texture repeating at 1 m meets itself at the seam; v is the height above the base.
+  const float u_turn = std::max(1.0f, std::round(2.0f * std::numbers::pi_v<float> * radius));
   // Ring k at angle theta: direction (sin, 0, cos). Its tangent (cos, 0, -sin) crossed with +y
-  // is the outward direction, so (bottom k, bottom k+1, top k+1) is counter-clockwise outside.
-  for (uint32_t k = 0; k < sides; ++k) {
-    const float theta = 2.0f * std::numbers::pi_v<float> * static_cast<float>(k) / static_cast<float>(sides);
+  // is the outward direction, so (bottom k, bottom k+1, top k+1) is counter-clockwise outside;
+  // cross(outward, tangent) = +y = +v, handedness +1. Ring `sides` repeats ring 0 at u = u_turn.
+  for (uint32_t k = 0; k <= sides; ++k) {
+    const uint32_t at = k % sides;
+    const float theta = 2.0f * std::numbers::pi_v<float> * static_cast<float>(at) / static_cast<float>(sides);
     const glm::vec3 outward(std::sin(theta), 0.0f, std::cos(theta));
+    const glm::vec4 tangent(std::cos(theta), 0.0f, -std::sin(theta), 1.0f);
+    const float u = u_turn * static_cast<float>(k) / static_cast<float>(sides);
     const glm::vec3 bottom = base_centre + radius * outward;
-    mesh.vertices.push_back(make_vertex(bottom, outward, material));
-    mesh.vertices.push_back(make_vertex(bottom + up, outward, material));
+    mesh.vertices.push_back(make_vertex(bottom, outward, material, {u, 0.0f}, tangent));
+    mesh.vertices.push_back(make_vertex(bottom + up, outward, material, {u, height}, tangent));
   }
   for (uint32_t k = 0; k < sides; ++k) {
-    const uint32_t next = (k + 1) % sides;
-    push_quad_indices(mesh, first + 2 * k, first + 2 * next, first + 2 * next + 1, first + 2 * k + 1);
+    push_quad_indices(mesh, first + 2 * k, first + 2 * (k + 1), first + 2 * (k + 1) + 1, first + 2 * k + 1);
   }
 }
 

@@ -43,6 +43,8 @@ void add_quad(SceneMesh& mesh, glm::vec3 origin, glm::vec3 edge_u, glm::vec3 edg
 
 // An axis-aligned rectangle spanning [lo, hi], which must be flat along the axis of `normal`
 // (a signed unit axis such as (0,0,-1)); subdivided into cells no larger than max_cell metres.
+// Texture coordinates are metres from lo: u along x (along z on faces across x), v along the
+// remaining axis, so a pattern keeps one orientation on all walls and floors.
 void add_axis_rect(SceneMesh& mesh, glm::vec3 lo, glm::vec3 hi, glm::vec3 normal,
                    const SurfaceMaterial& material, float max_cell);
 
@@ -58,7 +60,8 @@ void add_room(SceneMesh& mesh, glm::vec3 lo, glm::vec3 hi,
               const std::array<SurfaceMaterial, 6>& materials, float max_cell);
 
 // The side of a vertical cylinder without caps (columns reach from base to capital), with smooth
-// outward normals; `sides` >= 3 facets around.
+// outward normals; `sides` >= 3 facets around. Texture coordinates: u around (a whole number of
+// metres per turn, the circumference rounded), v the height above the base.
 void add_open_cylinder(SceneMesh& mesh, glm::vec3 base_centre, float radius, float height,
                        uint32_t sides, const SurfaceMaterial& material);
 
