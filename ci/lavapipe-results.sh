@@ -1,0 +1,75 @@
+#!/usr/bin/env bash
+# Regenerates every committed lavapipe result from freshly recorded captures, in the order of
+# their importance: captures, verify, Tables 1-2, quality (both scenes, with their sequences),
+# the shading pictures, the two compare reports, and the dashboard (+ screenshot when a headless
+# Chromium is there). Each step's wall time goes to OUT/regenerate.log. Long: about 1.5-2 hours
+# on lavapipe on a 2-core machine. Not part of .ci/run.
+# Usage: bash ci/lavapipe-results.sh [STEP...]   steps: record verify tables quality shade compare
+#        dashboard (default: all, in that order). VSGL_BENCH=path/to/vsgl-bench to pick a build.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bench=${VSGL_BENCH:-build/release/bench/vsgl-bench}
+out=results/lavapipe
+caps=captures
+steps=("$@")
+[[ ${#steps[@]} -gt 0 ]] || steps=(record verify tables quality shade compare dashboard)
+[[ -x "$bench" ]] || { echo "ci/lavapipe-results.sh: no $bench (build it: cmake --preset release && cmake --build --preset release)" >&2; exit 2; }
+# Only lavapipe: these are the lavapipe results (a GPU run goes to results/<its slug>).
+export VK_ICD_FILENAMES=${VK_ICD_FILENAMES:-/usr/share/vulkan/icd.d/lvp_icd.x86_64.json}
+mkdir -p "$out"
+log=$out/regenerate.log
+echo "# ci/lavapipe-results.sh at $(git rev-parse --short HEAD) on $(date -u +%FT%TZ): ${steps[*]}" >>"$log"
+
+step() {  # step NAME COMMAND...: runs it, logs its wall time
+  local name=$1 start
+  shift
+  start=$(date +%s)
+  echo "== $name: $*" >&2
+  "$@"
+  echo "$name: $(( $(date +%s) - start )) s" | tee -a "$log" >&2
+}
+
+for s in "${steps[@]}"; do
+  case "$s" in
+    record)
+      step record "$bench" record --scene atrium,conference --out "$caps" ;;
+    verify)
+      for scene in atrium conference; do
+        # The text report is the console output; exit 1 (a check failed) stops the script.
+        step "verify $scene" bash -c "\"$bench\" verify --capture $caps/$scene --json $out/verify_$scene.json > $out/verify_$scene.txt"
+      done ;;
+    tables)
+      step tables "$bench" tables --captures "$caps" --out "$out" --no-progress ;;
+    quality)
+      for scene in atrium conference; do
+        step "sequence $scene" "$bench" record --scene "$scene" --frames 32 --gbuffer 480x272 --rsm 256 \
+          --out "$caps/sequences/$scene"
+        step "quality $scene" "$bench" quality --capture "$caps/$scene" --sequence "$caps/sequences/$scene" \
+          --out "$out/quality"
+      done ;;
+    shade)
+      step shade "$bench" shade --capture "$caps/atrium" --stride 4 --validate --out "$out" ;;
+    compare)
+      tmp=$(mktemp -d)
+      for run in A B; do
+        step "compare run $run" "$bench" tables --captures "$caps" --generators fis_tok15,fis_modified \
+          --out "$tmp/$run" --json-only --no-progress
+      done
+      step "compare run slowed" "$bench" tables --captures "$caps" --generators fis_tok15,fis_modified \
+        --debug-slow fis_modified --out "$tmp/S" --json-only --no-progress
+      step "compare same" "$bench" compare "$tmp/A" "$tmp/B" --out "$out/compare_same_commit.md"
+      # The slowed run must come out SLOWER: exit 1 from --fail-on is the expected answer here.
+      step "compare slowed" bash -c "\"$bench\" compare $tmp/A $tmp/S --fail-on slower --out $out/compare_debug_slow_fis_modified.md; [[ \$? -eq 1 ]]"
+      rm -rf "$tmp" ;;
+    dashboard)
+      step dashboard "$bench" dashboard results --out results/dashboard
+      if chromium=$(bash ci/find-chromium.sh 2>/dev/null); then
+        step screenshot "$chromium" --headless --no-sandbox --disable-gpu --hide-scrollbars \
+          --user-data-dir="$(mktemp -d)" --window-size=1280,1400 \
+          --screenshot=results/dashboard/screenshot.png "file://$PWD/results/dashboard/index.html"
+      else
+        echo "ci/lavapipe-results.sh: no headless Chromium (ci/find-chromium.sh); screenshot not refreshed" >&2
+      fi ;;
+    *) echo "ci/lavapipe-results.sh: unknown step '$s'" >&2; exit 2 ;;
+  esac
+done
