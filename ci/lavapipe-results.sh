@@ -32,7 +32,9 @@ step() {  # step NAME COMMAND...: runs it, logs its wall time
 for s in "${steps[@]}"; do
   case "$s" in
     record)
-      step record "$bench" record --scene atrium,conference --out "$caps" ;;
+      for scene in atrium conference; do
+        step "record $scene" "$bench" record --scene "$scene" --out "$caps/$scene"
+      done ;;
     verify)
       for scene in atrium conference; do
         # The text report is the console output; exit 1 (a check failed) stops the script.

@@ -70,6 +70,12 @@ TEST(Cli, BadInvocationsExitWithTheDocumentedCodes) {
   EXPECT_FALSE(std::filesystem::exists("/tmp/vsgl_never_written"));
   r = run_cli("record --gbuffer 0x5");
   EXPECT_EQ(r.exit_code, 2) << r.output;
+  // One --out cannot hold two captures; the message says what to do instead (no phantom option).
+  r = run_cli("record --scene tiny,atrium --out /tmp/vsgl_never_written");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("captures/NAME"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("--out-root"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists("/tmp/vsgl_never_written"));
   r = run_cli("record --rsm many");
   EXPECT_EQ(r.exit_code, 2) << r.output;
   r = run_cli("frobnicate");

@@ -138,7 +138,8 @@ int run_record(Args& args) {
 
   const auto scenes = scene_list.empty() ? std::vector<std::string>{"atrium"} : scene_list;
   if (scenes.size() > 1 && out_arg)
-    throw UsageError("with several scenes, --out names a parent directory: use --out-root instead");
+    throw UsageError("--out names one capture directory, and several scenes were given: leave --out out (each "
+                     "scene goes to captures/NAME) or record the scenes one at a time");
   for (const auto& name : scenes) {
     const std::filesystem::path base = out_arg ? std::filesystem::path(*out_arg) : std::filesystem::path("captures") / name;
     for (uint32_t f = 0; f < frames; ++f) {
