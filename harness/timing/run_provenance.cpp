@@ -43,7 +43,15 @@ SourceRevision source_revision(const std::filesystem::path& source_dir) {
   if (out.size() != 40) return rev;
   rev.commit = out;
   // --no-optional-locks: status must not refresh (write) the index of someone's checkout.
-  if (run_read_only(git + "status --porcelain --untracked-files=no 2>/dev/null", out)) rev.dirty = !out.empty();
+  // The results tree is what runs write, so a run that regenerates committed results (the
+  // second step of ci/lavapipe-results.sh, say) would otherwise call its own commit dirty; only
+  // the results the tables read, the paper's numbers and the schema, count as inputs.
+  const std::string status = git + "status --porcelain --untracked-files=no -- ";
+  std::string inputs;
+  if (run_read_only(status + "':(exclude)results' . 2>/dev/null", out) &&
+      run_read_only(status + "results/paper results/schema 2>/dev/null", inputs)) {
+    rev.dirty = !out.empty() || !inputs.empty();
+  }
   return rev;
 #endif
 }

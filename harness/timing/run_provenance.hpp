@@ -12,7 +12,8 @@ struct DeviceInfo;
 
 // The commit of the source tree: VSGL_GIT_COMMIT when the build defined it, else
 // `git rev-parse HEAD` in `source_dir` when that is a checkout (read-only git commands only),
-// else "unknown". `dirty` is true when tracked files differ from the commit.
+// else "unknown". `dirty` is true when tracked files differ from the commit, outside results/
+// (which runs write) or in results/paper and results/schema (which the tables read).
 struct SourceRevision {
   std::string commit = "unknown";
   bool dirty = false;
