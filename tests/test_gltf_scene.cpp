@@ -250,6 +250,17 @@ TEST(GltfImport, BrokenSampleFilesGiveTheirExpectedOutcome) {
   }
 }
 
+// Found by fuzz_gltf: an embedded image whose bufferView runs past its buffer. tinygltf 2.7 does
+// not check the range and its decoder read past the heap block (AddressSanitizer); now it is a
+// clear error. The file is the fuzzer's crash input, kept in the corpus.
+TEST(GltfImport, ImageViewPastItsBufferIsAnErrorNotAnOverread) {
+  const std::filesystem::path file =
+      std::filesystem::path(VSGL_SOURCE_DIR) / "tests/fuzz/corpus/fuzz_gltf/regression-image-view-past-buffer.glb";
+  const std::string message = input_error([&] { import_gltf(file); });
+  EXPECT_NE(message.find("runs past the end of buffer"), std::string::npos) << message;
+  EXPECT_NE(message.find("regression-image-view-past-buffer.glb"), std::string::npos) << message;
+}
+
 TEST(GltfImport, BadNormalsAreRepairedAndSaidSo) {
   // BoxBadNormals: zero normals and normals of length 0.1; the box itself is fine.
   const GltfImport box = import_gltf(kModels / "BoxBadNormals-glTF-Binary/BoxBadNormals.glb");

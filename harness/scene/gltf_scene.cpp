@@ -640,6 +640,40 @@ std::string scene_name_from_file(const std::filesystem::path& file) {
   return out;
 }
 
+namespace {
+
+// tinygltf 2.7 (Debian 12) hands an image's bufferView to the decoder as
+// &buffer.data[byteOffset] with byteLength bytes, without checking that the view lies inside its
+// buffer: a file whose view runs past the buffer made stb_image read past the heap block (found
+// by fuzz_gltf). This loader checks the view against the model being filled (its buffers and
+// views are parsed before the images) and only then lets tinygltf's own decoder run.
+struct ImageLoadContext {
+  const tinygltf::Model* model = nullptr;
+};
+
+bool load_image_checked(tinygltf::Image* image, const int image_idx, std::string* err, std::string* warn,
+                        int req_width, int req_height, const unsigned char* bytes, int size, void* user_data) {
+  const auto* ctx = static_cast<const ImageLoadContext*>(user_data);
+  if (image->bufferView >= 0) {
+    const tinygltf::Model& m = *ctx->model;
+    // The loader found both indices valid before calling; the range is what it does not check.
+    const tinygltf::BufferView& view = m.bufferViews[static_cast<std::size_t>(image->bufferView)];
+    const tinygltf::Buffer& buffer = m.buffers[static_cast<std::size_t>(view.buffer)];
+    if (view.byteOffset > buffer.data.size() || view.byteLength > buffer.data.size() - view.byteOffset) {
+      if (err != nullptr) {
+        *err += "image " + std::to_string(image_idx) + ": bufferView " + std::to_string(image->bufferView) +
+                " (offset " + std::to_string(view.byteOffset) + ", " + std::to_string(view.byteLength) +
+                " bytes) runs past the end of buffer " + std::to_string(view.buffer) + " (" +
+                std::to_string(buffer.data.size()) + " bytes)";
+      }
+      return false;
+    }
+  }
+  return tinygltf::LoadImageData(image, image_idx, err, warn, req_width, req_height, bytes, size, nullptr);
+}
+
+}  // namespace
+
 GltfImport import_gltf(const std::filesystem::path& path, const GltfCameraChoice& camera_choice,
                        const GltfLightChoice& light_choice, bool ground) {
   if (camera_choice.camera && (camera_choice.eye || camera_choice.look_at || camera_choice.fov_y_deg))
@@ -652,6 +686,8 @@ GltfImport import_gltf(const std::filesystem::path& path, const GltfCameraChoice
 
   tinygltf::TinyGLTF loader;
   tinygltf::Model model;
+  ImageLoadContext image_context{&model};
+  loader.SetImageLoader(load_image_checked, &image_context);
   std::string err, warn;
   const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
   const std::string base_dir = path.parent_path().string();
