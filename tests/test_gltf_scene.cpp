@@ -261,6 +261,14 @@ TEST(GltfImport, ImageViewPastItsBufferIsAnErrorNotAnOverread) {
   EXPECT_NE(message.find("regression-image-view-past-buffer.glb"), std::string::npos) << message;
 }
 
+// Found by fuzz_gltf: an attribute naming an accessor that does not exist was read out of bounds.
+TEST(GltfImport, AttributeWithAMissingAccessorIsAnError) {
+  const std::filesystem::path file = std::filesystem::path(VSGL_SOURCE_DIR) /
+                                     "tests/fuzz/corpus/fuzz_gltf/regression-attribute-accessor-out-of-range.glb";
+  const std::string message = input_error([&] { import_gltf(file); });
+  EXPECT_NE(message.find("does not exist"), std::string::npos) << message;
+}
+
 TEST(GltfImport, BadNormalsAreRepairedAndSaidSo) {
   // BoxBadNormals: zero normals and normals of length 0.1; the box itself is fine.
   const GltfImport box = import_gltf(kModels / "BoxBadNormals-glTF-Binary/BoxBadNormals.glb");

@@ -396,9 +396,16 @@ void convert_primitive(Conversion& conv, const Importer& imp, const NodeInstance
     ++conv.skipped_non_triangle;  // points and lines have no surface to capture
     return;
   }
+  // An attribute's accessor index, -1 when the primitive has no such attribute. An index outside
+  // the accessors is an error here, before anything reads the accessor's type (found by fuzz_gltf:
+  // an optional attribute's accessor type was read out of bounds).
   const auto attr = [&](const char* name) {
     const auto it = prim.attributes.find(name);
-    return it == prim.attributes.end() ? -1 : it->second;
+    if (it == prim.attributes.end()) return -1;
+    if (it->second < 0 || static_cast<std::size_t>(it->second) >= m.accessors.size())
+      r.fail(what + " " + name + ": accessor " + std::to_string(it->second) + " does not exist (" +
+             std::to_string(m.accessors.size()) + " accessors)");
+    return it->second;
   };
   const int pos_acc = attr("POSITION");
   if (pos_acc < 0) r.fail(what + " has no POSITION attribute");
