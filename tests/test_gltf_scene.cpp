@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "input_error.hpp"
 #include "cli_runner.hpp"
 #include "gpu_test.hpp"
 #include "harness/capture/capture_files.hpp"
@@ -28,17 +29,7 @@ namespace {
 namespace fs = std::filesystem;
 const fs::path kModels = "/usr/share/assimp/models/glTF2";
 
-// The message of the InputError `f` throws ("" when it throws none, which fails the test).
-template <class F>
-std::string input_error(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "no InputError";
-  return "";
-}
+using test::input_error;
 
 fs::path temp_dir(const std::string& name) {
   const fs::path dir = fs::temp_directory_path() / ("vsgl_gltf_" + name + "_" + std::to_string(::getpid()));

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <string>
 
+#include "input_error.hpp"
 #include "cli_runner.hpp"
 #include "harness/core/error.hpp"
 #include "harness/report/paper_tables.hpp"
@@ -67,15 +68,7 @@ class TempFile {
   fs::path dir_, path_;
 };
 
-std::string input_error(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "no InputError";
-  return "";
-}
+using test::input_error;
 
 // A table JSON whose generator name (a key) holds a terminal escape and a non-ASCII letter.
 const std::string kHostileTable =
