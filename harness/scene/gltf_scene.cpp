@@ -686,7 +686,9 @@ GltfImport import_gltf(const std::filesystem::path& path, const GltfCameraChoice
   if (camera_choice.camera && (camera_choice.eye || camera_choice.look_at || camera_choice.fov_y_deg))
     throw UsageError("--camera picks a camera of the file; it cannot be combined with --eye/--look-at/--fov");
   GltfImport out;
-  out.file = escape_name(path.string());
+  // The path is the user's own: shown whole (escaped, never cut), so a message names the file
+  // however deep it lies.
+  out.file = printable_text(path.string(), path.string().size());
   const Reporter r(out.file);
   const std::vector<unsigned char> bytes = read_bytes(path, r);
   require_gltf2(bytes, r);
@@ -705,7 +707,7 @@ GltfImport import_gltf(const std::filesystem::path& path, const GltfCameraChoice
   if (!ok) {
     std::string problem = err.empty() ? warn : err;
     while (!problem.empty() && (problem.back() == '\n' || problem.back() == ' ')) problem.pop_back();
-    r.fail("cannot be loaded: " + escape_name(problem));
+    r.fail("cannot be loaded: " + printable_text(problem));
   }
   // tinygltf reports unreadable external images as warnings and leaves them empty; they are
   // caught where a material uses them.
