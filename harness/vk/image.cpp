@@ -121,4 +121,23 @@ VkFormatFeatureFlags optimal_format_features(const Device& device, VkFormat form
   return props.optimalTilingFeatures;
 }
 
+void MipImage::change_layouts(VkCommandBuffer cmd, const std::vector<LevelLayout>& changes,
+                              VkPipelineStageFlags src_stages, VkAccessFlags src_access,
+                              VkPipelineStageFlags dst_stages, VkAccessFlags dst_access) const {
+  std::vector<VkImageMemoryBarrier> barriers;
+  for (const LevelLayout& c : changes) {
+    VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+    b.srcAccessMask = src_access;
+    b.dstAccessMask = dst_access;
+    b.oldLayout = c.from;
+    b.newLayout = c.to;
+    b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    b.image = image_.get();
+    b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, c.base, c.count, 0, layers_};
+    barriers.push_back(b);
+  }
+  vkCmdPipelineBarrier(cmd, src_stages, dst_stages, 0, 0, nullptr, 0, nullptr, static_cast<uint32_t>(barriers.size()),
+                       barriers.data());
+}
+
 }  // namespace vsgl

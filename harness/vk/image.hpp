@@ -41,10 +41,21 @@ namespace vsgl {
 
 // A 2D array image with a full mip chain: the sampled-image pyramid of SPEC §6.1a (array layers =
 // moment layers). One view of every level and layer (for sampling) and one per level (for
-// storage writes). Created in VK_IMAGE_LAYOUT_GENERAL with every texel zero, and kept in that
-// layout, so the passes need only memory barriers.
+// storage writes). Created in VK_IMAGE_LAYOUT_GENERAL with every texel zero. The compute passes
+// and the sampling keep it there (storage images need GENERAL); transfers (the blit chain, the
+// readback) move the levels they touch to the TRANSFER_SRC/DST layouts and back, as a real
+// renderer's mip generation does (GENERAL may cost compression on some GPUs).
 class MipImage {
  public:
+  // Levels [base, base + count) of every layer, from one layout to another.
+  struct LevelLayout {
+    uint32_t base, count;
+    VkImageLayout from, to;
+  };
+  // One vkCmdPipelineBarrier with an image barrier per entry; the contents are kept.
+  void change_layouts(VkCommandBuffer cmd, const std::vector<LevelLayout>& changes, VkPipelineStageFlags src_stages,
+                      VkAccessFlags src_access, VkPipelineStageFlags dst_stages, VkAccessFlags dst_access) const;
+
   MipImage(Device& device, uint32_t size, uint32_t levels, uint32_t layers, VkFormat format, VkImageUsageFlags usage,
            const std::string& name);
   MipImage(MipImage&&) noexcept = default;

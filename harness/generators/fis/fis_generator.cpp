@@ -220,14 +220,22 @@ void FisGenerator::record_mipmapping(CommandStream& stream) {
   // each blit reads the even-rounded region 2*ceil(w/2) x 2*ceil(h/2) of level l — its extra
   // column/row is the zero padding of the virtual square — and writes only the in-bounds extent
   // of level l + 1: the §4 mean with missing children zero (summation order is the driver's).
+  // Each level is in the transfer layout of its role: level l a source once level l + 1 waits
+  // as a destination; all back to GENERAL for the sampling pass.
+  if (sq.levels == 0) return;  // a one-texel square: level 0 is the whole pyramid
+  using Layout = MipImage::LevelLayout;
+  constexpr VkImageLayout kGeneral = VK_IMAGE_LAYOUT_GENERAL;
+  constexpr VkImageLayout kSrc = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+  constexpr VkImageLayout kDst = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+  const VkCommandBuffer cmd = stream.get();
+  image_->change_layouts(cmd, {Layout{0, 1, kGeneral, kSrc}, Layout{1, sq.levels, kGeneral, kDst}},
+                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+                         VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                         VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT);
   for (uint32_t l = 0; l < sq.levels; ++l) {
-    if (l > 0) {
-      VkMemoryBarrier b{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-      b.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-      b.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
-      vkCmdPipelineBarrier(stream.get(), VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &b, 0,
-                           nullptr, 0, nullptr);
-    }
+    if (l > 0)
+      image_->change_layouts(cmd, {Layout{l, 1, kDst, kSrc}}, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                             VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
     const auto w = static_cast<int32_t>(sq.level_width(l + 1));
     const auto h = static_cast<int32_t>(sq.level_height(l + 1));
     VkImageBlit region{};
@@ -235,9 +243,11 @@ void FisGenerator::record_mipmapping(CommandStream& stream) {
     region.srcOffsets[1] = {2 * w, 2 * h, 1};
     region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, l + 1, 0, kMomentLayers};
     region.dstOffsets[1] = {w, h, 1};
-    vkCmdBlitImage(stream.get(), image_->get(), VK_IMAGE_LAYOUT_GENERAL, image_->get(), VK_IMAGE_LAYOUT_GENERAL, 1,
-                   &region, VK_FILTER_LINEAR);
+    vkCmdBlitImage(cmd, image_->get(), kSrc, image_->get(), kDst, 1, &region, VK_FILTER_LINEAR);
   }
+  image_->change_layouts(cmd, {Layout{0, sq.levels, kSrc, kGeneral}, Layout{sq.levels, 1, kDst, kGeneral}},
+                         VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT,
+                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
 }
 
 // One thread per VSGL: sample, choose the level, fetch, build (Eq. 1/4 or Eq. 3/5).
@@ -264,8 +274,15 @@ std::vector<glm::vec4> FisGenerator::download_pyramid(Device& device) const {
   device.submit_and_wait(
       [&](VkCommandBuffer cmd) {
         CommandStream(cmd).full_barrier();
-        vkCmdCopyImageToBuffer(cmd, image_->get(), VK_IMAGE_LAYOUT_GENERAL, readback.get(),
+        const uint32_t all = sq.levels + 1;
+        image_->change_layouts(cmd, {{0, all, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL}},
+                               VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_MEMORY_WRITE_BIT,
+                               VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+        vkCmdCopyImageToBuffer(cmd, image_->get(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.get(),
                                static_cast<uint32_t>(regions.size()), regions.data());
+        image_->change_layouts(cmd, {{0, all, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL}},
+                               VK_PIPELINE_STAGE_TRANSFER_BIT, 0, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
+                               VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT);
         VkMemoryBarrier b{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
         b.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
         b.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
