@@ -162,13 +162,18 @@ class Importer {
  public:
   Importer(const tinygltf::Model& model, Reporter reporter) : m_(model), r_(std::move(reporter)) {}
 
-  // The accessor's elements as doubles (count * components), every byte checked to lie inside
-  // its buffer view and buffer. `what` names the accessor's use in messages.
-  std::vector<double> read_accessor(int index, int want_components, const std::string& what) const {
+  // Accessor `index`, an error naming `what` when there is none.
+  const tinygltf::Accessor& accessor(int index, const std::string& what) const {
     if (index < 0 || static_cast<std::size_t>(index) >= m_.accessors.size())
       r_.fail(what + ": accessor " + std::to_string(index) + " does not exist (" +
               std::to_string(m_.accessors.size()) + " accessors)");
-    const tinygltf::Accessor& a = m_.accessors[static_cast<std::size_t>(index)];
+    return m_.accessors[static_cast<std::size_t>(index)];
+  }
+
+  // The accessor's elements as doubles (count * components), every byte checked to lie inside
+  // its buffer view and buffer. `what` names the accessor's use in messages.
+  std::vector<double> read_accessor(int index, int want_components, const std::string& what) const {
+    const tinygltf::Accessor& a = accessor(index, what);
     const std::string where = what + " (accessor " + std::to_string(index) + ")";
     if (a.sparse.isSparse) r_.fail(where + ": sparse accessors are not supported");
     const int comps = type_components(a.type);
@@ -402,9 +407,7 @@ void convert_primitive(Conversion& conv, const Importer& imp, const NodeInstance
   const auto attr = [&](const char* name) {
     const auto it = prim.attributes.find(name);
     if (it == prim.attributes.end()) return -1;
-    if (it->second < 0 || static_cast<std::size_t>(it->second) >= m.accessors.size())
-      r.fail(what + " " + name + ": accessor " + std::to_string(it->second) + " does not exist (" +
-             std::to_string(m.accessors.size()) + " accessors)");
+    imp.accessor(it->second, what + " " + name);
     return it->second;
   };
   const int pos_acc = attr("POSITION");
@@ -688,7 +691,7 @@ GltfImport import_gltf(const std::filesystem::path& path, const GltfCameraChoice
   GltfImport out;
   // The path is the user's own: shown whole (escaped, never cut), so a message names the file
   // however deep it lies.
-  out.file = printable_text(path.string(), path.string().size());
+  out.file = printable_text(path.string(), std::string_view::npos);
   const Reporter r(out.file);
   const std::vector<unsigned char> bytes = read_bytes(path, r);
   require_gltf2(bytes, r);
