@@ -150,9 +150,12 @@ run_tests() {
   fi
   [[ -n $device ]] || { echo "no default device in devices.json"; return 1; }
   echo "test device: $device (vsgl-bench devices)"
-  # Not here: the sample models of Debian's assimp-testmodels, unless installed.
+  # Not here unless installed: Debian's assimp-testmodels, which these tests read (CI runs them).
   local skip=""
-  [[ -d /usr/share/assimp/models/glTF2 ]] || skip="-GltfRecordTest.SampleModelsRecordWithTheirTextures:GltfImport.*"
+  [[ -d /usr/share/assimp/models/glTF2 ]] ||
+    skip="-GltfImport.BadNormalsAreRepairedAndSaidSo:GltfImport.BrokenSampleFilesGiveTheirExpectedOutcome"
+  [[ -z $skip ]] || skip+=":GltfImport.EngineWithManyNodesKeepsItsTransformsAndCamera:GltfImport.TexturedBoxIsTheSameInEveryContainer"
+  [[ -z $skip ]] || skip+=":GltfRecordTest.SampleModelsRecordWithTheirTextures:GltfRecordCli.RecordsTheRoomWithItsSourceInTheSidecar"
   VSGL_TEST_DEVICE=$device "$build_dir/tests/vsgl_tests" --gtest_output="json:$run/tests.json" \
     ${skip:+--gtest_filter="$skip"}
 }
