@@ -68,7 +68,7 @@ commands:
       --debug-slow G[,G]      TEST-ONLY: extra work in G's last phase (to test `compare`; marked in the JSON)
 
   verify  --capture DIR        check every FIS pass against its CPU reference on this device
-                              (SPEC §11): one line per check, measured error <= tolerance
+                              (DESIGN.md §11): one line per check, measured error <= tolerance
       --json FILE             also write the checks as JSON
       --camera-vsgls N, --light-vsgls N, --K K    [2048, 1024, 1]
       --pyramid P[,P]         FIS pyramid paths to check: texture, buffer        [texture,buffer]

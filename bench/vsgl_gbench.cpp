@@ -1,4 +1,4 @@
-// vsgl-gbench: the tables' measurements as Google Benchmark results for dashboards (SPEC §10):
+// vsgl-gbench: the tables' measurements as Google Benchmark results for dashboards (DESIGN.md §10):
 // one benchmark per table/generator/view/phase (and per view total), each iteration a replay of the
 // case's once-recorded command buffer, with UseManualTime fed by the GPU timestamps of that phase.
 // Device, driver, git commit and every capture hash are in the JSON's "context".

@@ -1,4 +1,4 @@
-// vsgl-mipbench: the FIS texture path's three mipmapping strategies (SPEC §6.1a) timed alone on
+// vsgl-mipbench: the FIS texture path's three mipmapping strategies (DESIGN.md §6.1a) timed alone on
 // both views of the paper's captures, as Google Benchmark results with manual time = the GPU
 // timestamps around the `mipmapping` phase: single-pass (one dispatch, the last group finishes the
 // small levels), blit (the vkCmdBlitImage chain) and per-level (one dispatch per level). This is

@@ -1,6 +1,6 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// The BRSM PDF (SPEC §8): for every RSM texel, its power times the importance it receives from
+// The BRSM PDF (DESIGN.md §8): for every RSM texel, its power times the importance it receives from
 // the camera-view VSGLs (made by fis_modified on the G-buffer). One thread per texel; the camera
 // VSGLs stream through shared memory in tiles so each is read once per workgroup.
 #include "vsgl_math.glsl"

@@ -1,9 +1,9 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// Writes the capture channels of SPEC §3 into five RGBA32F render targets.
+// Writes the capture channels of DESIGN.md §3 into five RGBA32F render targets.
 //  camera view (G-buffer): albedos and the camera PDF = luminance of the reflectance;
 //  light view (RSM): flux Phi = I * dOmega_j * rho with dOmega_j = texel area * cos^3(theta_j),
-//  zero outside the spot cone. The BRSM PDF is computed later from camera VSGLs (SPEC §8).
+//  zero outside the spot cone. The BRSM PDF is computed later from camera VSGLs (DESIGN.md §8).
 // The surface comes from the draw's material: constants (procedural scenes, exactly the vertex
 // values), glTF metallic-roughness, or vertex albedos modulated by textures; maps are sampled
 // trilinearly from their full mip chains.

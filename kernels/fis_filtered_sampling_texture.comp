@@ -1,6 +1,6 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// FIS filtered sampling on the sampled-image pyramid (`--pyramid texture`, SPEC §6.1a): texelFetch
+// FIS filtered sampling on the sampled-image pyramid (`--pyramid texture`, DESIGN.md §6.1a): texelFetch
 // for the hierarchical warp, one hardware-filtered textureLod per trilinear lookup, as the paper's
 // GPU ran it. The pass: include/fis_filtered_sampling.glsl.
 #include "vsgl_math.glsl"

@@ -1,7 +1,7 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // FIS phase 2, "mipmapping", on the storage-buffer pyramid: level l+1 of every moment layer from
-// level l (SPEC §4), the mean of the four children, missing children counting as zero, summed in
+// level l (DESIGN.md §4), the mean of the four children, missing children counting as zero, summed in
 // a fixed order (mip_average) so the CPU reference can match it bit for bit. One dispatch per
 // level, one thread per output texel.
 #include "interface/fis.h"

@@ -1,7 +1,7 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // FIS "mipmapping" on the sampled-image pyramid in ONE dispatch (`--mipmapping single-pass`,
-// SPEC §6.1a), in the manner of AMD FidelityFX SPD: each 16x16 group reduces a 64x64 tile of
+// DESIGN.md §6.1a), in the manner of AMD FidelityFX SPD: each 16x16 group reduces a 64x64 tile of
 // level 0 to levels 1..6 (level 1-2 in registers, 3-6 in shared memory), writing every in-bounds
 // texel of those levels; the group that arrives last at a global atomic counter then builds
 // levels 7..L from the level-6 texels all groups left in a coherent buffer. Every texel is

@@ -1,6 +1,6 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// k-means, `cluster_assignment`: the exact nearest centre of every texel's feature (SPEC §6.2),
+// k-means, `cluster_assignment`: the exact nearest centre of every texel's feature (DESIGN.md §6.2),
 // ties to the lower cluster id, "no cluster" for texels outside every cluster.
 // Search: the cells of the grid in rings (Chebyshev shells) around the texel's cell, until the
 // best squared distance found is below the squared distance to the nearest face of the searched

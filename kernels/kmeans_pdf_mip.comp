@@ -1,7 +1,7 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // k-means seeding: level l+1 of the PDF pyramid from level l, with the FIS mip pass's summation
-// order (fis_mip_level.comp), so that the seeds are exactly the FIS kernel centres (SPEC §5).
+// order (fis_mip_level.comp), so that the seeds are exactly the FIS kernel centres (DESIGN.md §5).
 // The pyramid has a single layer holding q in .w; pyramid_total = 0 makes every layer index of
 // pyramid.glsl address it.
 #include "interface/kmeans.h"

@@ -1,6 +1,6 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// k-means, `cluster_assignment` step 1: per texel, its feature (SPEC §6.2: the texel centre in
+// k-means, `cluster_assignment` step 1: per texel, its feature (DESIGN.md §6.2: the texel centre in
 // pixels for kmeans_2d, the world position for kmeans_3d) with its PDF weight q, or q = -1 for a
 // texel that belongs to no cluster (valid flag 0, or w = 0 and q = 0); level 0 of the PDF pyramid
 // (q in .w, as the FIS "additional" pass stores it, so the seeds equal the FIS kernel centres);

@@ -1,6 +1,6 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// k-means seeding (SPEC §6.2 "Seeds"): the N kernel centres of SPEC §5 — the Fibonacci lattice
+// k-means seeding (DESIGN.md §6.2 "Seeds"): the N kernel centres of DESIGN.md §5 — the Fibonacci lattice
 // warped down the PDF pyramid by hierarchical_warp.glsl — become the initial cluster centres:
 // kmeans_2d: the kernel centre in pixels (x_i * S, inside the chosen texel); kmeans_3d: the world
 // position of the chosen texel. One thread per cluster.

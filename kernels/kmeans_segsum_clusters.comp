@@ -1,7 +1,7 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // k-means `sum`, segmented-reduction variant, step 2 of 2: one thread per cluster adds its pieces
-// (at most size / CHUNK + 1, in chunk order) and builds the VSGL (SPEC §7).
+// (at most size / CHUNK + 1, in chunk order) and builds the VSGL (DESIGN.md §7).
 #include "kmeans_common.glsl"
 #include "vsgl_math.glsl"
 #include "interface/kmeans.h"

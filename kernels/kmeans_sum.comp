@@ -1,8 +1,8 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// k-means `sum`, the paper-faithful variant (SPEC §6.2, Prutkin et al.): one thread per cluster
+// k-means `sum`, the paper-faithful variant (DESIGN.md §6.2, Prutkin et al.): one thread per cluster
 // adds the moments of its texels one after another (cost linear in the largest cluster), then
-// builds the cluster's VSGL (SPEC §7).
+// builds the cluster's VSGL (DESIGN.md §7).
 #include "kmeans_common.glsl"
 #include "vsgl_math.glsl"
 #include "interface/kmeans.h"

@@ -2,7 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 // k-means centre update, step 2 of 2: one thread per cluster adds its pieces in chunk order and
 // moves the centre to the q-weighted mean of its features. A cluster with no texel, or whose
-// texels all have q = 0, keeps its centre (SPEC §6.2).
+// texels all have q = 0, keeps its centre (DESIGN.md §6.2).
 #include "kmeans_common.glsl"
 #include "interface/kmeans.h"
 layout(local_size_x_id = 0) in;  // kKmeansNarrowGroupSize (interface/kmeans.h)

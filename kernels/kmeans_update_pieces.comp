@@ -1,6 +1,6 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// k-means centre update (SPEC §6.2, end of each Lloyd iteration), step 1 of 2: a deterministic
+// k-means centre update (DESIGN.md §6.2, end of each Lloyd iteration), step 1 of 2: a deterministic
 // segmented reduction over the assignment sorted by cluster. The sorted order is cut into chunks
 // of CHUNK elements; thread j sums, sequentially, the (q f, q) of each cluster's elements inside
 // chunk j and stores the piece of cluster k at slot j + k (slots are unique: a cluster's chunks

@@ -1,6 +1,6 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// The shading pass (SPEC §8 (a)): the camera view lit by N VSGLs, without visibility. One thread
+// The shading pass (DESIGN.md §8 (a)): the camera view lit by N VSGLs, without visibility. One thread
 // per output pixel; output pixel (i, j) shades G-buffer texel (i * stride, j * stride), so a stride
 // k > 1 gives a ceil(W / k) x ceil(H / k) preview. Radiance toward the camera is the sum over the
 // VSGLs of vsgl_radiance_surface() in index order (the CPU twin, harness/quality/shading_pass.cpp, sums in

@@ -1,4 +1,4 @@
-// The BRSM PDF (SPEC §8): equals its CPU twin texel by texel, is deterministic, and concentrates
+// The BRSM PDF (DESIGN.md §8): equals its CPU twin texel by texel, is deterministic, and concentrates
 // its mass where the camera sees the lit surfaces.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Capture storage (SPEC §3) and its rejection of bad input (SPEC §12). CPU only, no device.
+// Capture storage (DESIGN.md §3) and its rejection of bad input (DESIGN.md §12). CPU only, no device.
 #include <sys/wait.h>
 #include <unistd.h>
 

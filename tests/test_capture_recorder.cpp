@@ -1,4 +1,4 @@
-// The recorder against the scene it rasterized (SPEC §3): positions on the scene's surfaces,
+// The recorder against the scene it rasterized (DESIGN.md §3): positions on the scene's surfaces,
 // unit normals facing the viewer, camera PDF = reflectance luminance, RSM flux zero outside the
 // cone and following I * texel_area * cos^3(theta) * albedo inside it, and determinism.
 #include <gtest/gtest.h>

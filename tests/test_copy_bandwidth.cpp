@@ -1,4 +1,4 @@
-// The physical limit of SPEC §9: the copy-bandwidth measurement (harness/timing/copy_bandwidth.hpp)
+// The physical limit of DESIGN.md §9: the copy-bandwidth measurement (harness/timing/copy_bandwidth.hpp)
 // on the test device with a small size — only that it is a finite positive number with its
 // bookkeeping consistent, never how fast — its size plan and options on hand-made limits, and the
 // FIS passes' least-traffic model (harness/generators/fis/fis_traffic.hpp) by hand.

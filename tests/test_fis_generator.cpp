@@ -1,4 +1,4 @@
-// The FIS generators on the GPU against their CPU reference (SPEC §11): the pyramid built on the
+// The FIS generators on the GPU against their CPU reference (DESIGN.md §11): the pyramid built on the
 // device equals the CPU mip chain of the same level 0 bit for bit, the sampler picks the same
 // texels, and every VSGL (level, density, power, moments) agrees to float rounding.
 #include <gtest/gtest.h>
@@ -94,7 +94,7 @@ TEST_F(FisGeneratorTest, MatchesTheCpuReferenceOnBothViews) {
   }
 }
 
-// SPEC §6.1a: the texture path. Every mipmapping strategy builds the CPU chain of the device's
+// DESIGN.md §6.1a: the texture path. Every mipmapping strategy builds the CPU chain of the device's
 // level 0 (the compute ones bit for bit; the blit, whose samples land between the children only
 // to subTexelPrecisionBits, each texel within blit_chain_error_ratio's bound of its children's
 // mean); the kernel centres are the CPU's exactly (texelFetch), and every

@@ -1,5 +1,5 @@
 // The CPU reference of the FIS generators (harness/reference/fis_reference.hpp) against the properties of
-// SPEC §4-§6 and §11: the virtual-square pyramid, the stratified hierarchical sampler, the level
+// DESIGN.md §4-§6 and §11: the virtual-square pyramid, the stratified hierarchical sampler, the level
 // choice of both variants, and whole-generator behaviour on synthetic moment images.
 #include <gtest/gtest.h>
 
@@ -77,7 +77,7 @@ TEST(VirtualSquareLayout, NonPowerOfTwoImages) {
   EXPECT_EQ(a.total_texels(), 52u);
   EXPECT_EQ(a.square_texels(), 64u);
 
-  const VirtualSquare g = VirtualSquare::make(1920, 1088);  // the paper's G-buffer (SPEC §4)
+  const VirtualSquare g = VirtualSquare::make(1920, 1088);  // the paper's G-buffer (DESIGN.md §4)
   EXPECT_EQ(g.size, 2048u);
   EXPECT_EQ(g.levels, 11u);
   EXPECT_EQ(g.level_width(11), 1u);
@@ -120,7 +120,7 @@ TEST(MipPyramidReference, LevelsAreBlockMeansOverTheVirtualSquare) {
               }
           const glm::dvec4 mean = sum / static_cast<double>(block * block);
           const glm::vec4 got = p.at(l, static_cast<int32_t>(i), static_cast<int32_t>(j));
-          // Normalized error <= 1e-6 (SPEC §11), relative to the mean magnitude of the block.
+          // Normalized error <= 1e-6 (DESIGN.md §11), relative to the mean magnitude of the block.
           const double tol = 1e-6 * std::max(1.0, scale / static_cast<double>(block * block));
           for (int c = 0; c < 4; ++c)
             ASSERT_NEAR(got[c], mean[c], tol) << "level " << l << " texel " << i << "," << j << " channel " << c;
@@ -286,7 +286,7 @@ TEST(FisSampler, IsStratified) {
   // consecutive points are evenly spread (three-gap theorem) but not a permutation of the rows:
   // a texel receives 0 to 2 samples, and any aligned block of b x b texels b^2 +- 2 (independent
   // samples would stray by ~3 sqrt(b^2)). "Every texel exactly once" would need u.y to be a
-  // (0,2)-sequence such as the radical inverse of i; SPEC §5 prescribes the golden ratio.
+  // (0,2)-sequence such as the radical inverse of i; DESIGN.md §5 prescribes the golden ratio.
   const uint32_t S = 32;
   const MipPyramid q = pdf_pyramid(S, S, [](uint32_t, uint32_t) { return 1.0f; });
   const auto samples = reference_samples(q, S * S, 0);
@@ -381,7 +381,7 @@ TEST(FisLevels, ModifiedLevelsSolveEquation3WithinTheBisectionTolerance) {
 // ---- whole generator -----------------------------------------------------------------------
 
 TEST(FisReference, UniformPdfWithOneKernelPerTexel) {
-  // Uniform PDF, N = M, K = 1 (SPEC §11): every kernel is one texel wide, l = 0 for both variants.
+  // Uniform PDF, N = M, K = 1 (DESIGN.md §11): every kernel is one texel wide, l = 0 for both variants.
   // Tok15: p = 1 exactly, so l = 0 and power = f_bar exactly. Modified: p_bar(x, 0) = 1 up to the
   // rounding of the bilinear weights, so l <= the bisection tolerance away from the border.
   const uint32_t S = 16;
@@ -410,7 +410,7 @@ TEST(FisReference, UniformPdfWithOneKernelPerTexel) {
 }
 
 TEST(FisReference, KernelCentredOnATexelReproducesThatTexelForBothVariants) {
-  // The exact form of SPEC §11's "each VSGL reproduces its texel" (uniform PDF, N = M, K = 1):
+  // The exact form of DESIGN.md §11's "each VSGL reproduces its texel" (uniform PDF, N = M, K = 1):
   // with its centre on a texel centre, a level-0 kernel reads that texel alone, so power = the
   // texel's flux and mu = the texel's position (up to the rounding of (w P) / w).
   const uint32_t S = 8;

@@ -1,4 +1,4 @@
-// glTF 2.0 import (SPEC §3): Khronos sample files nobody here wrote (Debian's assimp-testmodels),
+// glTF 2.0 import (DESIGN.md §3): Khronos sample files nobody here wrote (Debian's assimp-testmodels),
 // each broken one with its expected outcome, and a closed room written by the test itself whose
 // G-buffer and RSM are checked exactly: positions on the surfaces, unit normals facing the
 // camera, the floor's checker texture in the diffuse channel, flux inside the spot cone only.

@@ -1,4 +1,4 @@
-// The k-means generators on the GPU against their CPU reference (SPEC §6.2, §11): features and
+// The k-means generators on the GPU against their CPU reference (DESIGN.md §6.2, §11): features and
 // seeds bit-exact, the grid-accelerated assignment equal to brute force over the GPU's own
 // centres for every texel, the sort a stable permutation with correct ranges, the per-cluster
 // sums equal to double-precision sums, sum of cluster power = total flux, the segmented sum equal
@@ -61,7 +61,7 @@ class KmeansGeneratorTest : public test::GpuTest {
     return r;
   }
 
-  // Every property of SPEC §11 that holds for any centres: checked against the GPU's own centres.
+  // Every property of DESIGN.md §11 that holds for any centres: checked against the GPU's own centres.
   static void check_consistency(const ViewImage& image, const DeviceView& view, KmeansSpace space,
                                 const GpuResult& gpu) {
     const std::vector<glm::vec4> features = kmeans_features(image, view.source_position, space);

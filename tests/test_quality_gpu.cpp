@@ -67,7 +67,7 @@ TEST_F(QualityGpuTest, FlickerOfAnOffsetIgnoringGeneratorIsExactlyZero) {
 }
 
 // Brute force: each VPL is a point with the emission lobe I(w) = Phi c(lambda) G(w; -axis, lambda);
-// a receiver gets I(wc) f(wc) / d^2 with f the SG response of SPEC §8 (a) evaluated at wc — the
+// a receiver gets I(wc) f(wc) / d^2 with f the SG response of DESIGN.md §8 (a) evaluated at wc — the
 // point-light limit the shading pass must reach for sigma^2 -> 0, computed here in double without
 // any SG product.
 TEST_F(QualityGpuTest, ReferenceMatchesABruteForceVplSum) {

@@ -78,7 +78,7 @@ TEST(QualityCoverage, KnownGapsAndOverlapsArePdfWeighted) {
   EXPECT_THROW(kernel_coverage({kernel_at(0.5f, 0.5f, -1.0f)}, v[2], 1.0f), InputError);
 }
 
-// SPEC §11's uniform case, N = M, K = 1, under the lattice of SPEC §5 (kernels/CONVENTIONS.md):
+// DESIGN.md §11's uniform case, N = M, K = 1, under the lattice of DESIGN.md §5 (kernels/CONVENTIONS.md):
 // what holds exactly and what does not.
 TEST(QualityCoverage, UniformPdfWithNEqualsM) {
   constexpr uint32_t kSide = 32, kM = kSide * kSide;
@@ -244,7 +244,7 @@ TEST(QualityFootprint, CountWeightedErrorOfKnownCounts) {
   EXPECT_DOUBLE_EQ(c.mean_count, 2.0);
 }
 
-// SPEC §11a: a uniform PDF is its own lattice floor, for both generators: excess exactly 0. The
+// DESIGN.md §11a: a uniform PDF is its own lattice floor, for both generators: excess exactly 0. The
 // support is a disc inside a larger valid region (valid texels with q = 0 are not part of it).
 TEST(QualityLatticeFloor, UniformPdfGivesExactlyTheFloor) {
   const auto in_disc = [](uint32_t x, uint32_t y) {

@@ -1,4 +1,4 @@
-// The procedural scenes of SPEC §3 and the mesh queries the recorder tests rely on. CPU only.
+// The procedural scenes of DESIGN.md §3 and the mesh queries the recorder tests rely on. CPU only.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// The material path of the recorder: textures sampled from their mip chains, the SPEC §3
+// The material path of the recorder: textures sampled from their mip chains, the DESIGN.md §3
 // metallic-roughness mapping, normal maps in the tangent frame, alpha-mask cut-outs and
 // double-sided surfaces, in the G-buffer and the RSM; and the CPU parts (mip chains, tangents).
 #include <gtest/gtest.h>

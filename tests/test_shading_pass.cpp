@@ -1,4 +1,4 @@
-// The shading pass (SPEC §8 (a)) and its pictures: the GPU radiance equals the CPU twin pixel by
+// The shading pass (DESIGN.md §8 (a)) and its pictures: the GPU radiance equals the CPU twin pixel by
 // pixel, the stride picks every k-th G-buffer texel, pixels without geometry are black; tone
 // mapping is monotonic and the PNG coding round-trips bit for bit.
 #include <gtest/gtest.h>

@@ -131,7 +131,7 @@ TEST_F(TablesRunTest, TinyRunProducesCompleteFiniteTablesThatMatchTheSchema) {
         }
     EXPECT_FALSE(doc["bandwidth"]["passes"].contains("kmeans_2d"));  // no streaming pass to bound
     EXPECT_EQ(doc["capture"]["hashes"]["gbuffer"].size(), 15u);
-    // SPEC §6.1a: the texture path by default, with its format, sampler and precision limits.
+    // DESIGN.md §6.1a: the texture path by default, with its format, sampler and precision limits.
     const auto& pyramid = doc["config"]["pyramid"];
     EXPECT_EQ(pyramid["path"], "texture");
     EXPECT_EQ(pyramid["image_format"], "R32G32B32A32_SFLOAT");

@@ -1,4 +1,4 @@
-// The timestamp facility of SPEC §9 on a real queue, and its arithmetic without one.
+// The timestamp facility of DESIGN.md §9 on a real queue, and its arithmetic without one.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -97,7 +97,7 @@ TEST_F(TimestampPoolTest, EachIntervalTimesItsOwnPhase) {
     CaptureRecorder recorder(dev);
     (void)recorder.record(make_scene("tiny"), RecordSizes{32, 32, 16}, 0, 1);
   }
-  run(8);  // warm-up: the first dispatch pays the driver's shader compilation (SPEC §9)
+  run(8);  // warm-up: the first dispatch pays the driver's shader compilation (DESIGN.md §9)
   // Grow the heavy phase until it is 64x both light ones (and at least 1 ms); a shift would make
   // that unreachable, so growth also stops once a trial takes 2 s.
   uint32_t heavy_iterations = 256;

@@ -1,4 +1,4 @@
-// `vsgl-bench verify` (SPEC §11): every FIS check passes on a small capture and on the full-size
+// `vsgl-bench verify` (DESIGN.md §11): every FIS check passes on a small capture and on the full-size
 // atrium capture, and bad invocations fail with clear messages and the documented exit codes.
 #include <gtest/gtest.h>
 

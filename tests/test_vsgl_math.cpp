@@ -1,6 +1,6 @@
 // The VSGL maths on the CPU (harness/math/vsgl_math.hpp, twin of kernels/include/vsgl_math.glsl and
-// sg_eval.glsl): lobe statistics (SPEC §7), VSGLs from moments, and SG evaluation with its
-// point-light limit (SPEC §8, §11).
+// sg_eval.glsl): lobe statistics (DESIGN.md §7), VSGLs from moments, and SG evaluation with its
+// point-light limit (DESIGN.md §8, §11).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,7 +1,7 @@
 // The GLSL VSGL maths (kernels/include/vsgl_math.glsl, sg_eval.glsl, run by the test-only kernel
 // kernels/test_vsgl_math.comp) against their C++ twins (harness/math/vsgl_math.hpp), on a batch of
 // generated cases including the edge cases (invalid texels, empty moments, a receiver on the
-// VSGL, tiny radii, every branch of A(lambda) and of the SG integral). SPEC §11: "VSGL evaluation
+// VSGL, tiny radii, every branch of A(lambda) and of the SG integral). DESIGN.md §11: "VSGL evaluation
 // matches its CPU twin".
 //
 // Tolerance: |gpu - cpu| <= 1e-4 * max(|gpu|, |cpu|) + floor. Vulkan lets exp/log/inversesqrt

@@ -1,5 +1,5 @@
 // `vsgl-bench record`: rasterize a procedural scene or a user's glTF 2.0 file into a capture
-// (SPEC §3) and write it.
+// (DESIGN.md §3) and write it.
 #include <chrono>
 #include <cmath>
 #include <cstdio>

@@ -24,7 +24,7 @@
 namespace vsgl::cli {
 namespace {
 
-constexpr uint32_t kLightViewVsgls = 1024;  // the paper's N for the light view (SPEC §2)
+constexpr uint32_t kLightViewVsgls = 1024;  // the paper's N for the light view (DESIGN.md §2)
 
 // Every registered generator can light the view (generators/generator_registry.hpp).
 const GeneratorDescriptor& find_generator(const std::string& name) {
@@ -58,7 +58,7 @@ int run_shade(Args& args) {
   const DeviceView camera = upload_view(device, capture, ViewKind::kCamera);
   const DeviceView light = upload_view(device, capture, ViewKind::kLight);
 
-  // Everything is computed and checked before the first file is written (SPEC §12).
+  // Everything is computed and checked before the first file is written (DESIGN.md §12).
   std::vector<RadianceImage> images;
   for (const GeneratorDescriptor* g : generators) {
     config.vsgl_count = vsgl_count;

@@ -1,5 +1,5 @@
 // `vsgl-bench tables`: the paper's Tables 1 and 2 (and the Table 3 analog) on this device
-// (SPEC §9, §10). The work is harness/report/tables_run.hpp; this file maps options and prints.
+// (DESIGN.md §9, §10). The work is harness/report/tables_run.hpp; this file maps options and prints.
 #include <unistd.h>
 
 #include <cstdio>

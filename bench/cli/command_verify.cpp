@@ -1,4 +1,4 @@
-// `vsgl-bench verify --capture DIR`: the correctness run (SPEC §11) a user does on their own GPU:
+// `vsgl-bench verify --capture DIR`: the correctness run (DESIGN.md §11) a user does on their own GPU:
 // the FIS generators pass by pass, then the k-means generators step by step.
 // One line per check with its measured error and tolerance; exit 1 if any check fails.
 #include <cstdio>

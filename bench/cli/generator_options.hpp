@@ -21,7 +21,7 @@ struct GeneratorOptions {
 // Throws UsageError for a malformed value (generator names are checked by the caller's run).
 GeneratorOptions read_generator_options(Args& args);
 
-// --pyramid texture|buffer (default texture, SPEC §6.1a) and --mipmapping STRATEGY (default: the
+// --pyramid texture|buffer (default texture, DESIGN.md §6.1a) and --mipmapping STRATEGY (default: the
 // device kind's, left unset here) into `config`; `shade`, `quality` and `verify` read them too.
 // Throws UsageError naming the accepted values.
 void read_pyramid_options(Args& args, GeneratorConfig& config);

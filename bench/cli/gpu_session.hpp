@@ -1,6 +1,6 @@
 #pragma once
 // The device part every GPU subcommand shares: --device and --validate, and the validation
-// verdict at the end (any validation error makes the run fail, SPEC §11).
+// verdict at the end (any validation error makes the run fail, DESIGN.md §11).
 #include <memory>
 
 #include "bench/cli/args.hpp"

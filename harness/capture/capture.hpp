@@ -1,5 +1,5 @@
 #pragma once
-// A capture: one frame of one scene, recorded by the rasterizer (SPEC §3). Two views share one
+// A capture: one frame of one scene, recorded by the rasterizer (DESIGN.md §3). Two views share one
 // layout of 15 float32 planes; only the names of the reflectance channels differ (albedo for the
 // camera's G-buffer, flux for the light's RSM).
 #include <array>
@@ -34,7 +34,7 @@ struct ViewImage {
   ViewKind kind = ViewKind::kCamera;
   uint32_t width = 0;
   uint32_t height = 0;
-  // The RSM's BRSM PDF is computed after recording (SPEC §8); until then the capture has none
+  // The RSM's BRSM PDF is computed after recording (DESIGN.md §8); until then the capture has none
   // and the PDF plane is absent from the file (and all zero in memory).
   bool has_pdf = true;
   // Planar, row-major, row 0 = top of the image, texel (x, y) at index y * width + x.

@@ -16,7 +16,7 @@
 namespace vsgl {
 namespace {
 
-// Normals farther than this from unit length on a valid texel are rejected (SPEC §12).
+// Normals farther than this from unit length on a valid texel are rejected (DESIGN.md §12).
 constexpr double kUnitNormalTolerance = 1e-3;
 
 std::string texel_text(std::size_t index, uint32_t width) {
@@ -36,7 +36,7 @@ void check_view_for_writing(const ViewImage& view, ViewKind expected, const std:
   }
   if (expected == ViewKind::kCamera && !view.has_pdf) {
     throw InputError(where + ": cannot write capture: the camera view has no PDF; a capture "
-                             "always carries the camera PDF (SPEC §3)");
+                             "always carries the camera PDF (DESIGN.md §3)");
   }
   const auto names = channel_names(view.kind);
   for (int c = 0; c < stored_channel_count(view.has_pdf); ++c) {

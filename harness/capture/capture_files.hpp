@@ -1,5 +1,5 @@
 #pragma once
-// A capture on disk (SPEC §3, §12): two OpenEXR files and the JSON sidecar, written atomically and
+// A capture on disk (DESIGN.md §3, §12): two OpenEXR files and the JSON sidecar, written atomically and
 // loaded with every value checked.
 #include <filesystem>
 
@@ -12,7 +12,7 @@ namespace vsgl {
 // hashes in the returned metadata.
 CaptureMeta write_capture(const Capture& capture, const std::filesystem::path& dir);
 
-// Loads and validates a capture (SPEC §3, §12): sidecar present and well-formed, both EXR files
+// Loads and validates a capture (DESIGN.md §3, §12): sidecar present and well-formed, both EXR files
 // readable, sizes and channel sets as the sidecar says, every value finite, valid flags 0/1,
 // unit normals on valid texels, PDF non-negative and not all zero, hashes equal to the sidecar's.
 // Throws InputError naming the file and the problem.

@@ -1,5 +1,5 @@
 #pragma once
-// The capture sidecar (capture.json, SPEC §3): the metadata and what it says about each view
+// The capture sidecar (capture.json, DESIGN.md §3): the metadata and what it says about each view
 // file, written as JSON and read back with every field checked.
 #include <array>
 #include <cstdint>

@@ -1,5 +1,5 @@
 #pragma once
-// Reading and writing planar float images as OpenEXR files (SPEC §3 "Storage"), through the
+// Reading and writing planar float images as OpenEXR files (DESIGN.md §3 "Storage"), through the
 // Debian OpenEXR library. Scanline images, ZIP compression (lossless: a round trip is bit-exact).
 // Kept apart from capture.cpp so tests can write deliberately malformed files.
 #include <cstdint>

@@ -15,7 +15,7 @@ struct ViewMatrices {
 ViewMatrices camera_matrices(const CameraDesc& camera, float aspect);
 // The RSM is square with a field of view of twice the cone half angle: the cone is inscribed.
 ViewMatrices light_matrices(const SpotLightDesc& light);
-// Area of one RSM texel on the light's image plane at unit distance (SPEC §3: dOmega_j = area * cos^3).
+// Area of one RSM texel on the light's image plane at unit distance (DESIGN.md §3: dOmega_j = area * cos^3).
 float rsm_texel_area(const SpotLightDesc& light, uint32_t rsm_size);
 
 }  // namespace vsgl

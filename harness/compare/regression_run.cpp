@@ -49,7 +49,7 @@ std::string text_or(const json& obj, const std::string& key, const std::string& 
   return it != obj.end() && it->is_string() ? it->get<std::string>() : fallback;
 }
 
-// The statistics block of a table JSON (SPEC §9): samples, median, quartiles, paper value.
+// The statistics block of a table JSON (DESIGN.md §9): samples, median, quartiles, paper value.
 RunSeries stats_series(const Reader& r, const json& stats, const std::string& pointer) {
   RunSeries s;
   const json& samples = r.member(stats, pointer, "samples_ms");

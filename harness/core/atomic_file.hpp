@@ -1,6 +1,6 @@
 #pragma once
 // Crash-safe file replacement: a reader sees either the old file or the new one, never a
-// half-written one (SPEC §12). The bytes go to a temporary file in the target's directory,
+// half-written one (DESIGN.md §12). The bytes go to a temporary file in the target's directory,
 // are flushed to disk, and the temporary is renamed over the target.
 #include <filesystem>
 #include <span>

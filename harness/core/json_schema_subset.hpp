@@ -14,7 +14,7 @@ namespace vsgl {
 // Every violation as "JSON-pointer: problem"; empty when `doc` conforms.
 std::vector<std::string> validate_against_schema(const nlohmann::json& doc, const nlohmann::json& schema);
 
-// Throws std::invalid_argument naming the first non-finite number's JSON pointer (SPEC §12: no
+// Throws std::invalid_argument naming the first non-finite number's JSON pointer (DESIGN.md §12: no
 // NaN ever written). nlohmann::json would silently write NaN and infinities as null.
 void require_finite_numbers(const nlohmann::ordered_json& doc);
 

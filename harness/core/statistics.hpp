@@ -1,9 +1,9 @@
 #pragma once
-// Summary statistics of timing samples (SPEC §9): median (the headline), min, max, quartiles,
+// Summary statistics of timing samples (DESIGN.md §9): median (the headline), min, max, quartiles,
 // mean and sample standard deviation. Quartiles use linear interpolation between order
 // statistics, Hyndman & Fan type 7 (R's default, NumPy's "linear"): with the n samples sorted
 // as x[0] <= ... <= x[n-1], Q(p) = x[j] + (h - j) (x[j+1] - x[j]) where h = (n - 1) p, j = floor(h).
-// A statistic that cannot be computed is an error, never a NaN in a table (SPEC §12).
+// A statistic that cannot be computed is an error, never a NaN in a table (DESIGN.md §12).
 #include <cstddef>
 #include <span>
 #include <vector>
@@ -38,7 +38,7 @@ double relative_iqr(const SampleStats& stats);
 // Element-wise sum of equally long sample series (e.g. camera view + light view per repetition).
 // Throws std::invalid_argument when the lengths differ.
 std::vector<double> add_samples(std::span<const double> a, std::span<const double> b);
-// Element-wise difference a[i] - b[i] of paired series (the same round of two cases, SPEC §9).
+// Element-wise difference a[i] - b[i] of paired series (the same round of two cases, DESIGN.md §9).
 // Throws std::invalid_argument when the lengths differ.
 std::vector<double> subtract_samples(std::span<const double> a, std::span<const double> b);
 

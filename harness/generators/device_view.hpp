@@ -1,7 +1,7 @@
 #pragma once
 // One view of a capture uploaded for the generators: a device-local buffer of 4 layers of
 // W*H vec4 texels — (P, valid), (N, pdf), (diffuse, roughness), (specular, 0) — plus what the
-// host needs to size and check the passes. Uploads happen before any timing (SPEC §9).
+// host needs to size and check the passes. Uploads happen before any timing (DESIGN.md §9).
 #include <glm/glm.hpp>
 #include <string>
 

@@ -19,16 +19,16 @@ struct DeviceView;
 // What a generator needs besides the view; each generator reads the fields that concern it.
 struct GeneratorConfig {
   uint32_t vsgl_count = 0;            // N (camera view 2048, light view 1024 in the paper)
-  float K = 1.0f;                     // FIS kernel-size parameter (SPEC §6.1)
-  uint32_t bisection_iterations = 12; // fis_modified's level search (SPEC §6.1)
-  uint32_t kmeans_iterations = 4;     // Lloyd iterations before the final assignment (SPEC §6.2)
-  uint32_t offset_bits = 0;           // Fibonacci lattice offset (SPEC §5)
-  PyramidPath pyramid = PyramidPath::kTexture;  // FIS pyramid: sampled images or storage buffer (SPEC §6.1a)
+  float K = 1.0f;                     // FIS kernel-size parameter (DESIGN.md §6.1)
+  uint32_t bisection_iterations = 12; // fis_modified's level search (DESIGN.md §6.1)
+  uint32_t kmeans_iterations = 4;     // Lloyd iterations before the final assignment (DESIGN.md §6.2)
+  uint32_t offset_bits = 0;           // Fibonacci lattice offset (DESIGN.md §5)
+  PyramidPath pyramid = PyramidPath::kTexture;  // FIS pyramid: sampled images or storage buffer (DESIGN.md §6.1a)
   std::optional<MipStrategy> mipmapping;        // FIS texture path; unset = the device kind's default
 };
 
-// FIS generators filter a mip pyramid at a level per kernel (SPEC §6.1), so their VSGLs have
-// kernel footprints; k-means generators cluster texels (SPEC §6.2).
+// FIS generators filter a mip pyramid at a level per kernel (DESIGN.md §6.1), so their VSGLs have
+// kernel footprints; k-means generators cluster texels (DESIGN.md §6.2).
 enum class GeneratorFamily { kFis, kKmeans };
 
 using GeneratorFactory = std::unique_ptr<VsglGenerator> (*)(Device& device, const DeviceView& view,
@@ -46,7 +46,7 @@ struct GeneratorDescriptor {
   // #include is added by count_generator_lines(). Shared infrastructure counts for no generator.
   SourceSet sources;
   // The sources the generator is built from under a given config (FIS: its pyramid path and
-  // mipmapping strategy, SPEC §6.1a); null: always `sources`. `sources` is the default config's.
+  // mipmapping strategy, DESIGN.md §6.1a); null: always `sources`. `sources` is the default config's.
   SourceSet (*sources_for)(const GeneratorConfig& config) = nullptr;
 };
 

@@ -1,5 +1,5 @@
 #pragma once
-// The parameters of the FIS generators (SPEC §6.1), shared by the GPU generator and the CPU
+// The parameters of the FIS generators (DESIGN.md §6.1), shared by the GPU generator and the CPU
 // reference.
 #include <cstdint>
 #include <optional>
@@ -14,8 +14,8 @@ inline const char* fis_variant_name(FisVariant variant) {
   return variant == FisVariant::kTok15 ? "fis_tok15" : "fis_modified";
 }
 
-// Where the FIS pyramid lives (SPEC §6.1a): sampled images with hardware trilinear filtering
-// (the paper's GPU path, the default for timing) or the storage buffer of SPEC §4 with software
+// Where the FIS pyramid lives (DESIGN.md §6.1a): sampled images with hardware trilinear filtering
+// (the paper's GPU path, the default for timing) or the storage buffer of DESIGN.md §4 with software
 // filtering (bit-exact with the CPU reference).
 enum class PyramidPath { kTexture, kBuffer };
 // How the texture path builds its mip chain (the buffer path always runs one dispatch per level).
@@ -41,7 +41,7 @@ struct FisParams {
   uint32_t vsgl_count = 0;            // N
   float K = 1.0f;                     // kernel size parameter (the paper's setting is 1)
   uint32_t bisection_iterations = 12;  // modified FIS (Eq. 3)
-  uint32_t offset_bits = 0;           // Fibonacci offset o (SPEC §5), as 32-bit fixed point
+  uint32_t offset_bits = 0;           // Fibonacci offset o (DESIGN.md §5), as 32-bit fixed point
   PyramidPath pyramid = PyramidPath::kTexture;
   std::optional<MipStrategy> mipmapping;  // texture path; unset = the device kind's default
 };

@@ -1,5 +1,5 @@
 #pragma once
-// The virtual square of SPEC §4 and the flat layout of a pyramid over it, shared by the GPU host
+// The virtual square of DESIGN.md §4 and the flat layout of a pyramid over it, shared by the GPU host
 // code (buffer sizes, per-level offsets in push constants) and the CPU reference.
 //
 // An image W x H sits at the origin of an S x S square, S = the next power of two >= max(W, H),

@@ -1,8 +1,8 @@
 #pragma once
 // C++ twins of kernels/include/vsgl_math.glsl and kernels/include/sg_eval.glsl: the maths of a
-// VSGL (SPEC §4, §7, §8) in float32, with the GLSL's formulas, branches and operation order, so
+// VSGL (DESIGN.md §4, §7, §8) in float32, with the GLSL's formulas, branches and operation order, so
 // the CPU reference and the GPU kernels agree to float rounding (tests/test_vsgl_math_gpu.cpp).
-// Formulas and constants: kernels/CONVENTIONS.md (SPEC §4-§8).
+// Formulas and constants: kernels/CONVENTIONS.md (DESIGN.md §4-§8).
 #include <type_traits>
 
 #include <glm/glm.hpp>
@@ -10,7 +10,7 @@
 namespace vsgl {
 
 inline constexpr float kPi = 3.14159265358979f;
-// A_d: mean resultant length of the vMF approximating a clamped cosine (lambda ~= 2.29, SPEC §7).
+// A_d: mean resultant length of the vMF approximating a clamped cosine (lambda ~= 2.29, DESIGN.md §7).
 inline constexpr float kDiffuseMeanLength = 0.575f;
 inline constexpr float kMaxSharpness = 1e4f;
 inline constexpr float kMaxMeanLength = 0.9999f;
@@ -27,7 +27,7 @@ inline constexpr float kMinDistance = 1e-6f;
 float mean_resultant_length(float lambda);
 // Banerjee's inverse of A: lambda = r (3 - r^2) / (1 - r^2), r in [0, 0.9999], lambda in [0, 1e4].
 float banerjee_sharpness(float r);
-// rbar, a texel's emission lobe as a mean direction vector (SPEC §7).
+// rbar, a texel's emission lobe as a mean direction vector (DESIGN.md §7).
 glm::vec3 texel_emission_lobe(glm::vec3 P, glm::vec3 N, glm::vec3 diffuse, glm::vec3 specular, float roughness,
                               glm::vec3 source_pos);
 float luminance(glm::vec3 c);  // Rec. 709
@@ -41,7 +41,7 @@ struct TexelMoments {
 TexelMoments texel_moments(bool valid, glm::vec3 P, glm::vec3 N, glm::vec3 diffuse, glm::vec3 specular,
                            float roughness, float pdf, glm::vec3 source_pos, bool camera_view);
 
-// The GPU's `struct Vsgl` (std430, 64 bytes): the output of every generator (SPEC §7).
+// The GPU's `struct Vsgl` (std430, 64 bytes): the output of every generator (DESIGN.md §7).
 struct VsglRecord {
   glm::vec4 position_variance{0.0f};  // mu.xyz, sigma^2
   glm::vec4 power_sharpness{0.0f};    // Phi.rgb, lambda

@@ -1,7 +1,7 @@
 #pragma once
 // Turning a linear radiance image (harness/quality/shading_pass.hpp) into a picture: exposure, clamp to
 // [0, 1], the sRGB transfer curve, 8 bits per channel, PNG. Deterministic: the same radiance and
-// exposure give the same bytes. PNG coding is Debian's stb (libstb), written atomically (SPEC §10).
+// exposure give the same bytes. PNG coding is Debian's stb (libstb), written atomically (DESIGN.md §10).
 #include <cstdint>
 #include <filesystem>
 #include <span>

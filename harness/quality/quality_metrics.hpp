@@ -25,7 +25,7 @@ ValueSummary summarize_values(std::vector<double> values);
 
 // ---- Fig. 1: kernel footprints ---------------------------------------------------------------
 // Kernel i's footprint is the square of side 2^l_i texels centred at x_i * S in the virtual
-// square (SPEC §4); it covers texel t when t's centre lies in [c - h, c + h)^2, h = 2^l_i / 2
+// square (DESIGN.md §4); it covers texel t when t's centre lies in [c - h, c + h)^2, h = 2^l_i / 2
 // (half-open, so a level-0 footprint covers exactly one texel centre: the one nearest x_i).
 struct KernelCoverage {
   double gap = 0;      // PDF-weighted fraction of the in-bounds texels covered by no footprint
@@ -53,7 +53,7 @@ std::vector<double> eq3_footprint_counts(const std::vector<VsglRecord>& kernels,
 
 // One footprint model's coverage, PDF-weighted over the texels with q > 0 (all over sum q):
 //   gap = sum q max(1 - n, 0), surplus = sum q max(n - 1, 0),
-//   count_error = sum q |n - 1| = gap + surplus (SPEC §11a's count-weighted coverage error),
+//   count_error = sum q |n - 1| = gap + surplus (DESIGN.md §11a's count-weighted coverage error),
 //   mean_count = sum q n. For the box footprint n is an integer, so its gap is the share with n = 0.
 struct CoverageCounts {
   double gap = 0, surplus = 0, count_error = 0, mean_count = 0;
@@ -72,7 +72,7 @@ struct FootprintCoverage {
 };
 FootprintCoverage footprint_coverage(const std::vector<VsglRecord>& kernels, const MipPyramid& pdf_pyramid, float K);
 
-// ---- the lattice's own floor (SPEC §11a) ----------------------------------------------------
+// ---- the lattice's own floor (DESIGN.md §11a) ----------------------------------------------------
 // The view with its PDF replaced by 1 on every texel the coverage weighs (valid and q > 0) and 0
 // elsewhere: the same generator and N on it show the Fibonacci lattice's own irregularity and the
 // support's shape, which no kernel-size choice can remove. A view whose PDF is already 0/1 on
@@ -85,7 +85,7 @@ struct CoverageExcess {
 };
 CoverageExcess coverage_excess(const FootprintCoverage& generator, const FootprintCoverage& floor);
 
-// ---- how high-frequency a PDF is (SPEC §11a) ------------------------------------------------
+// ---- how high-frequency a PDF is (DESIGN.md §11a) ------------------------------------------------
 // The Haar wavelet spectrum of the PDF over the virtual square, on the mip levels FIS filters:
 // with p = q / q_bar_L (mean 1 over the square) and p_bar_l its level-l box mean, the detail
 // energy of level l is E_l = (1/M) sum_t (p_bar_l(t) - p_bar_{l+1}(t))^2 over level-0 texels t.
@@ -103,7 +103,7 @@ struct PdfFrequency {
 PdfFrequency pdf_frequency(const MipPyramid& pdf_pyramid);
 
 // ---- Fig. 5: too-bright VSGLs, and power ----------------------------------------------------
-// Scalar power of a VSGL: Phi.r + Phi.g + Phi.b (the light view's moment weight w, SPEC §4).
+// Scalar power of a VSGL: Phi.r + Phi.g + Phi.b (the light view's moment weight w, DESIGN.md §4).
 float scalar_power(const VsglRecord& v);
 struct PowerMetrics {
   double total_vsgl_power = 0;  // sum_i Phi_i
@@ -159,7 +159,7 @@ class FlickerAccumulator {
 };
 
 // Van der Corput offsets for frame f (bit-reversed f as 32-bit fixed point): 0 for frame 0, then
-// well spread in [0, 1), so F frames cover the lattice's offsets evenly (SPEC §5).
+// well spread in [0, 1), so F frames cover the lattice's offsets evenly (DESIGN.md §5).
 uint32_t frame_offset_bits(uint32_t frame);
 
 }  // namespace vsgl

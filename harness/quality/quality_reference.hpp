@@ -1,6 +1,6 @@
 #pragma once
 // The reference of the quality metrics (issue 8, item 6): every lit RSM texel its own VSGL
-// (kernel level 0, a VPL), shaded by the same pass as the generators' VSGLs (SPEC §8 (a)).
+// (kernel level 0, a VPL), shaded by the same pass as the generators' VSGLs (DESIGN.md §8 (a)).
 //
 // Reduced size: instead of recording a second, smaller capture (whose G-buffer pixels would not be
 // the generators' pixels), the reference takes every `stride`-th RSM texel in x and y of the
@@ -29,14 +29,14 @@ enum class VplExtent {
   kPoint,
   // sigma^2 = A / 12, A the world-space area the (subsampled) texel stands for: its solid angle
   // seen from the light, dOmega = texel area on the unit image plane * stride^2 * cos^3(theta) (as
-  // the recorder computes flux, SPEC §3), times d^2 / max(cos of the surface to the light, 0.1).
-  // A / 12 is the per-axis variance of a uniform square of area A (SPEC §7: r^2 = 2 sigma^2), so
+  // the recorder computes flux, DESIGN.md §3), times d^2 / max(cos of the surface to the light, 0.1).
+  // A / 12 is the per-axis variance of a uniform square of area A (DESIGN.md §7: r^2 = 2 sigma^2), so
   // each VPL is the level-0 VSGL of its own footprint and the 1/d^2 singularity is bounded.
   kTexelFootprint,
 };
 
 // One VPL per RSM texel (x, y) with x % stride == 0, y % stride == 0, valid and with positive
-// flux: vsgl_from_moments() of the texel's own moments (SPEC §7), position = the texel's,
+// flux: vsgl_from_moments() of the texel's own moments (DESIGN.md §7), position = the texel's,
 // power = its flux * stride^2, sigma^2 per `extent`, level 0, centre = the texel centre.
 // Throws InputError for stride 0, a camera view, or no lit texel.
 std::vector<VsglRecord> reference_vpls(const ViewImage& rsm, const SpotLightDesc& light, uint32_t stride,

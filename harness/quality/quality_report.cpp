@@ -30,7 +30,7 @@ json claim(const std::string& text, const std::string& source, const std::string
               {"fis_tok15", tok15}, {"fis_modified", modified}, {"verdict", verdict}};
 }
 
-// Fig. 1's verdict (SPEC §11a): judged on each generator's excess of the count-weighted coverage
+// Fig. 1's verdict (DESIGN.md §11a): judged on each generator's excess of the count-weighted coverage
 // error over its lattice floor, with the footprint Eq. 3 controls (the trilinear weights of the
 // lookup p_bar(x_i, l_i) at the kernel's level: the weights its flux and PDF are fetched with, so
 // n(t) is how often texel t's flux is counted). It holds when Tok15's excess exceeds modified's by
@@ -49,7 +49,7 @@ json excess_claim(const std::string& text, const std::string& view, const json& 
                               : d < -kExcessMargin ? "does not hold"
                                                    : "no clear difference (within " + num(kExcessMargin) + ")";
   return json{{"claim", text},
-              {"source", "paper_tables.json claims[3]; SPEC §11a"},
+              {"source", "paper_tables.json claims[3]; DESIGN.md §11a"},
               {"measure", view + ": excess of the count-weighted coverage error sum q|n-1|/sum q over the lattice "
                                  "floor, Eq. 3 (trilinear) footprint"},
               {"fis_tok15", t},

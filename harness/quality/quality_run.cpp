@@ -92,7 +92,7 @@ json counts_json(const CoverageCounts& c) {
 }
 
 // A generator's coverage on the view, its lattice floor (the same generator on the view's uniform
-// copy) and the excess of the one over the other (SPEC §11a).
+// copy) and the excess of the one over the other (DESIGN.md §11a).
 json coverage_json(const FootprintCoverage& f, const FootprintCoverage& floor) {
   const KernelCoverage& c = f.coverage;
   const CoverageExcess e = coverage_excess(f, floor);
@@ -224,7 +224,7 @@ QualityResult run_quality(Device& device, const Capture& capture, const std::fil
 
   const DeviceView camera = upload_view(device, capture, ViewKind::kCamera);
   const DeviceView light = upload_view(device, capture, ViewKind::kLight);
-  // The lattice floor's input: the same views with the PDF 1 on the texels it weighs (SPEC §11a).
+  // The lattice floor's input: the same views with the PDF 1 on the texels it weighs (DESIGN.md §11a).
   const Capture floor_capture{capture.meta, uniform_pdf_view(capture.gbuffer), uniform_pdf_view(capture.rsm)};
   const DeviceView floor_camera = upload_view(device, floor_capture, ViewKind::kCamera);
   const DeviceView floor_light = upload_view(device, floor_capture, ViewKind::kLight);

@@ -2,7 +2,7 @@
 // `vsgl-bench quality` (issue 8): the paper's quality claims measured on one capture.
 //   1. kernel coverage of the FIS generators (Fig. 1): gap, overlap, kernel PDF mass vs K/N;
 //   2. too-bright VSGLs (Fig. 5): max and 99th percentile of Phi_i / mean;  3. power: sum Phi / flux;
-//   4. flicker: F frames of the static capture where only the lattice offset o changes (SPEC §5),
+//   4. flicker: F frames of the static capture where only the lattice offset o changes (DESIGN.md §5),
 //      and optionally a recorded animated sequence;
 //   5. the K sweep (Fig. 6): flicker and reference error of both FIS generators for each K;
 //   6. error against a VPL reference (harness/quality/quality_reference.hpp).
@@ -35,7 +35,7 @@ struct QualityConfig {
   float K = 1.0f;
   uint32_t bisection_iterations = 12;
   uint32_t kmeans_iterations = 4;
-  PyramidPath pyramid = PyramidPath::kTexture;  // FIS pyramid path (SPEC §6.1a)
+  PyramidPath pyramid = PyramidPath::kTexture;  // FIS pyramid path (DESIGN.md §6.1a)
   std::optional<MipStrategy> mipmapping;        // FIS texture path; unset = the device kind's default
   uint32_t frames = 32;               // static flicker frames (offsets), and at most this many sequence frames
   uint32_t error_stride = 4;          // G-buffer stride of the reference comparison (1920x1088 -> 480x272)

@@ -1,5 +1,5 @@
 #pragma once
-// The shading pass (SPEC §8 (a)): the camera view lit by a set of VSGLs, without visibility, as a
+// The shading pass (DESIGN.md §8 (a)): the camera view lit by a set of VSGLs, without visibility, as a
 // linear radiance image, so a user can look at what a generator produces (the 2016 paper's Fig. 5).
 // Indirect light only: the spot light's direct contribution and every occlusion are left out.
 //

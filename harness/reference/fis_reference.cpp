@@ -15,7 +15,7 @@ namespace {
 
 // Largest float below 1: where a rescaled u is clamped so that u < 1 keeps holding.
 constexpr float kOneMinusUlp = 0x1.fffffep-1f;
-// The Fibonacci lattice's golden-ratio step, 2^32 / phi rounded (SPEC §5).
+// The Fibonacci lattice's golden-ratio step, 2^32 / phi rounded (DESIGN.md §5).
 constexpr uint32_t kGoldenStep = 2654435769u;
 
 float pdf_weight(const MipPyramid& q, uint32_t level, int32_t x, int32_t y) { return q.at(level, x, y).w; }
@@ -106,7 +106,7 @@ glm::vec2 fibonacci_point(uint32_t i, uint32_t N, uint32_t offset_bits) {
   return {(static_cast<float>(i) + 0.5f) / static_cast<float>(N), static_cast<float>(y_bits >> 8) * 0x1p-24f};
 }
 
-// One binary decision of the hierarchical warp (SPEC §5): the first child with probability
+// One binary decision of the hierarchical warp (DESIGN.md §5): the first child with probability
 // first / (first + second); u is rescaled into the chosen part so it can be reused below.
 // `margin` keeps the smallest |u - split| seen (a near tie a GPU's division may decide otherwise).
 bool warp_choose_first(float& u, float first, float second, float& margin) {
@@ -231,7 +231,7 @@ double blit_chain_error_ratio(const MipPyramid& chain, FilterPrecision precision
   return worst;
 }
 
-// ---- level choice and power (SPEC §6.1) ----------------------------------------------------
+// ---- level choice and power (DESIGN.md §6.1) ----------------------------------------------------
 
 
 float tok15_level(float pdf, uint32_t N, float K, const VirtualSquare& square) {

@@ -1,5 +1,5 @@
 #pragma once
-// The CPU reference of the FIS generators `fis_tok15` and `fis_modified` (SPEC §4-§7): the moment
+// The CPU reference of the FIS generators `fis_tok15` and `fis_modified` (DESIGN.md §4-§7): the moment
 // layers ("additional"), their mip pyramids ("mipmapping"), the stratified hierarchical sampler
 // and the level choice and power of each variant ("filtered_sampling").
 //
@@ -20,7 +20,7 @@
 
 namespace vsgl {
 
-// A mip pyramid of one vec4 layer over the virtual square (SPEC §4), in the GPU's flat layout.
+// A mip pyramid of one vec4 layer over the virtual square (DESIGN.md §4), in the GPU's flat layout.
 struct MipPyramid {
   VirtualSquare square;
   std::vector<glm::vec4> texels;  // square.total_texels() entries, level after level, row-major
@@ -38,12 +38,12 @@ struct MipPyramid {
   glm::vec4 top() const { return texels.back(); }
 };
 
-// The "additional" pass on the CPU: layers M0, M1, M2 of every texel of a view (SPEC §4), each
+// The "additional" pass on the CPU: layers M0, M1, M2 of every texel of a view (DESIGN.md §4), each
 // W * H vec4s, through texel_moments(). source_pos: the spot light (RSM) or the camera (G-buffer).
 // Throws InputError when the view's planes do not hold W * H texels.
 std::array<std::vector<glm::vec4>, 3> reference_moments(const ViewImage& view, glm::vec3 source_pos);
 
-// Kernel centre u_i of the Fibonacci lattice (SPEC §5):
+// Kernel centre u_i of the Fibonacci lattice (DESIGN.md §5):
 //   u.x = (i + 0.5) / N,  u.y = ((i * 2654435769 + offset_bits) mod 2^32 >> 8) * 2^-24.
 glm::vec2 fibonacci_point(uint32_t i, uint32_t N, uint32_t offset_bits);
 
@@ -61,12 +61,12 @@ struct SamplePoint {
 // Throws InputError for N = 0 and for a PDF that is zero (or not finite) over the whole square.
 std::vector<SamplePoint> reference_samples(const MipPyramid& pdf_pyramid, uint32_t N, uint32_t offset_bits);
 
-// Fractional-level lookup (SPEC §4): bilinear within a level (taps outside the extent read zero),
+// Fractional-level lookup (DESIGN.md §4): bilinear within a level (taps outside the extent read zero),
 // linear between floor(l) and min(floor(l) + 1, L). l is clamped to [0, L].
 glm::vec4 bilinear(const MipPyramid& layer, glm::vec2 x, uint32_t level);
 glm::vec4 fetch(const MipPyramid& layer, glm::vec2 x, float level);
 
-// How finely a device's sampler resolves a trilinear lookup (SPEC §6.1a): each bilinear weight
+// How finely a device's sampler resolves a trilinear lookup (DESIGN.md §6.1a): each bilinear weight
 // is a multiple of 2^-sub_texel_bits, the level fraction a multiple of 2^-mipmap_bits
 // (VkPhysicalDeviceLimits::subTexelPrecisionBits / mipmapPrecisionBits; 0: exact).
 struct FilterPrecision {
@@ -79,7 +79,7 @@ struct FilterPrecision {
 // max(e0, e1) + delta_m (|B1 - B0| + e0 + e1), plus float rounding (2^-20 of the magnitude).
 glm::vec4 fetch_error_bound(const MipPyramid& layer, glm::vec2 x, float level, FilterPrecision precision);
 
-// A mip chain built by a linear 2:1 blit (SPEC §6.1a) against the mean of its own children, level
+// A mip chain built by a linear 2:1 blit (DESIGN.md §6.1a) against the mean of its own children, level
 // by level: the blit's sample lands between the four children only to `precision` (each weight
 // 1/2 off by < 2^-sub_texel_bits), so each texel may differ from the mean by delta (Dx + Dy) +
 // delta^2 Dxy of its children plus float rounding (2^-20 of their magnitude). Returns the worst
@@ -96,7 +96,7 @@ float modified_level(const MipPyramid& pdf_pyramid, glm::vec2 x, uint32_t N, flo
 // Largest |l - l_exact| the bisection leaves: L / 2^(iterations + 1).
 float bisection_tolerance(uint32_t levels, uint32_t iterations);
 
-// What distinguishes the two generators (SPEC §6.1: "about ten lines"): the level and the density
+// What distinguishes the two generators (DESIGN.md §6.1: "about ten lines"): the level and the density
 // that divides the power.
 struct FisKernel {
   float level = 0.0f;

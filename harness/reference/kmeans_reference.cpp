@@ -1,4 +1,4 @@
-// CPU reference of the k-means generators (SPEC §6.2); the float expressions that must match the
+// CPU reference of the k-means generators (DESIGN.md §6.2); the float expressions that must match the
 // GPU bit for bit follow the kernels' operation order (kernels/kmeans_*.comp).
 #include "harness/reference/kmeans_reference.hpp"
 
@@ -43,7 +43,7 @@ std::vector<glm::vec4> kmeans_features(const ViewImage& view, glm::vec3 source_p
     for (uint32_t x = 0; x < view.width; ++x) {
       const std::size_t t = std::size_t{y} * view.width + x;
       const TexelView tv = texel_at(view, t, source_pos);
-      // Valid flag 0, or no power and no PDF weight: in no cluster (SPEC §6.2).
+      // Valid flag 0, or no power and no PDF weight: in no cluster (DESIGN.md §6.2).
       const bool member = tv.valid && !(tv.moments.m0.w == 0.0f && tv.moments.m2.w == 0.0f);
       const glm::vec3 f = space == KmeansSpace::k3d
                               ? glm::vec3(view.planes[kPX][t], view.planes[kPY][t], view.planes[kPZ][t])

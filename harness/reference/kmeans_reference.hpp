@@ -1,7 +1,7 @@
 #pragma once
-// The CPU reference of the k-means generators `kmeans_2d` and `kmeans_3d` (SPEC §6.2): features,
+// The CPU reference of the k-means generators `kmeans_2d` and `kmeans_3d` (DESIGN.md §6.2): features,
 // seeds, Lloyd iterations with brute-force assignment, the stable sort by cluster, and the
-// per-cluster sums and VSGLs (SPEC §7).
+// per-cluster sums and VSGLs (DESIGN.md §7).
 //
 // Exactness: the seeds come from reference_samples() (bit-exact with the GPU on lavapipe), the
 // squared distance and the centre update use the GPU kernels' float operation order (the update
@@ -30,7 +30,7 @@ struct KmeansParams {
   uint32_t vsgl_count = 0;     // N (clusters)
   uint32_t iterations = 4;     // Lloyd iterations before the final assignment
   bool segmented_sum = false;  // false: the paper's sequential per-cluster sum
-  uint32_t offset_bits = 0;    // Fibonacci lattice offset of the seeds (SPEC §5)
+  uint32_t offset_bits = 0;    // Fibonacci lattice offset of the seeds (DESIGN.md §5)
   // GPU only: a one-cell grid, i.e. the assignment by brute force over all centres (same result;
   // it exists to measure what the grid saves).
   bool brute_force_grid = false;
@@ -44,7 +44,7 @@ inline constexpr uint32_t kKmeansChunk = 256;
 // (valid flag 0, or w = 0 and q = 0). 2D: (x + 0.5, y + 0.5, 0); 3D: the world position.
 std::vector<glm::vec4> kmeans_features(const ViewImage& view, glm::vec3 source_pos, KmeansSpace space);
 
-// The N seeds: the kernel centres of SPEC §5 on the view's PDF (the q of texel_moments()):
+// The N seeds: the kernel centres of DESIGN.md §5 on the view's PDF (the q of texel_moments()):
 // 2D: x_i * S (pixels); 3D: the world position of the chosen texel.
 std::vector<glm::vec4> kmeans_seeds(const ViewImage& view, glm::vec3 source_pos, KmeansSpace space, uint32_t N,
                                     uint32_t offset_bits);

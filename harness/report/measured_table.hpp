@@ -62,7 +62,7 @@ double median_view(const MeasuredTable& t, const std::string& g, const std::stri
 const std::vector<double>& case_samples(const MeasuredTable& t, const std::string& g, const std::string& view,
                                         const std::string& phase);
 
-// The paper's overhead, per round (SPEC §9): fis_modified − fis_tok15 of the same round (the
+// The paper's overhead, per round (DESIGN.md §9): fis_modified − fis_tok15 of the same round (the
 // pairing guarantee of timing_runner.hpp), in ms, as a Hodges-Lehmann estimate with its 95 %
 // interval. `view` empty: the generator totals (both views of the round); else that view's
 // `phase` ("total" or a phase name).

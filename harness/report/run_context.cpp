@@ -52,7 +52,7 @@ RunContext make_run_context(const DeviceInfo& device, const TablesOptions& o) {
 
 namespace {
 
-// SPEC §6.1a: the FIS pyramid as this run builds it, and why its mip strategy is the one used.
+// DESIGN.md §6.1a: the FIS pyramid as this run builds it, and why its mip strategy is the one used.
 ojson pyramid_json(const TablesOptions& o, const DeviceInfo& device) {
   std::string fallback;
   const PyramidPath path = effective_pyramid_path(device, o.generator.pyramid, &fallback);
@@ -98,7 +98,7 @@ nlohmann::ordered_json config_json(const TablesOptions& o, const Capture& captur
       {"kmeans_sum", "kmeans_2d/kmeans_3d: one thread per cluster sums sequentially (the paper's); *_segsum: "
                      "parallel segmented reduction (extra, not in the paper)"},
       {"offset_bits", o.generator.offset_bits},
-      {"sampler", "Fibonacci lattice + hierarchical sample warping (SPEC §5)"},
+      {"sampler", "Fibonacci lattice + hierarchical sample warping (DESIGN.md §5)"},
       {"pyramid", pyramid_json(o, device)},
       {"generators", o.generators},
       {"timing", ojson{{"warmup", tm.warmup},

@@ -56,7 +56,7 @@ nlohmann::ordered_json claims_json(const MeasuredTable& t, const MeasuredTable* 
   ojson out = ojson::array();
 
   {  // 1: the modified kernel costs only microseconds more. Judged on the 95 % interval of the
-     // per-round differences of the generator totals (SPEC §9), never on one noisy number: holds
+     // per-round differences of the generator totals (DESIGN.md §9), never on one noisy number: holds
      // when the whole interval lies within the bound, fails when it lies wholly outside.
     const std::string crit = "95% interval of the per-round difference total(fis_modified) - total(fis_tok15) "
                              "(Hodges-Lehmann, Wilcoxon signed-rank) within +-max(" + number(kOverheadFloorUs) +

@@ -64,7 +64,7 @@ std::optional<double> paper_difference(std::optional<double> modified, std::opti
   return modified && tok15 ? std::optional<double>(*modified - *tok15) : std::nullopt;
 }
 
-// SPEC §9: the overhead from per-round differences, so that drift and the noise of the shared
+// DESIGN.md §9: the overhead from per-round differences, so that drift and the noise of the shared
 // passes cancel. Views: the total and the one pass the two generators do not share.
 ojson paired_block(const MeasuredTable& t, const ReportContext& ctx) {
   const std::string table = std::to_string(t.number);
@@ -131,7 +131,7 @@ ojson ratios_json(const MeasuredTable& t, const MeasuredTable* other, const Repo
   return r;
 }
 
-// SPEC §9, the physical limit: the device's copy bandwidth, and for the passes of each FIS
+// DESIGN.md §9, the physical limit: the device's copy bandwidth, and for the passes of each FIS
 // generator that only stream data the least bytes they must move (generators/fis/fis_traffic.hpp)
 // over their median time, as a fraction of it.
 ojson bandwidth_json(const MeasuredTable& t) {

@@ -1,6 +1,6 @@
 #pragma once
-// The table JSON of SPEC §10 (results/schema/table.schema.json): one file per paper table, with
-// per generator, view and phase the statistics of SPEC §9 and the paper's value beside each, the
+// The table JSON of DESIGN.md §10 (results/schema/table.schema.json): one file per paper table, with
+// per generator, view and phase the statistics of DESIGN.md §9 and the paper's value beside each, the
 // ratios the paper argues with, the Table 3 analog, and the paper's claims checked on this run.
 #include <string>
 

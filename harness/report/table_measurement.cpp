@@ -65,7 +65,7 @@ TableMeasurement measure_table(Device& device, const TablesOptions& o, const Tab
   if (!t.copy_bandwidth.reduced_because.empty())
     say("copy bandwidth measured with buffers of " + mib(t.copy_bandwidth.bytes) + ": " + t.copy_bandwidth.reduced_because);
 
-  // Inputs uploaded, generators built and recorded before any timing (SPEC §9).
+  // Inputs uploaded, generators built and recorded before any timing (DESIGN.md §9).
   const DeviceView camera = upload_view(device, capture, ViewKind::kCamera);
   const DeviceView light = upload_view(device, capture, ViewKind::kLight);
   std::vector<std::unique_ptr<VsglGenerator>> generators;

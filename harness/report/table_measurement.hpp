@@ -1,7 +1,7 @@
 #pragma once
 // Step 2 of `tables`, once per table input: provide its capture (record a paper table's when
 // missing; a --capture must exist), upload both
-// views, build and record every generator on each (SPEC §9: inputs uploaded and command buffers
+// views, build and record every generator on each (DESIGN.md §9: inputs uploaded and command buffers
 // recorded before any timing), and time them interleaved with the protocol of timing_runner.hpp.
 #include <functional>
 

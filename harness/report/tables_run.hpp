@@ -33,13 +33,13 @@ struct TablesOptions {
   uint32_t light_vsgls = 1024;   // N on the RSM (the paper's)
   GeneratorConfig generator;     // K, iterations (vsgl_count is set per view)
   TimingOptions timing;
-  CopyBandwidthOptions copy_bandwidth;  // the physical limit beside the passes (SPEC §9), per table
+  CopyBandwidthOptions copy_bandwidth;  // the physical limit beside the passes (DESIGN.md §9), per table
   RecordSizes record_sizes;      // for captures recorded because they were missing
   std::filesystem::path source_dir = VSGL_SOURCE_DIR;  // lines of code, git commit
   std::filesystem::path paper_tables = std::filesystem::path(VSGL_SOURCE_DIR) / "results/paper/paper_tables.json";
   std::filesystem::path schema = std::filesystem::path(VSGL_SOURCE_DIR) / "results/schema/table.schema.json";
   bool json_only = false;       // no markdown file
-  bool quick = false;           // recorded in the JSON: a CI preset, not the SPEC §9 protocol
+  bool quick = false;           // recorded in the JSON: a CI preset, not the DESIGN.md §9 protocol
   bool validation = false;      // recorded in the JSON
   bool clocks_locked = false;   // the user claims locked clocks (recorded, not checked)
   // Applied to every generator once it is built, before it is recorded (empty: none). The TEST-ONLY

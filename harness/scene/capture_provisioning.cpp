@@ -44,7 +44,7 @@ RecordedCapture record_capture(Device& device, const Scene& scene, const RecordS
   out.capture = recorder.record(scene, sizes, frame, frames);
   out.capture.meta.source = source;
   refuse_empty_views(out.capture, scene.name, false);
-  const BrsmBuild brsm = build_brsm_pdf(device, out.capture);  // SPEC §8: once per capture
+  const BrsmBuild brsm = build_brsm_pdf(device, out.capture);  // DESIGN.md §8: once per capture
   refuse_empty_views(out.capture, scene.name, true);
   const auto t1 = std::chrono::steady_clock::now();
   out.capture.meta = write_capture(out.capture, dir);

@@ -1,6 +1,6 @@
 #pragma once
 // Making a capture exist on disk: the one code path of `vsgl-bench record` (rasterize, build the
-// BRSM PDF once per capture (SPEC §8), write atomically), shared by `tables`, which records the
+// BRSM PDF once per capture (DESIGN.md §8), write atomically), shared by `tables`, which records the
 // paper's captures when they are missing and otherwise loads and validates them.
 #include <filesystem>
 #include <optional>

@@ -586,7 +586,7 @@ ViewImage render_view(Device& device, VkRenderPass pass, const RasterState& pipe
 
   ViewImage image;
   image.resize(kind, width, height);
-  image.has_pdf = kind == ViewKind::kCamera;  // the BRSM PDF comes later (SPEC §8)
+  image.has_pdf = kind == ViewKind::kCamera;  // the BRSM PDF comes later (DESIGN.md §8)
   const std::size_t n = image.texels();
   for (uint32_t t = 0; t < kTargets; ++t) {
     const auto* rgba = static_cast<const float*>(readback[t].mapped());

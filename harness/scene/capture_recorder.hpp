@@ -1,5 +1,5 @@
 #pragma once
-// Records a capture (SPEC §3) with a real Vulkan graphics pipeline: scene.vert + capture.frag,
+// Records a capture (DESIGN.md §3) with a real Vulkan graphics pipeline: scene.vert + capture.frag,
 // depth test, five RGBA32F render targets, one pass from the camera (G-buffer) and one from the
 // spot light (RSM). Deterministic: the same scene and sizes give identical bytes on one device.
 #include <cstdint>

@@ -1,5 +1,5 @@
 #pragma once
-// A user's glTF 2.0 file (.gltf with external or embedded buffers, or .glb) as a Scene (SPEC §3),
+// A user's glTF 2.0 file (.gltf with external or embedded buffers, or .glb) as a Scene (DESIGN.md §3),
 // imported with Debian's tinygltf: every triangle mesh of the default scene with its node
 // transforms, metallic-roughness materials with their base-colour, metallic-roughness and
 // normal textures, alpha-mask cut-outs, double-sided materials; the camera and the spot light

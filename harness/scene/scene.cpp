@@ -1,4 +1,4 @@
-// The procedural scenes of SPEC §3. Units: metres; spot intensity in W/sr. The coordinate frame
+// The procedural scenes of DESIGN.md §3. Units: metres; spot intensity in W/sr. The coordinate frame
 // is y-up; rooms are closed boxes whose surfaces face inward, and the camera and the light are
 // inside them. Nothing here is random: the scenes are the same bytes on every run.
 #include "harness/scene/scene.hpp"

@@ -1,6 +1,6 @@
 #pragma once
 // The scene model the recorder rasterizes (triangles, materials, textures, a camera and a spot
-// light), and the procedural, deterministic scenes of SPEC §3 built in it. No downloads, no
+// light), and the procedural, deterministic scenes of DESIGN.md §3 built in it. No downloads, no
 // randomness beyond fixed seeds.
 #include <cstdint>
 #include <string>
@@ -54,7 +54,7 @@ struct TextureImage {
 };
 
 enum class MaterialModel : uint32_t {
-  // SPEC §3 / glTF 2.0: base = factor * texture * vertex colour; diffuse = base * (1 - metallic),
+  // DESIGN.md §3 / glTF 2.0: base = factor * texture * vertex colour; diffuse = base * (1 - metallic),
   // specular F0 = mix(0.04, base, metallic), GGX alpha = (roughness factor * texture G)^2;
   // metallic = factor * texture B.
   kMetallicRoughness = 1,

@@ -1,5 +1,5 @@
 #pragma once
-// Builders for the procedural scenes of SPEC §3 (rectangles, boxes, rooms, open cylinders) and
+// Builders for the procedural scenes of DESIGN.md §3 (rectangles, boxes, rooms, open cylinders) and
 // brute-force queries on a SceneMesh that the tests use (distance to the surface, ray hits).
 // Every builder emits triangles counter-clockwise seen from the side its normals face, so the
 // rasterizer's back-face culling keeps exactly the visible side.

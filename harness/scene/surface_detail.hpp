@@ -1,5 +1,5 @@
 #pragma once
-// Procedural surface detail for the built-in scenes (SPEC §3): tiles and grout, masonry and
+// Procedural surface detail for the built-in scenes (DESIGN.md §3): tiles and grout, masonry and
 // brick, wall panels, carpet, wood grain, smudged gloss. Like a real asset's texture set, each
 // pattern is an albedo map, a roughness map and, where the surface has relief, a normal map,
 // mipmapped by the recorder. Deterministic: integer hashes and polynomial value noise, no random

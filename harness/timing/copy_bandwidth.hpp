@@ -1,5 +1,5 @@
 #pragma once
-// The device's copy bandwidth, measured in the same run as the tables (SPEC §9, "physical
+// The device's copy bandwidth, measured in the same run as the tables (DESIGN.md §9, "physical
 // limit"): vkCmdCopyBuffer between two device-local buffers of `bytes` each (>= 256 MiB by
 // default, larger than any cache), a timestamp (TimestampPool: full barriers around it) between
 // consecutive copies, `warmup` copies discarded, the median of `copies` timed copies. Each copy
@@ -18,7 +18,7 @@ namespace vsgl {
 class Device;
 
 struct CopyBandwidthOptions {
-  uint64_t bytes = 256ull << 20;  // per buffer (SPEC §9: >= 256 MiB); tests use a small one
+  uint64_t bytes = 256ull << 20;  // per buffer (DESIGN.md §9: >= 256 MiB); tests use a small one
   uint32_t warmup = 2;            // discarded (first touch of the pages, cold TLBs)
   uint32_t copies = 7;            // timed; the median is reported
   uint64_t min_bytes = 1ull << 20;  // the smallest size a fallback may use

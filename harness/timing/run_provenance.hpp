@@ -1,5 +1,5 @@
 #pragma once
-// What explains a run's numbers besides the numbers (SPEC §9): the build (git commit, compiler,
+// What explains a run's numbers besides the numbers (DESIGN.md §9): the build (git commit, compiler,
 // vsgl-bench version) and the device (name, driver, API version, timestamp period).
 #include <filesystem>
 #include <string>

@@ -88,7 +88,7 @@ void TimingRunner::add(const TimingCase& c) {
   const std::string label = c.generator + "." + c.view;
   r->pool = std::make_unique<TimestampPool>(device_, static_cast<uint32_t>(r->phases.size() + 1), label + ".timestamps");
   r->cmd = device_.allocate_command_buffer(label + ".timed");
-  // No ONE_TIME_SUBMIT: the same recording is replayed for every sample (SPEC §9).
+  // No ONE_TIME_SUBMIT: the same recording is replayed for every sample (DESIGN.md §9).
   VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   VK_CHECK(vkBeginCommandBuffer(r->cmd, &begin));
   r->pool->reset(r->cmd);  // every replay resets its queries before writing them

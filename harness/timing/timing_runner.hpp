@@ -1,5 +1,5 @@
 #pragma once
-// The timing protocol of SPEC §9. Each (generator, view) case is recorded ONCE into its own
+// The timing protocol of DESIGN.md §9. Each (generator, view) case is recorded ONCE into its own
 // command buffer — query reset, then the generator's phases with a timestamp (full barrier +
 // timestamp + full barrier, TimestampPool::write) at every phase boundary — and replayed.
 // Inputs are uploaded before timing (the caller builds the views and generators first).
@@ -16,7 +16,7 @@
 //     reason is reported. The cap never cuts the minimum: `min_repetitions` rounds always run.
 //  Pairing guarantee: every round appends exactly one sample to every case (a failure ends the
 //  run), so sample i of any two cases — of any phase or total — comes from round i. Paired
-//  statistics (the modified − Tok15 difference per round, SPEC §9) rely on this.
+//  statistics (the modified − Tok15 difference per round, DESIGN.md §9) rely on this.
 // Defaults: warm-up 2, min 10, noise 0.02, cap 60 s on GPUs; 20 s on CPU devices (lavapipe), whose
 // timings inform only correctness, not performance; max 1000 rounds (bounds the raw samples kept).
 // Optional cold mode: before every timed replay a separate submission overwrites a large buffer
@@ -36,12 +36,12 @@ class Device;
 struct DeviceInfo;
 
 // Throws DeviceError when the device cannot be timed (timestampValidBits = 0 or
-// timestampPeriod = 0 on its compute queue, SPEC §9): no numbers at all rather than wrong ones.
+// timestampPeriod = 0 on its compute queue, DESIGN.md §9): no numbers at all rather than wrong ones.
 void require_timestamps(const DeviceInfo& info);
 
 struct TimingOptions {
   uint32_t warmup = 2;            // >= 2
-  uint32_t min_repetitions = 10;  // >= 2 (statistics need two samples; SPEC §9 asks for >= 10)
+  uint32_t min_repetitions = 10;  // >= 2 (statistics need two samples; DESIGN.md §9 asks for >= 10)
   uint32_t max_repetitions = 1000;
   double noise_target = 0.02;     // IQR / median of every case's total
   double time_cap_s = 60.0;       // wall time of the timed rounds

@@ -39,7 +39,7 @@ GpuRun run_on_device(Device& device, const DeviceView& view, FisVariant variant,
   return run;
 }
 
-// max |a - b| / max |b| over one layer's texels and components (SPEC §11's normalized error).
+// max |a - b| / max |b| over one layer's texels and components (DESIGN.md §11's normalized error).
 double normalized_error(const std::vector<glm::vec4>& a, const std::vector<glm::vec4>& b, std::size_t count) {
   double diff = 0, scale = 0;
   for (std::size_t i = 0; i < count; ++i)
@@ -114,7 +114,7 @@ class ViewVerifier {
     check_histogram(out);
   }
 
-  // The texture path's other mipmapping strategies build the same pyramid (SPEC §6.1a: all
+  // The texture path's other mipmapping strategies build the same pyramid (DESIGN.md §6.1a: all
   // verified): each against the CPU chain of its own level 0.
   void check_other_strategies(std::vector<CheckResult>& out) const {
     for (MipStrategy m : {MipStrategy::kSinglePass, MipStrategy::kBlit, MipStrategy::kPerLevel}) {

@@ -1,5 +1,5 @@
 #pragma once
-// The FIS half of `vsgl-bench verify` (SPEC §11): both FIS generators on both views of a capture,
+// The FIS half of `vsgl-bench verify` (DESIGN.md §11): both FIS generators on both views of a capture,
 // each pass checked against the CPU reference computed from the same capture.
 #include <cstdint>
 #include <vector>

@@ -1,5 +1,5 @@
 #pragma once
-// The k-means half of `vsgl-bench verify` (SPEC §11): kmeans_2d and kmeans_3d on both views of a
+// The k-means half of `vsgl-bench verify` (DESIGN.md §11): kmeans_2d and kmeans_3d on both views of a
 // capture, each property checked against the CPU on the device's own intermediate results.
 #include <vector>
 

@@ -14,7 +14,7 @@ struct VerifyConfig {
   float K = 1.0f;
   uint32_t bisection_iterations = 12;
   uint32_t histogram_samples = 65536;  // kernel centres drawn for the histogram check (capped by the view)
-  // FIS pyramid paths checked (SPEC §6.1a), and the texture path's mip strategy for the generator
+  // FIS pyramid paths checked (DESIGN.md §6.1a), and the texture path's mip strategy for the generator
   // checks (unset: the device kind's default); the pyramid check covers every strategy.
   std::vector<PyramidPath> pyramids{PyramidPath::kTexture, PyramidPath::kBuffer};
   std::optional<MipStrategy> mipmapping;

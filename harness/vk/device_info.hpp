@@ -32,7 +32,7 @@ struct DeviceInfo {
   uint32_t max_workgroup_count[3] = {0, 0, 0};
   uint32_t max_workgroup_invocations = 0;
   uint64_t device_local_bytes = 0;
-  // How finely the sampler resolves positions and levels (SPEC §6.1a): bilinear weights are
+  // How finely the sampler resolves positions and levels (DESIGN.md §6.1a): bilinear weights are
   // multiples of 2^-sub_texel_precision_bits, the level fraction of 2^-mipmap_precision_bits.
   uint32_t sub_texel_precision_bits = 0;
   uint32_t mipmap_precision_bits = 0;

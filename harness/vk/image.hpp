@@ -39,7 +39,7 @@ class Image2D {
 
 namespace vsgl {
 
-// A 2D array image with a full mip chain: the sampled-image pyramid of SPEC §6.1a (array layers =
+// A 2D array image with a full mip chain: the sampled-image pyramid of DESIGN.md §6.1a (array layers =
 // moment layers). One view of every level and layer (for sampling) and one per level (for
 // storage writes). Created in VK_IMAGE_LAYOUT_GENERAL with every texel zero. The compute passes
 // and the sampling keep it there (storage images need GENERAL); transfers (the blit chain, the

@@ -1,5 +1,5 @@
 #pragma once
-// GPU timestamps done right (SPEC §9): refuse a queue without valid bits, convert ticks with
+// GPU timestamps done right (DESIGN.md §9): refuse a queue without valid bits, convert ticks with
 // timestampPeriod, subtract under the wrap mask, write after a full barrier so that no earlier
 // work leaks into a phase, reset before every use, read 64-bit with wait, and treat a zero or
 // negative interval as an error rather than a number.

@@ -1,6 +1,6 @@
 #ifndef BRSM_IMPORTANCE_GLSL
 #define BRSM_IMPORTANCE_GLSL
-// The BRSM PDF weight of one RSM texel (SPEC §8): q_j = w_j * sum_c E(c -> j) over the camera
+// The BRSM PDF weight of one RSM texel (DESIGN.md §8): q_j = w_j * sum_c E(c -> j) over the camera
 // VSGLs c, E evaluated through the VPL's own emission lobe, without visibility. A VPL emits into
 // the hemisphere of its normal only, so a camera VSGL behind it contributes nothing: a VPL that no
 // camera cluster sees gets q = 0. C++ twin: brsm_texel_weight() in harness/scene/brsm_pdf.cpp.

@@ -1,7 +1,7 @@
 #ifndef FIS_ADDITIONAL_GLSL
 #define FIS_ADDITIONAL_GLSL
 // FIS phase 1, "additional G-buffer / RSM" (paper Table 1), shared by both pyramid paths: the
-// per-texel moment layers of SPEC §4/§7 for level 0 of the pyramid. One thread per texel. The
+// per-texel moment layers of DESIGN.md §4/§7 for level 0 of the pyramid. One thread per texel. The
 // includer declares `view_texels` and defines store_moments(p, i, m0, m1, m2) (i = p.y W + p.x).
 #include "interface/fis.h"
 #include "vsgl_math.glsl"

@@ -1,8 +1,8 @@
 #ifndef FIS_FILTERED_SAMPLING_GLSL
 #define FIS_FILTERED_SAMPLING_GLSL
 // FIS phase 3, "filtered sampling", shared by both pyramid paths: one thread per VSGL i. Sample the
-// kernel centre x_i (SPEC §5), choose its mip level l_i, fetch the moments at (x_i, l_i) and build
-// the VSGL (SPEC §7). FIS_VARIANT selects [Tok15] (Eq. 1, Eq. 4) or the modified FIS (Eq. 3,
+// kernel centre x_i (DESIGN.md §5), choose its mip level l_i, fetch the moments at (x_i, l_i) and build
+// the VSGL (DESIGN.md §7). FIS_VARIANT selects [Tok15] (Eq. 1, Eq. 4) or the modified FIS (Eq. 3,
 // Eq. 5); the two share everything but choose_level() and estimate_power() below.
 // The includer has chosen the pyramid's accessors (pyramid.glsl or pyramid_texture.glsl) and
 // declared `vsgls`. Every pyramid_trilinear() is one lookup: 8 buffer taps on the buffer path,

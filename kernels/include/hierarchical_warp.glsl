@@ -1,9 +1,9 @@
 #ifndef HIERARCHICAL_WARP_GLSL
 #define HIERARCHICAL_WARP_GLSL
-// Kernel centres (SPEC §5): a Fibonacci lattice warped down the PDF pyramid (layer 2, .w = q).
+// Kernel centres (DESIGN.md §5): a Fibonacci lattice warped down the PDF pyramid (layer 2, .w = q).
 // C++ twin: reference_samples() in harness/reference/fis_reference.cpp, float for float.
 // The includer chooses the pyramid's accessors first: pyramid.glsl (storage buffer) or
-// pyramid_texture.glsl (sampled image, SPEC §6.1a).
+// pyramid_texture.glsl (sampled image, DESIGN.md §6.1a).
 #ifndef PYRAMID_ACCESSORS
 #error "include pyramid.glsl or pyramid_texture.glsl before hierarchical_warp.glsl"
 #endif

@@ -1,6 +1,6 @@
 #ifndef KMEANS_CLUSTER_GLSL
 #define KMEANS_CLUSTER_GLSL
-// k-means `sum` (SPEC §6.2, §7): the moments of a cluster's texels and the VSGL built from them.
+// k-means `sum` (DESIGN.md §6.2, §7): the moments of a cluster's texels and the VSGL built from them.
 // The includer includes vsgl_math.glsl and, to read texels, defines KMEANS_READS_VIEW and declares
 // `view_texels` (the uploaded view: 4 layers of W*H vec4). Shared by the sequential sum (kmeans_sum.comp) and the segmented one.
 #include "kmeans_common.glsl"
@@ -42,7 +42,7 @@ ClusterMoments cluster_moments_add(ClusterMoments a, ClusterMoments b) {
   return s;
 }
 
-// The cluster's VSGL (SPEC §7): power = the exact sum of its flux (M0.rgb), level -1, texel count
+// The cluster's VSGL (DESIGN.md §7): power = the exact sum of its flux (M0.rgb), level -1, texel count
 // in .w of center_pdf, density 0. Kernel centre: kmeans_2d, the cluster centre / S (in [0,1]^2
 // of the virtual square, like FIS); kmeans_3d, the mean texel centre of the cluster in the image
 // / S (its world-space centre is mu).

@@ -1,6 +1,6 @@
 #ifndef KMEANS_COMMON_GLSL
 #define KMEANS_COMMON_GLSL
-// Shared pieces of the k-means kernels (SPEC §6.2; host: harness/generators/kmeans/kmeans_generator.cpp, CPU twin:
+// Shared pieces of the k-means kernels (DESIGN.md §6.2; host: harness/generators/kmeans/kmeans_generator.cpp, CPU twin:
 // harness/reference/kmeans_reference.cpp): the "no cluster" id, the sort key, the feature distance, and the
 // flat invocation index of a 1D workload spread over a 2D grid of groups (so that no dispatch
 // exceeds maxComputeWorkGroupCount[0]).

@@ -1,6 +1,6 @@
 #ifndef KMEANS_GRID_GLSL
 #define KMEANS_GRID_GLSL
-// The uniform grid that accelerates the exact nearest-centre search of k-means (SPEC §6.2).
+// The uniform grid that accelerates the exact nearest-centre search of k-means (DESIGN.md §6.2).
 // The includer declares `grid_words` (uint[]), laid out as
 //   [0..2] ~order(min feature), [3..5] order(max feature)   (atomicMax-reduced in kmeans_prepare)
 //   [8 .. 8 + cells]          per-cell centre counts, scanned in place into cell starts (+ total)

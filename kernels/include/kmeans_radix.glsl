@@ -1,6 +1,6 @@
 #ifndef KMEANS_RADIX_GLSL
 #define KMEANS_RADIX_GLSL
-// One pass of the stable LSD radix sort of (cluster id, texel index) pairs by sort key (SPEC §6.2
+// One pass of the stable LSD radix sort of (cluster id, texel index) pairs by sort key (DESIGN.md §6.2
 // `sort`): 8-bit digits, a tile of 256 * rounds consecutive elements per group. The first pass
 // reads the assignment itself (the pair of element i is (assignment[i], i)), later passes the
 // previous pass's output. Histograms are digit-major (hist[digit * tiles + tile]), so their

@@ -1,10 +1,10 @@
 #ifndef PYRAMID_GLSL
 #define PYRAMID_GLSL
 #define PYRAMID_ACCESSORS
-// The storage-buffer pyramid of SPEC §4 with software filtering (`--pyramid buffer`).
+// The storage-buffer pyramid of DESIGN.md §4 with software filtering (`--pyramid buffer`).
 // The includer declares the buffer `pyramid_texels` (vec4) holding 3 layers of `pyramid_total`
 // texels each: layer 0 = (Phi.rgb, w), 1 = (w P, w |P|^2), 2 = (w rbar, q).
-// pyramid_texture.glsl offers the same functions on a sampled image (SPEC §6.1a).
+// pyramid_texture.glsl offers the same functions on a sampled image (DESIGN.md §6.1a).
 #include "pyramid_layout.glsl"
 
 // Texel (x, y) of a level; zero outside its in-bounds extent (the rest of the virtual square).
@@ -27,7 +27,7 @@ vec4 pyramid_bilinear(uint layer, vec2 x, uint k) {
          pyramid_texel(layer, k, i0 + ivec2(1, 1)) * (f.x * f.y);
 }
 
-// Trilinear at a fractional level (SPEC §4): numerator and denominator of Eq. 5 both go through it.
+// Trilinear at a fractional level (DESIGN.md §4): numerator and denominator of Eq. 5 both go through it.
 vec4 pyramid_trilinear(uint layer, vec2 x, float level) {
   float l0 = floor(level);
   uint k0 = uint(l0);

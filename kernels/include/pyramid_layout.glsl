@@ -1,6 +1,6 @@
 #ifndef PYRAMID_LAYOUT_GLSL
 #define PYRAMID_LAYOUT_GLSL
-// The virtual square of SPEC §4 (C++ twin harness/math/virtual_square.hpp): S, L, each level's
+// The virtual square of DESIGN.md §4 (C++ twin harness/math/virtual_square.hpp): S, L, each level's
 // in-bounds extent and, for the buffer path, each level's offset in a layer. Shared by both
 // pyramid paths (pyramid.glsl: storage buffer; pyramid_texture.glsl: sampled image).
 // Call pyramid_init() first in main().

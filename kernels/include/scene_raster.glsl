@@ -6,7 +6,7 @@ layout(push_constant) uniform PushBlock { RasterPush raster; };
 
 // The material of one draw (set 0; mirrored by MaterialBlock in harness/scene/capture_recorder.cpp).
 const uint kModelConstants = 0u;          // the vertex's albedos and roughness as they are
-const uint kModelMetallicRoughness = 1u;  // glTF 2.0 (SPEC §3)
+const uint kModelMetallicRoughness = 1u;  // glTF 2.0 (DESIGN.md §3)
 const uint kModelVertexAlbedo = 2u;       // vertex albedos modulated by the maps
 layout(set = 0, binding = 0, std140) uniform MaterialBlock {
   vec4 base_color_factor;  // linear rgb, alpha

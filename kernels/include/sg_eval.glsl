@@ -1,6 +1,6 @@
 #ifndef SG_EVAL_GLSL
 #define SG_EVAL_GLSL
-// Evaluating a VSGL at a receiver without visibility (SPEC §8, Tok15 §3.1), in closed form with
+// Evaluating a VSGL at a receiver without visibility (DESIGN.md §8, Tok15 §3.1), in closed form with
 // spherical Gaussians G(w; a, s) = exp(s (dot(w, a) - 1)).
 //
 //   L = 1 / (pi r^2) * integral over S^2 of I(w) f(w) V(w) dw            (Tok15 Eq. 2)
@@ -97,7 +97,7 @@ vec3 vsgl_radiance_surface(Vsgl v, vec3 x, vec3 n, vec3 wo, vec3 rho_d, vec3 rho
   return phi * (emission * (rho_d * diffuse_term + rho_s * specular_term));
 }
 
-// (b) BRSM importance (SPEC §8): how much of the camera VSGL `cam` (its power = reflectance, the
+// (b) BRSM importance (DESIGN.md §8): how much of the camera VSGL `cam` (its power = reflectance, the
 // importance emitted toward the camera's surfaces) a VPL at x receives through its own normalized
 // emission lobe c(vpl_lambda) G(w; vpl_axis, vpl_lambda). Importance is a scalar: the rgb power
 // of the camera VSGL enters as its channel sum (Phi.r + Phi.g + Phi.b), no luminance weighting.

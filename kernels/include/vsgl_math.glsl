@@ -1,13 +1,13 @@
 #ifndef VSGL_MATH_GLSL
 #define VSGL_MATH_GLSL
-// The maths of a VSGL (SPEC §4, §7): per-texel moments (the "additional" pass), the lobe of a
+// The maths of a VSGL (DESIGN.md §4, §7): per-texel moments (the "additional" pass), the lobe of a
 // texel as a mean direction vector, and a VSGL built from filtered or summed moments.
 // C++ twin: harness/math/vsgl_math.hpp (same formulas, same branches; tests/test_vsgl_math_gpu.cpp
 // compares the two). Formulas and constants: kernels/CONVENTIONS.md, shared with the CPU reference.
 
 const float VSGL_PI = 3.14159265358979;
 // Mean resultant length of the vMF lobe approximating a clamped cosine (lambda ~= 2.29 under the
-// Banerjee formula below), used for the diffuse part of a texel's lobe (SPEC §7).
+// Banerjee formula below), used for the diffuse part of a texel's lobe (DESIGN.md §7).
 const float VSGL_DIFFUSE_MEAN_LENGTH = 0.575;
 const float VSGL_MAX_SHARPNESS = 1e4;
 const float VSGL_MAX_MEAN_LENGTH = 0.9999;
@@ -40,7 +40,7 @@ float banerjee_sharpness(float r) {
 }
 
 // rbar: the emission lobe of a texel lit (or seen) from source_pos, as a mean direction vector
-// (SPEC §7): the diffuse part A_d * N and the glossy part A(lambda_s) * reflect(-omega_in, N),
+// (DESIGN.md §7): the diffuse part A_d * N and the glossy part A(lambda_s) * reflect(-omega_in, N),
 // weighted by the diffuse and specular channel sums. lambda_s warps the SG NDF sharpness 2/alpha^2
 // to the reflection lobe (Wang et al. 2009). Zero when the texel reflects nothing.
 vec3 texel_emission_lobe(vec3 P, vec3 N, vec3 diffuse, vec3 specular, float roughness, vec3 source_pos) {
@@ -62,7 +62,7 @@ vec3 texel_emission_lobe(vec3 P, vec3 N, vec3 diffuse, vec3 specular, float roug
 // Rec. 709 luminance: the camera view's power weight w and PDF.
 float vsgl_luminance(vec3 c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
 
-// The three moment layers of one texel (SPEC §4, §6.1 "additional"), all zero when invalid:
+// The three moment layers of one texel (DESIGN.md §4, §6.1 "additional"), all zero when invalid:
 //   m0 = (Phi.rgb, w), m1 = (w P, w |P|^2), m2 = (w rbar, q).
 // Light view: Phi = diffuse + specular flux, w = Phi.r + Phi.g + Phi.b, source = spot light.
 // Camera view: Phi = diffuse + specular albedo (importance), w = luminance(Phi), source = camera.
@@ -90,7 +90,7 @@ struct Vsgl {
   vec4 center_pdf;         // kernel centre x_i.xy, density used in the power, texel count (k-means) else 0
 };
 
-// A VSGL from the moments of one kernel or cluster (SPEC §7). The moments may be means (FIS
+// A VSGL from the moments of one kernel or cluster (DESIGN.md §7). The moments may be means (FIS
 // fetches) or sums (k-means): only ratios to W = m0.w are used. W <= 0 gives a VSGL of zero power.
 Vsgl vsgl_from_moments(vec4 m0, vec4 m1, vec4 m2, vec3 power, float level, vec2 center, float density,
                        float texel_count) {

@@ -1,5 +1,5 @@
 #pragma once
-// The descriptors of the two FIS generators (SPEC §6.1): one host class, one set of kernels.
+// The descriptors of the two FIS generators (DESIGN.md §6.1): one host class, one set of kernels.
 #include "harness/generators/generator_descriptor.hpp"
 #include "harness/math/fis_params.hpp"
 

@@ -58,7 +58,7 @@ std::string texture_path_unsupported_reason(const DeviceInfo& info) {
 }
 
 MipStrategy default_mip_strategy(const DeviceInfo& info) {
-  // Fixed per kind of device, never tuned at run time, so runs stay comparable (SPEC §6.1a).
+  // Fixed per kind of device, never tuned at run time, so runs stay comparable (DESIGN.md §6.1a).
   // CPU devices: the fastest correct strategy measured on lavapipe (see default_mip_strategy_reason).
   if (info.type == VK_PHYSICAL_DEVICE_TYPE_CPU) return MipStrategy::kBlit;
   return MipStrategy::kSinglePass;
@@ -132,7 +132,7 @@ FisGenerator::FisGenerator(Device& device, const DeviceView& view, FisVariant va
   si.minFilter = VK_FILTER_LINEAR;
   si.mipmapMode = VK_SAMPLER_MIPMAP_MODE_LINEAR;
   si.addressModeU = si.addressModeV = si.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER;
-  si.borderColor = VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK;  // zero outside the square (SPEC §4)
+  si.borderColor = VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK;  // zero outside the square (DESIGN.md §4)
   si.minLod = 0.0f;
   si.maxLod = static_cast<float>(sq.levels);
   si.unnormalizedCoordinates = VK_FALSE;
@@ -181,7 +181,7 @@ void FisGenerator::record(CommandStream& stream, const std::function<void(VkComm
   boundary(stream.get());
 }
 
-// Moment layers of every texel into pyramid level 0 (SPEC §4, §7); only in-bounds texels.
+// Moment layers of every texel into pyramid level 0 (DESIGN.md §4, §7); only in-bounds texels.
 void FisGenerator::record_additional(CommandStream& stream) {
   const VirtualSquare& sq = view_.square;
   FisAdditionalPush push{};
@@ -193,7 +193,7 @@ void FisGenerator::record_additional(CommandStream& stream) {
   stream.dispatch(*additional_, *additional_set_, push, div_up(sq.width, kFisTile), div_up(sq.height, kFisTile));
 }
 
-// Levels 1..L, each texel the 2x2 mean of its children (SPEC §4).
+// Levels 1..L, each texel the 2x2 mean of its children (DESIGN.md §4).
 void FisGenerator::record_mipmapping(CommandStream& stream) {
   const VirtualSquare& sq = view_.square;
   if (path_ == PyramidPath::kBuffer || strategy_ == MipStrategy::kPerLevel) {

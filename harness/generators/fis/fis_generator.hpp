@@ -1,10 +1,10 @@
 #pragma once
-// The FIS generators on the GPU (SPEC §6.1): `fis_tok15` [Tok15] and `fis_modified` (the paper's
+// The FIS generators on the GPU (DESIGN.md §6.1): `fis_tok15` [Tok15] and `fis_modified` (the paper's
 // "Ours"). Phases, as in Table 1: additional -> mipmapping -> filtered_sampling. The variants
 // share every pass; the kernel include/fis_filtered_sampling.glsl differs only in choose_level()
 // and estimate_power(), selected by a specialization constant.
 //
-// Two pyramid paths (SPEC §6.1a): `texture` (default) keeps the moment layers in a sampled
+// Two pyramid paths (DESIGN.md §6.1a): `texture` (default) keeps the moment layers in a sampled
 // RGBA32F 2D-array image with a full mip chain and filters in hardware — one textureLod per
 // trilinear lookup, as the paper's GPU did; `buffer` keeps them in a storage buffer with software
 // filtering, bit-exact with the CPU reference. The texture path builds its mip chain with one of
@@ -31,7 +31,7 @@ struct DeviceInfo;
 struct DeviceView;
 
 // The image format and sampler of the texture path, and the device limits that bound how
-// exactly its filter can agree with the CPU reference (recorded in every table, SPEC §6.1a).
+// exactly its filter can agree with the CPU reference (recorded in every table, DESIGN.md §6.1a).
 struct TextureFilterInfo {
   VkFormat format = VK_FORMAT_R32G32B32A32_SFLOAT;
   uint32_t sub_texel_precision_bits = 0;

@@ -9,7 +9,7 @@ namespace {
 
 constexpr uint64_t kCaptureTexelBytes = uint64_t{kChannelCount} * sizeof(float);
 constexpr uint64_t kMomentTexelBytes = sizeof(TexelMoments);  // m0, m1, m2: 3 x vec4
-static_assert(kMomentTexelBytes == 48, "three vec4 float32 moment layers (SPEC §4)");
+static_assert(kMomentTexelBytes == 48, "three vec4 float32 moment layers (DESIGN.md §4)");
 
 }  // namespace
 

@@ -1,12 +1,12 @@
 #pragma once
 // The least memory traffic the FIS passes `additional` and `mipmapping` must cause for one view
-// (SPEC §9, "physical limit"): bytes that have to cross between memory and the chip whatever the
+// (DESIGN.md §9, "physical limit"): bytes that have to cross between memory and the chip whatever the
 // kernel, pyramid path (buffer or texture) or mipmapping strategy, so that a pass's time can be
 // set beside the device's copy bandwidth. For a view of W x H texels, levels l = 0..L of the
-// virtual square (SPEC §4) with in-bounds extents W_l x H_l, T_l = W_l * H_l texels:
+// virtual square (DESIGN.md §4) with in-bounds extents W_l x H_l, T_l = W_l * H_l texels:
 //
-//   additional:  read  = W * H * C * 4        (C = 15 float32 capture channels, SPEC §3)
-//                write = W * H * B            (B = 48: three vec4 float32 moment layers, SPEC §4)
+//   additional:  read  = W * H * C * 4        (C = 15 float32 capture channels, DESIGN.md §3)
+//                write = W * H * B            (B = 48: three vec4 float32 moment layers, DESIGN.md §4)
 //   mipmapping:  read  = T_0 * B              (level 0, as `additional` left it)
 //                write = (T_1 + ... + T_L) * B
 //

@@ -1,5 +1,5 @@
 #pragma once
-// The descriptors of the k-means generators (SPEC §6.2): 2D image space or 3D world space, with
+// The descriptors of the k-means generators (DESIGN.md §6.2): 2D image space or 3D world space, with
 // the paper's sequential per-cluster sum or the segmented-reduction extra.
 #include "harness/generators/generator_descriptor.hpp"
 #include "harness/reference/kmeans_reference.hpp"

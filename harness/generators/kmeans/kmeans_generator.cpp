@@ -233,7 +233,7 @@ void KmeansGenerator::record_sum(CommandStream& stream) {
   dispatch_flat(stream, *segsum_clusters_, *segsum_clusters_set_, push, div_up(params_.vsgl_count, kNarrow));
 }
 
-// Features, PDF pyramid level 0 and feature bounds; the PDF pyramid; the seeds (SPEC §5).
+// Features, PDF pyramid level 0 and feature bounds; the PDF pyramid; the seeds (DESIGN.md §5).
 void KmeansGenerator::record_seeding(CommandStream& stream) {
   const VirtualSquare& sq = view_.square;
   const uint32_t space3d = space_ == KmeansSpace::k3d ? 1u : 0u;

@@ -1,12 +1,12 @@
 #pragma once
-// The k-means generators on the GPU (SPEC §6.2): `kmeans_2d` / `kmeans_3d` (feature: texel centre
+// The k-means generators on the GPU (DESIGN.md §6.2): `kmeans_2d` / `kmeans_3d` (feature: texel centre
 // in pixels / world position), and the `_segsum` variants whose `sum` is a parallel segmented
 // reduction (beyond the paper). Phases, as in the paper's Table 1:
-//   cluster_assignment: seeding (the kernel centres of SPEC §5 on the view's PDF), I Lloyd
+//   cluster_assignment: seeding (the kernel centres of DESIGN.md §5 on the view's PDF), I Lloyd
 //     iterations (grid build, exact nearest-centre assignment, sort by cluster, deterministic
 //     centre update), then grid build + final assignment;
 //   sort: stable LSD radix sort of (cluster id, texel index) by cluster, and each cluster's range;
-//   sum: per cluster, the moments of its texels and the VSGL (SPEC §7).
+//   sum: per cluster, the moments of its texels and the VSGL (DESIGN.md §7).
 // The CPU reference is harness/reference/kmeans_reference.hpp.
 #include <optional>
 

@@ -1,6 +1,6 @@
-// The FIS kernels' push constants and work-group sizes (SPEC §6.1, §6.1a), shared by GLSL and
+// The FIS kernels' push constants and work-group sizes (DESIGN.md §6.1, §6.1a), shared by GLSL and
 // harness/generators/fis/fis_generator.cpp through interop.h. Both pyramid paths (the storage
-// buffer of SPEC §4 and the sampled image of §6.1a) use these blocks.
+// buffer of DESIGN.md §4 and the sampled image of §6.1a) use these blocks.
 #ifndef VSGL_INTERFACE_FIS_H
 #define VSGL_INTERFACE_FIS_H
 #include "interop.h"

@@ -46,7 +46,7 @@ struct KmeansSeedPush {
   uint width;
   uint height;
   uint count;        // N
-  uint offset_bits;  // lattice offset o (SPEC §5)
+  uint offset_bits;  // lattice offset o (DESIGN.md §5)
   uint space3d;
 };
 VSGL_LAYOUT(KmeansSeedPush, 20);
