@@ -1,5 +1,5 @@
 #pragma once
-// One benchmark run as `vsgl-bench compare`, `export` and `dashboard` see it (issue 6): the
+// One benchmark run as `vsgl-bench compare`, `export` and `dashboard` see it: the
 // timing series of a table JSON (DESIGN.md §10, results/schema/table.schema.json) or of the project's
 // Google Benchmark JSON (bench/vsgl_gbench.cpp), each under a stable name, with what must match
 // for two runs to be comparable (capture hashes, workload config) and what labels a run (device,
