@@ -56,7 +56,7 @@ struct BenchRun {
   bool git_dirty = false;
   std::string date;          // ISO 8601 UTC start of the run
   bool quick = false;        // a --quick run (table JSON)
-  std::vector<std::string> debug_slow;  // TEST-ONLY slowed generators (regression_debug_slow.hpp)
+  std::vector<std::string> debug_slow;  // TEST-ONLY slowed generators (generators/testing/debug_slowdown.hpp)
   std::map<int, RunTable> tables;
   std::vector<RunSeries> series;  // in the file's order
 
