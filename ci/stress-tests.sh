@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# A flake hunt you can rerun (issue 12): builds once (the CI preset), then runs the whole test
+# A flake hunt you can rerun: builds once (the CI preset), then runs the whole test
 # suite N times (default 10) the way ci/test.sh does, with a CPU hog (a busy loop pinned to one
 # core) running all along, and prints each run's failures and a final count. Not part of .ci/run.
 # Usage: bash ci/stress-tests.sh [N]       Exit 0 only when every run was green.

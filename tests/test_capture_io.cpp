@@ -538,8 +538,8 @@ TEST(CaptureIo, AtomicWriterReplacesAndLeavesNoTemporaries) {
 }
 
 
-// Issue 12: a corrupted channel name (the byte of 'i' in "valid" flipped to 0x97, as seen on a
-// damaged rsm.exr) reaches the message escaped, never as raw bytes (harness/printable_text.hpp).
+// DESIGN.md §12: a corrupted channel name (the byte of 'i' in "valid" flipped to 0x97, as seen on a
+// damaged rsm.exr) reaches the message escaped, never as raw bytes (harness/core/printable_text.hpp).
 TEST(CaptureIo, CorruptChannelNameIsEscapedInTheMessage) {
   TempDir temp;
   write_capture(make_capture(), temp.path());
@@ -563,7 +563,7 @@ TEST(CaptureIo, CorruptChannelNameIsEscapedInTheMessage) {
   }
 }
 
-// Issue 12: temporaries of a killed writer (".NAME.tmp-PID-N" whose PID is gone) are removed by
+// DESIGN.md §10: temporaries of a killed writer (".NAME.tmp-PID-N" whose PID is gone) are removed by
 // the next write of NAME; one of a live process is left alone (it may still be writing).
 TEST(CaptureIo, AtomicWriterRemovesTemporariesOfDeadWriters) {
   TempDir temp;

@@ -1,5 +1,5 @@
 // `compare` flags exactly the generator that `tables --debug-slow` slowed (TEST-ONLY workload,
-// harness/generators/testing/debug_slowdown.hpp), in two parts so that noise cannot fail it (issue 12):
+// harness/generators/testing/debug_slowdown.hpp), in two parts so that noise cannot fail it:
 //
 // - The verdict logic on synthetic samples (no device, no clock): base and new runs with the
 //   same noise, one generator's last phase slowed; exactly its rows (that phase, its view totals,

@@ -1,6 +1,6 @@
-// No half-written output after a kill (DESIGN.md §10, §12; issue 12). Real `vsgl-bench tables` and
+// No half-written output after a kill (DESIGN.md §10, §12). Real `vsgl-bench tables` and
 // `record` runs are stopped at known points of writing a known output file by the atomic
-// writer's TEST-ONLY pause hook (harness/test_pause.hpp) and then sent SIGKILL by this test.
+// writer's TEST-ONLY pause hook (harness/core/test_pause.hpp) and then sent SIGKILL by this test.
 // Afterwards every output path must hold the complete old file or the complete new one, the
 // file being written at "partial" or "complete" must still be the old one (and its temporary
 // must exist: the hook really stopped mid-write), at "renamed" the new one; the next run must

@@ -51,7 +51,7 @@ TEST(QualityCli, TinyCaptureWritesJsonMarkdownAndPictures) {
   EXPECT_EQ(j["k_sweep"]["fis_tok15"].size(), 2u);
   ASSERT_GE(j["claims"].size(), 6u);
   for (const auto& c : j["claims"]) EXPECT_TRUE(c.contains("verdict")) << c.dump();
-  // Issue 15: the PDF's frequency content per view; per FIS generator the coverage beside its
+  // DESIGN.md §11a: the PDF's frequency content per view; per FIS generator the coverage beside its
   // lattice floor, the excess the difference of the two; the Fig. 1 verdict names its margin.
   for (const char* view : {"light_view", "camera_view"}) {
     const auto& v = j["views"][view];

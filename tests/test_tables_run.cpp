@@ -49,7 +49,7 @@ TablesOptions tiny_options(const fs::path& root) {
   o.quick = true;
   o.timing.min_repetitions = 3;
   o.timing.max_repetitions = 3;
-  o.copy_bandwidth.bytes = 1u << 20;  // the measurement's shape, not the SPEC's 256 MiB
+  o.copy_bandwidth.bytes = 1u << 20;  // the measurement's shape, not DESIGN.md §9's 256 MiB
   o.copy_bandwidth.copies = 3;
   return o;
 }

@@ -1,4 +1,4 @@
-// `vsgl-bench compare BASE NEW` (issue 6): a FASTER / SLOWER / SAME / AMBIGUOUS verdict per
+// `vsgl-bench compare BASE NEW` (DESIGN.md §10): a FASTER / SLOWER / SAME / AMBIGUOUS verdict per
 // benchmark row of two runs (table JSON, a directory of them, or Google Benchmark JSON with
 // repetitions), a markdown report, and an exit status a CI gate can use:
 //   0 no verdict listed in --fail-on · 1 some (a regression) · 2 error (bad command line, unreadable

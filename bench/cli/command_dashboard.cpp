@@ -1,4 +1,4 @@
-// `vsgl-bench dashboard RESULTS_DIR --out SITE` (issue 6): SITE/index.html, one self-contained
+// `vsgl-bench dashboard RESULTS_DIR --out SITE` (DESIGN.md §10): SITE/index.html, one self-contained
 // page (inline SVG charts, no script, nothing fetched) from every table JSON under RESULTS_DIR,
 // beside the paper's numbers (harness/compare/dashboard_page.hpp).
 #include <cstdio>

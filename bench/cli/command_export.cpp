@@ -1,4 +1,4 @@
-// `vsgl-bench export --format gab|bmf RUN [RUN...] --out FILE` (issue 6): a run's medians and
+// `vsgl-bench export --format gab|bmf RUN [RUN...] --out FILE` (DESIGN.md §10): a run's medians and
 // quartiles under stable names for dashboards (harness/compare/export_formats.hpp). RUN is a table JSON, a
 // directory of table*.json (one `tables` run) or Google Benchmark JSON; several are merged.
 #include <cstdio>

@@ -1,4 +1,4 @@
-// `vsgl-bench quality`: the paper's quality claims as numbers (issue 8; the 2016 paper's Fig. 1, 5
+// `vsgl-bench quality`: the paper's quality claims as numbers (DESIGN.md §11a; the 2016 paper's Fig. 1, 5
 // and 6): kernel coverage, too-bright VSGLs, power, flicker, the K sweep and the error against a
 // VPL reference, written as OUT/<scene>/quality.json, quality.md and PNGs (harness/quality/quality_run.hpp).
 #include <cstdio>

@@ -1,5 +1,5 @@
 #pragma once
-// `vsgl-bench dashboard RESULTS_DIR --out SITE` (issue 6): one self-contained HTML page (inline
+// `vsgl-bench dashboard RESULTS_DIR --out SITE` (DESIGN.md §10): one self-contained HTML page (inline
 // CSS and SVG, no script, nothing fetched) from every table JSON under RESULTS_DIR:
 //  - per paper table, a stacked bar chart of the phases (camera view, then light view) per
 //    generator for each run, beside the same chart of the paper's GTX 970 numbers

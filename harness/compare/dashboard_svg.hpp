@@ -1,5 +1,5 @@
 #pragma once
-// The charts of `vsgl-bench dashboard` (issue 6) as inline SVG text: no script, no library, no
+// The charts of `vsgl-bench dashboard` (DESIGN.md §10) as inline SVG text: no script, no library, no
 // network — the page shows them as written. Every drawn value carries a <title> (the browser's
 // tooltip) with its number, and the elements carry classes the tests look for
 // ("chart", "bar", "segment", "point", ...).

@@ -1,5 +1,5 @@
 #pragma once
-// `vsgl-bench export` (issue 6): a run's series (regression_run.hpp, stable names such as
+// `vsgl-bench export` (DESIGN.md §10): a run's series (regression_run.hpp, stable names such as
 // "table1/fis_modified/light_view/filtered_sampling") in the formats dashboards read.
 //
 // gab — github-action-benchmark, tool "customSmallerIsBetter": a JSON array of

@@ -1,5 +1,5 @@
 #pragma once
-// `vsgl-bench compare BASE NEW` (issue 6): a verdict per benchmark row (every phase, view total
+// `vsgl-bench compare BASE NEW` (DESIGN.md §10): a verdict per benchmark row (every phase, view total
 // and generator total both runs have) from the raw samples (regression_verdict.hpp: Mann-Whitney
 // U test + minimum relevant change), a geometric-mean summary, and a markdown report.
 //

@@ -1,5 +1,5 @@
 #pragma once
-// One benchmark run as `vsgl-bench compare`, `export` and `dashboard` see it (issue 6): the
+// One benchmark run as `vsgl-bench compare`, `export` and `dashboard` see it: the
 // timing series of a table JSON (DESIGN.md §10, results/schema/table.schema.json) or of the project's
 // Google Benchmark JSON (bench/vsgl_gbench.cpp), each under a stable name, with what must match
 // for two runs to be comparable (capture hashes, workload config) and what labels a run (device,
@@ -56,7 +56,7 @@ struct BenchRun {
   bool git_dirty = false;
   std::string date;          // ISO 8601 UTC start of the run
   bool quick = false;        // a --quick run (table JSON)
-  std::vector<std::string> debug_slow;  // TEST-ONLY slowed generators (regression_debug_slow.hpp)
+  std::vector<std::string> debug_slow;  // TEST-ONLY slowed generators (generators/testing/debug_slowdown.hpp)
   std::map<int, RunTable> tables;
   std::vector<RunSeries> series;  // in the file's order
 

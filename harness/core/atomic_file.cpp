@@ -82,7 +82,7 @@ void write_temporary(const std::filesystem::path& target, const std::filesystem:
                      std::span<const char> bytes) {
   FileDescriptor fd(::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644));
   if (fd.get() < 0) fail(target, "creating temporary " + temporary.string(), errno);
-  // TEST-ONLY (harness/test_pause.hpp): stop with half of the bytes written.
+  // TEST-ONLY (harness/core/test_pause.hpp): stop with half of the bytes written.
   const std::size_t first = test_pause_wanted("partial", target) ? bytes.size() / 2 : bytes.size();
   std::size_t written = 0;
   while (written < bytes.size()) {
@@ -114,7 +114,7 @@ void write_file_atomic(const std::filesystem::path& path, std::span<const char> 
   const std::filesystem::path temporary = temporary_path_for(path);
   try {
     write_temporary(path, temporary, bytes);
-    test_pause_point("complete", path);  // TEST-ONLY (harness/test_pause.hpp)
+    test_pause_point("complete", path);  // TEST-ONLY (harness/core/test_pause.hpp)
     if (::rename(temporary.c_str(), path.c_str()) != 0) {
       fail(path, "renaming temporary " + temporary.string() + " onto it", errno);
     }
@@ -123,7 +123,7 @@ void write_file_atomic(const std::filesystem::path& path, std::span<const char> 
     std::filesystem::remove(temporary, ignored);
     throw;
   }
-  test_pause_point("renamed", path);  // TEST-ONLY (harness/test_pause.hpp)
+  test_pause_point("renamed", path);  // TEST-ONLY (harness/core/test_pause.hpp)
   sync_directory(path.parent_path());
 }
 

@@ -1,6 +1,7 @@
 #pragma once
-// TEST-ONLY hook of the atomic writer (harness/atomic_file.cpp, issue 12): lets a test kill a
-// real run at a known point of writing a known file, deterministically.
+// TEST-ONLY hook of the atomic writer (harness/core/atomic_file.cpp; DESIGN.md §10, §12: no
+// half-written output): lets a test kill a real run at a known point of writing a known file,
+// deterministically.
 //
 //   VSGL_TEST_PAUSE_AT=POINT:FILE_NAME   VSGL_TEST_PAUSE_NOTIFY=/some/marker
 //

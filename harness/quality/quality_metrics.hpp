@@ -1,5 +1,5 @@
 #pragma once
-// The paper's quality claims as numbers (issue 8; the 2016 paper's Fig. 1, 5, 6): kernel coverage
+// The paper's quality claims as numbers (DESIGN.md §11a; the 2016 paper's Fig. 1, 5, 6): kernel coverage
 // (gaps and overlaps of FIS footprints), the kernels' PDF mass against K/N, too-bright VSGLs,
 // power conservation, image error against a reference, and temporal flicker. Pure CPU functions
 // over downloaded VSGL records and radiance images, so tests can feed them known answers.

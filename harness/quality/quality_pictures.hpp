@@ -1,5 +1,5 @@
 #pragma once
-// The pictures of the quality report (issue 8): Fig. 1 analogs (the PDF in grey, kernel centres in
+// The pictures of the quality report (DESIGN.md §11a): Fig. 1 analogs (the PDF in grey, kernel centres in
 // red, footprints in orange), error maps, and grids of tiles (Fig. 5 and Fig. 6 analogs). No text
 // is drawn; the markdown report names the tiles in order.
 #include <cstdint>

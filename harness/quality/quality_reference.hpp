@@ -1,5 +1,5 @@
 #pragma once
-// The reference of the quality metrics (issue 8, item 6): every lit RSM texel its own VSGL
+// The reference of the quality metrics (DESIGN.md §11a): every lit RSM texel its own VSGL
 // (kernel level 0, a VPL), shaded by the same pass as the generators' VSGLs (DESIGN.md §8 (a)).
 //
 // Reduced size: instead of recording a second, smaller capture (whose G-buffer pixels would not be

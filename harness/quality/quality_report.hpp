@@ -1,5 +1,5 @@
 #pragma once
-// The quality report (issue 8, item 7): verdicts on the paper's quality claims
+// The quality report (DESIGN.md §11a): verdicts on the paper's quality claims
 // (results/paper/paper_tables.json "claims": Fig. 1, Fig. 5, Fig. 6; and the flicker reduction of
 // the paper's §1/§4) computed from a run_quality() document, and its markdown rendering.
 #include <string>

@@ -1,5 +1,5 @@
 #pragma once
-// `vsgl-bench quality` (issue 8): the paper's quality claims measured on one capture.
+// `vsgl-bench quality` (DESIGN.md §11a): the paper's quality claims measured on one capture.
 //   1. kernel coverage of the FIS generators (Fig. 1): gap, overlap, kernel PDF mass vs K/N;
 //   2. too-bright VSGLs (Fig. 5): max and 99th percentile of Phi_i / mean;  3. power: sum Phi / flux;
 //   4. flicker: F frames of the static capture where only the lattice offset o changes (DESIGN.md §5),

@@ -35,7 +35,7 @@ struct ImageSlot {
 };
 
 struct ComputePipelineDesc {
-  std::string shader;             // embedded name, e.g. "mip_level.comp"
+  std::string shader;             // embedded name, e.g. "fis_mip_level.comp"
   uint32_t storage_buffers = 0;   // bindings 0..n-1
   uint32_t push_constant_bytes = 0;
   std::vector<SpecializationConstant> constants;

@@ -11,7 +11,7 @@ namespace vsgl {
 
 namespace detail {
 struct EmbeddedShader {
-  const char* name;  // file name, e.g. "mip_level.comp"
+  const char* name;  // file name, e.g. "fis_mip_level.comp"
   const uint32_t* words;
   std::size_t word_count;
 };

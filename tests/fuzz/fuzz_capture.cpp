@@ -1,8 +1,8 @@
-// libFuzzer target: the capture loader (harness/capture.cpp load_capture: the JSON sidecar, both
-// OpenEXR files through harness/exr_io.cpp, the size / channel / value / hash checks). The input
-// is gbuffer.exr SEP rsm.exr SEP capture.json (fuzz_input_files.hpp); a missing part is a missing
-// file. Bad input must end in InputError; anything else (another exception, a crash, a sanitizer
-// report, a leak) is a bug.
+// libFuzzer target: the capture loader (harness/capture/capture_files.cpp load_capture: the JSON
+// sidecar, both OpenEXR files through harness/capture/exr_io.cpp, the size / channel / value / hash
+// checks). The input is gbuffer.exr SEP rsm.exr SEP capture.json (fuzz_input_files.hpp); a
+// missing part is a missing file. Bad input must end in InputError; anything else (another
+// exception, a crash, a sanitizer report, a leak) is a bug.
 #include <OpenEXR/ImfThreading.h>
 
 #include <cstdint>

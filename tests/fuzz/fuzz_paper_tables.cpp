@@ -1,4 +1,4 @@
-// libFuzzer target: the paper-tables loader (harness/paper_tables.cpp load_paper_tables, the
+// libFuzzer target: the paper-tables loader (harness/report/paper_tables.cpp load_paper_tables, the
 // file behind `tables --paper` and `dashboard --paper`), and the dashboard page drawn from a
 // paper document that loaded, beside a committed run. Bad input must end in InputError;
 // anything else is a bug.

@@ -1,5 +1,5 @@
 // libFuzzer target: the run/table JSON loader behind `compare`, `export` and `dashboard`
-// (harness/regression_run.cpp load_bench_run: a table JSON or vsgl-gbench JSON), and what those
+// (harness/compare/regression_run.cpp load_bench_run: a table JSON or vsgl-gbench JSON), and what those
 // commands then do with a run that loaded: both export formats, a comparison of the run with
 // itself and its markdown report, and (table JSON) the dashboard page. Bad input must end in InputError;
 // anything else is a bug.

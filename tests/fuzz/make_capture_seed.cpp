@@ -1,6 +1,6 @@
 // Writes seed inputs for fuzz_capture: a small synthetic capture (both views W x H, written by
-// the real writer, harness/capture.cpp write_capture) packed as gbuffer.exr SEP rsm.exr SEP
-// capture.json. Usage: make_capture_seed OUT_DIR. Two seeds: one whose RSM has its BRSM PDF,
+// the real writer, harness/capture/capture_files.cpp write_capture) packed as gbuffer.exr SEP
+// rsm.exr SEP capture.json. Usage: make_capture_seed OUT_DIR. Two seeds: one whose RSM has its BRSM PDF,
 // one without (has_pdf false, one channel fewer).
 #include <cmath>
 #include <cstdio>

@@ -1,6 +1,6 @@
 // Measures whether the capture loader should call OpenEXR's checkOpenEXRFile (ImfCheckFile.h)
-// before reading an EXR (issue 12): its cost on a full-size view, and what it catches that
-// harness/exr_io.cpp read_exr does not, over a corpus of fuzzed capture inputs.
+// before reading an EXR (DESIGN.md §3 validation on load): its cost on a full-size view, and what
+// it catches that harness/capture/exr_io.cpp read_exr does not, over a corpus of fuzzed capture inputs.
 // Usage: measure_check_file [CORPUS_DIR...]   (inputs as fuzz_capture reads them)
 #include <OpenEXR/ImfCheckFile.h>
 

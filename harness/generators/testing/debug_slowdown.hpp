@@ -1,5 +1,5 @@
 #pragma once
-// TEST-ONLY: `vsgl-bench tables --debug-slow GENERATOR` (issue 6). Wraps a generator so that its
+// TEST-ONLY: `vsgl-bench tables --debug-slow GENERATOR` (DESIGN.md §10). Wraps a generator so that its
 // last phase also runs a fixed amount of extra work (one dispatch of kernels/test_workload.comp
 // recorded just before the generator's final phase boundary), so that `vsgl-bench compare` can be
 // shown to flag exactly that generator as SLOWER. The run records it (run.debug_slow in the
