@@ -132,9 +132,6 @@ TEST_F(FisGeneratorTest, TexturePathMatchesTheCpuReferenceWithEveryMipStrategy) 
         const std::array<MipPyramid, 3>& read = m == MipStrategy::kBlit ? gpu : cpu;
         const auto got = download_vector<VsglRecord>(device(), gen.vsgls(), params.vsgl_count);
         const auto samples = reference_samples(read[2], params.vsgl_count, 0);
-        const float q_top = read[2].top().w;
-        const auto M = static_cast<float>(sq.square_texels());
-        const auto N = static_cast<float>(params.vsgl_count);
         for (uint32_t i = 0; i < params.vsgl_count; ++i) {
           SCOPED_TRACE("VSGL " + std::to_string(i));
           const glm::vec2 x(got[i].center_pdf);
@@ -145,20 +142,7 @@ TEST_F(FisGeneratorTest, TexturePathMatchesTheCpuReferenceWithEveryMipStrategy) 
           if (variant == FisVariant::kTok15) {
             EXPECT_NEAR(l, tok15_level(samples[i].pdf, params.vsgl_count, params.K, sq), 1e-4f);
           }
-          const glm::vec3 f = glm::vec3(fetch(read[0], samples[i].x, l));
-          const glm::vec3 ef = glm::vec3(fetch_error_bound(read[0], samples[i].x, l, precision));
-          FisKernel k;
-          k.level = l;
-          glm::vec3 bound;
-          if (variant == FisVariant::kTok15) {
-            k.density = samples[i].pdf;
-            bound = M * ef / std::max(N * k.density, params.K);
-          } else {
-            k.density = fetch(read[2], samples[i].x, l).w / q_top;
-            const float ep = fetch_error_bound(read[2], samples[i].x, l, precision).w / q_top;
-            bound = M / (N * k.density) * (ef + glm::abs(f) * (ep / k.density));
-          }
-          const glm::vec3 expected = fis_power(variant, f, k, params, sq);
+          const auto [expected, bound] = fis_power_bound(variant, read, samples[i], l, params, precision);
           for (int c = 0; c < 3; ++c)
             EXPECT_NEAR(got[i].power_sharpness[c], expected[c], bound[c] + 1e-4f * std::abs(expected[c]) + 1e-9f)
                 << "power channel " << c;

@@ -5,6 +5,10 @@
 
 namespace vsgl {
 
+void VsglGenerator::record_boundary(CommandStream& stream, const std::function<void(VkCommandBuffer)>& boundary) {
+  boundary(stream.get());
+}
+
 void record_untimed(VsglGenerator& generator, CommandStream& stream) {
   generator.record(stream, [&](VkCommandBuffer) { stream.full_barrier(); });
 }

@@ -24,6 +24,37 @@ class VsglGenerator {
   virtual void record(CommandStream& stream, const std::function<void(VkCommandBuffer)>& boundary) = 0;
   virtual const Buffer& vsgls() const = 0;
   virtual uint32_t vsgl_count() const = 0;
+
+ protected:
+  // A phase as its generator names it (a row of the paper's tables) and the member function of
+  // the generator that records it.
+  template <class G>
+  struct Phase {
+    const char* name;
+    void (G::*record)(CommandStream&);
+  };
+
+  template <class G>
+  static std::vector<std::string> phase_names(const std::vector<Phase<G>>& phases) {
+    std::vector<std::string> names;
+    for (const Phase<G>& p : phases) names.emplace_back(p.name);
+    return names;
+  }
+
+  // The skeleton every phased generator's record() shares: `boundary` before the first phase,
+  // between each two and after the last, the phases recorded in their order.
+  template <class G>
+  static void record_phases(G& generator, CommandStream& stream, const std::function<void(VkCommandBuffer)>& boundary,
+                            const std::vector<Phase<G>>& phases) {
+    record_boundary(stream, boundary);
+    for (const Phase<G>& p : phases) {
+      (generator.*p.record)(stream);
+      record_boundary(stream, boundary);
+    }
+  }
+
+ private:
+  static void record_boundary(CommandStream& stream, const std::function<void(VkCommandBuffer)>& boundary);
 };
 
 // The untimed run (correctness checks, verify, shading, the BRSM PDF): every phase recorded with

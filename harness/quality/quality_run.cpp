@@ -162,227 +162,191 @@ std::string k_label(float K) {
   return buf;
 }
 
-}  // namespace
+// Pictures at half the error resolution, to keep them small.
+constexpr uint32_t kTileFactor = 2;
 
-std::vector<std::filesystem::path> sequence_frames(const std::filesystem::path& dir, uint32_t max_frames) {
-  std::vector<std::filesystem::path> frames;
-  for (uint32_t f = 0; f < max_frames; ++f) {
-    char name[32];
-    std::snprintf(name, sizeof name, "frame_%04u", f);
-    const auto p = dir / name;
-    if (!std::filesystem::exists(p / "capture.json")) break;
-    frames.push_back(p);
-  }
-  if (frames.size() < 2)
-    throw InputError(dir.string() + ": not a recorded sequence (need frame_0000, frame_0001, ... with capture.json; "
-                     "record one with `vsgl-bench record --frames F --out DIR`)");
-  return frames;
-}
+// The reference image (DESIGN.md §11) the errors, the K sweep and the pictures compare with.
+struct ReferenceShading {
+  RadianceImage image;
+  float exposure;                                  // of every render picture
+  std::map<std::string, RadianceImage> k1_images;  // the FIS generators' renders at the configured K
+};
 
-QualityResult run_quality(Device& device, const Capture& capture, const std::filesystem::path& capture_dir,
-                          const QualityConfig& config, const std::function<void(const std::string&)>& progress) {
-  const auto say = [&](const std::string& line) {
+// One quality run: the device, the capture and its views on the device, and the lattice floor's
+// input, the same views with the PDF 1 on the texels it weighs (DESIGN.md §11a). Each block of
+// the report is one function, in the order run_quality calls them.
+struct QualityRun {
+  Device& device;
+  const Capture& capture;
+  const QualityConfig& config;
+  const std::function<void(const std::string&)>& progress;
+  const std::string scene;
+  const DeviceView& camera;
+  const DeviceView& light;
+  const Capture& floor_capture;
+  const DeviceView& floor_camera;
+  const DeviceView& floor_light;
+  const MipPyramid& floor_light_pdf;
+
+  void say(const std::string& line) const {
     if (progress) progress(line);
-  };
-  if (config.frames < 2) throw InputError("quality: --frames must be at least 2 (flicker compares frames)");
-  if (config.error_stride == 0) throw InputError("quality: the error stride must be at least 1");
-  if (config.generators.empty()) throw InputError("quality: no generators");
-  for (float K : config.k_sweep)
-    if (!(K > 0.0f) || !std::isfinite(K)) throw InputError("quality: every K of the sweep must be positive");
-  for (const auto& g : config.generators) (void)generator_sources(g);  // unknown names fail here, before any work
+  }
 
-  const auto t_start = Clock::now();
-  const std::string scene = capture.meta.scene;
-  QualityResult result;
-  json& out = result.json;
-  json timings = json::object();
-  out["schema"] = "vsgl-quality";
-  out["schema_version"] = kQualitySchemaVersion;
-  out["scene"] = scene;
-  out["capture"] = json{{"path", capture_dir.string()},
-                        {"gbuffer", {capture.gbuffer.width, capture.gbuffer.height}},
-                        {"rsm", {capture.rsm.width, capture.rsm.height}},
-                        {"hashes", capture_hashes_json(capture)}};
-  out["device"] = json{{"name", device.info().name}, {"driver", device.info().driver_name + " " + device.info().driver_info}};
-  out["build"] = build_json(config.source_dir);
-  std::vector<double> ks(config.k_sweep.begin(), config.k_sweep.end());
-  out["config"] = json{{"generators", config.generators},
-                       {"light_vsgls", config.light_vsgls},
-                       {"camera_vsgls", config.camera_vsgls},
-                       {"K", config.K},
-                       {"bisection_iterations", config.bisection_iterations},
-                       {"kmeans_iterations", config.kmeans_iterations},
-                       {"frames", config.frames},
-                       {"frame_offsets", "offset_bits(f) = bit-reversed f (van der Corput), f = 0..F-1"},
-                       {"error_stride", config.error_stride},
-                       {"flicker_width", config.flicker_width},
-                       {"reference_rsm", config.reference_rsm},
-                       {"sequence_reference_rsm", config.sequence_reference_rsm},
-                       {"k_sweep", ks},
-                       {"power_of_a_vsgl", "Phi.r + Phi.g + Phi.b"},
-                       {"luminance", "Rec. 709"}};
-
-  const DeviceView camera = upload_view(device, capture, ViewKind::kCamera);
-  const DeviceView light = upload_view(device, capture, ViewKind::kLight);
-  // The lattice floor's input: the same views with the PDF 1 on the texels it weighs (DESIGN.md §11a).
-  const Capture floor_capture{capture.meta, uniform_pdf_view(capture.gbuffer), uniform_pdf_view(capture.rsm)};
-  const DeviceView floor_camera = upload_view(device, floor_capture, ViewKind::kCamera);
-  const DeviceView floor_light = upload_view(device, floor_capture, ViewKind::kLight);
-  const MipPyramid floor_light_pdf = view_data(floor_capture, ViewKind::kLight).pdf;
   // Coverage of a generator's kernels on a view beside the same generator's on the view's floor.
-  const auto coverage_with_floor = [&](const std::vector<VsglRecord>& kernels, const MipPyramid& pdf,
-                                       const DeviceView& floor_view, const MipPyramid& floor_pdf,
-                                       const std::string& name, uint32_t n, float K) {
+  json coverage_with_floor(const std::vector<VsglRecord>& kernels, const MipPyramid& pdf, const DeviceView& floor_view,
+                           const MipPyramid& floor_pdf, const std::string& name, uint32_t n, float K) const {
     const GeneratorRun floor_run = run_generator(device, floor_view, name, config, n, K, 0);
     return coverage_json(footprint_coverage(kernels, pdf, K), footprint_coverage(floor_run.vsgls, floor_pdf, K));
-  };
+  }
 
-  // ---- 1-3: per view and generator: coverage (FIS), too-bright, power ----------------------------
-  MipPyramid light_pdf;
-  auto t0 = Clock::now();
-  json views = json::object();
-  for (ViewKind kind : {ViewKind::kLight, ViewKind::kCamera}) {
-    const ViewData data = view_data(capture, kind);
-    const DeviceView& view = kind == ViewKind::kLight ? light : camera;
-    const DeviceView& floor_view = kind == ViewKind::kLight ? floor_light : floor_camera;
-    const MipPyramid floor_pdf = kind == ViewKind::kLight ? floor_light_pdf : view_data(floor_capture, kind).pdf;
-    const uint32_t n = kind == ViewKind::kLight ? config.light_vsgls : config.camera_vsgls;
-    if (kind == ViewKind::kLight) light_pdf = data.pdf;
-    json v = json{{"vsgls", n},
-                  {"total_flux", data.flux},
-                  {"pdf_frequency", frequency_json(pdf_frequency(data.pdf), data.pdf.levels(), n, config.K)},
-                  {"generators", json::object()}};
+  // 1-3: per view and generator: coverage (FIS), too-bright, power. Keeps the light view's PDF.
+  json view_metrics(QualityResult& result, MipPyramid& light_pdf) const {
+    json views = json::object();
+    for (ViewKind kind : {ViewKind::kLight, ViewKind::kCamera}) {
+      const ViewData data = view_data(capture, kind);
+      const DeviceView& view = kind == ViewKind::kLight ? light : camera;
+      const DeviceView& floor_view = kind == ViewKind::kLight ? floor_light : floor_camera;
+      const MipPyramid floor_pdf = kind == ViewKind::kLight ? floor_light_pdf : view_data(floor_capture, kind).pdf;
+      const uint32_t n = kind == ViewKind::kLight ? config.light_vsgls : config.camera_vsgls;
+      if (kind == ViewKind::kLight) light_pdf = data.pdf;
+      json v = json{{"vsgls", n},
+                    {"total_flux", data.flux},
+                    {"pdf_frequency", frequency_json(pdf_frequency(data.pdf), data.pdf.levels(), n, config.K)},
+                    {"generators", json::object()}};
+      for (const auto& name : config.generators) {
+        const auto tg = Clock::now();
+        const GeneratorRun run = run_generator(device, view, name, config, n, config.K, 0);
+        json g = json{{"power", power_json(power_metrics(run.vsgls, data.flux))}};
+        if (is_fis(name)) {
+          g["coverage"] = coverage_with_floor(run.vsgls, data.pdf, floor_view, floor_pdf, name, n, config.K);
+          const std::string file = scene + "_coverage_" + view_name(kind) + "_" + name + ".png";
+          result.pictures.push_back(
+              {file,
+               "Fig. 1 analog, " + std::string(view_name(kind)) + ", " + name +
+                   ": PDF in grey (sqrt scale), kernel centres red, footprints (side 2^l texels) orange",
+               coverage_picture(data.pdf, run.vsgls, config.coverage_picture_side)});
+        }
+        v["generators"][name] = g;
+        say(std::string(view_name(kind)) + " " + name + ": metrics in " + std::to_string(seconds_since(tg)) + " s");
+      }
+      views[view_name(kind)] = v;
+    }
+    return views;
+  }
+
+  // 6: reference and errors (light-view VSGLs shading the camera view).
+  ReferenceShading reference_and_errors(QualityResult& result, double light_flux) const {
+    json& out = result.json;
+    const auto t0 = Clock::now();
+    const uint32_t ref_stride = reference_stride(capture.rsm, config.reference_rsm);
+    const std::vector<VsglRecord> vpls = reference_vpls(capture.rsm, capture.meta.light, ref_stride, VplExtent::kTexelFootprint);
+    FixedVsglGenerator reference(device, vpls, "reference_vpls");
+    const RadianceImage ref_image =
+        shade_camera_view(device, camera, reference.vsgls(), reference.vsgl_count(), config.error_stride);
+    out["reference"] = json{{"rsm_stride", ref_stride},
+                            {"reference_rsm_side", (capture.rsm.width + ref_stride - 1) / ref_stride},
+                            {"vpls", vpls.size()},
+                            {"power_ratio", power_sum(vpls) / light_flux},
+                            {"image", {ref_image.width, ref_image.height}},
+                            {"method", "Every stride-th RSM texel with positive flux is a VSGL of its own moments "
+                                       "(level 0), flux scaled by stride^2, sigma^2 = A / 12 with A the world area the texel stands for "
+                                       "(bounds the 1/d^2 spikes of point VPLs); shaded at the "
+                                       "generators' pixels (G-buffer stride) by the same shading pass"}};
+    say("reference: " + std::to_string(vpls.size()) + " VPLs, shaded in " + std::to_string(seconds_since(t0)) + " s");
+    const float exposure = auto_exposure(downscale(ref_image, kTileFactor));
+    std::vector<Rgb8Image> render_tiles{tone_map(downscale(ref_image, kTileFactor), exposure)};
+    std::vector<Rgb8Image> error_tiles{error_map(downscale(ref_image, kTileFactor), downscale(ref_image, kTileFactor), 1.0f)};
+    json errors = json::object();
+    std::map<std::string, RadianceImage> k1_images;
+    for (const auto& name : config.generators) {
+      const GeneratorRun run = run_generator(device, light, name, config, config.light_vsgls, config.K, 0);
+      const RadianceImage img = shade_camera_view(device, camera, run.generator->vsgls(), run.generator->vsgl_count(),
+                                                  config.error_stride);
+      errors[name] = error_json(image_error(img, ref_image));
+      render_tiles.push_back(tone_map(downscale(img, kTileFactor), exposure));
+      error_tiles.push_back(error_map(downscale(img, kTileFactor), downscale(ref_image, kTileFactor), 1.0f));
+      if (is_fis(name)) k1_images[name] = img;
+    }
+    out["reference_error"] = errors;
+    {
+      std::vector<Rgb8Image> tiles = render_tiles;
+      tiles.insert(tiles.end(), error_tiles.begin(), error_tiles.end());
+      std::string order = "reference";
+      for (const auto& g : config.generators) order += ", " + g;
+      result.pictures.push_back({scene + "_renders.png",
+                                 "Fig. 5 analog. Top row: " + order +
+                                     " (indirect light, no visibility, one exposure). Bottom row: |dY| / mean Y of the "
+                                     "reference (black 0, red, yellow, white >= 1)",
+                                 tile_grid(tiles, static_cast<uint32_t>(render_tiles.size()))});
+    }
+    return ReferenceShading{ref_image, exposure, k1_images};
+  }
+
+  // 4 + 5: static flicker over offsets, with the K sweep for the FIS generators.
+  void flicker_and_k_sweep(QualityResult& result, const ReferenceShading& reference, const MipPyramid& light_pdf,
+                           double light_flux) const {
+    json& out = result.json;
+    const uint32_t flicker_stride = stride_for_width(capture.gbuffer.width, config.flicker_width);
+    const auto flicker_of = [&](const std::string& name, float K) {
+      FlickerAccumulator acc;
+      for (uint32_t f = 0; f < config.frames; ++f) {
+        const GeneratorRun run = run_generator(device, light, name, config, config.light_vsgls, K, frame_offset_bits(f));
+        acc.add_frame(shade_camera_view(device, camera, run.generator->vsgls(), run.generator->vsgl_count(), flicker_stride),
+                      power_sum(run.vsgls));
+      }
+      return json{{"frames", acc.frames()},
+                  {"weighted_cv", acc.weighted_cv()},
+                  {"power_stdev", acc.power_stdev()},
+                  {"power_relative_stdev", acc.power_relative_stdev()}};
+    };
+    json flicker = json::object();
     for (const auto& name : config.generators) {
       const auto tg = Clock::now();
-      const GeneratorRun run = run_generator(device, view, name, config, n, config.K, 0);
-      json g = json{{"power", power_json(power_metrics(run.vsgls, data.flux))}};
-      if (is_fis(name)) {
-        g["coverage"] = coverage_with_floor(run.vsgls, data.pdf, floor_view, floor_pdf, name, n, config.K);
-        const std::string file = scene + "_coverage_" + view_name(kind) + "_" + name + ".png";
-        result.pictures.push_back(
-            {file,
-             "Fig. 1 analog, " + std::string(view_name(kind)) + ", " + name +
-                 ": PDF in grey (sqrt scale), kernel centres red, footprints (side 2^l texels) orange",
-             coverage_picture(data.pdf, run.vsgls, config.coverage_picture_side)});
+      flicker[name] = flicker_of(name, config.K);
+      say("static flicker " + name + ": " + std::to_string(seconds_since(tg)) + " s");
+    }
+    out["flicker_static"] = json{{"image", {shaded_extent(capture.gbuffer.width, flicker_stride),
+                                            shaded_extent(capture.gbuffer.height, flicker_stride)}},
+                                 {"gbuffer_stride", flicker_stride},
+                                 {"generators", flicker}};
+
+    json sweep = json::object();
+    std::vector<Rgb8Image> k_tiles;
+    for (const auto& name : config.generators) {
+      if (!is_fis(name)) continue;
+      json rows = json::array();
+      for (float K : config.k_sweep) {
+        const auto tg = Clock::now();
+        json row = K == config.K ? flicker[name] : flicker_of(name, K);
+        const GeneratorRun run = run_generator(device, light, name, config, config.light_vsgls, K, 0);
+        const RadianceImage img = K == config.K && reference.k1_images.count(name) > 0
+                                      ? reference.k1_images.at(name)
+                                      : shade_camera_view(device, camera, run.generator->vsgls(),
+                                                          run.generator->vsgl_count(), config.error_stride);
+        row["K"] = K;
+        row["error"] = error_json(image_error(img, reference.image));
+        row["coverage"] = coverage_with_floor(run.vsgls, light_pdf, floor_light, floor_light_pdf, name, config.light_vsgls, K);
+        row["power"] = power_json(power_metrics(run.vsgls, light_flux));
+        rows.push_back(row);
+        k_tiles.push_back(tone_map(downscale(img, kTileFactor), reference.exposure));
+        say("K sweep " + name + " K=" + k_label(K) + ": " + std::to_string(seconds_since(tg)) + " s");
       }
-      v["generators"][name] = g;
-      say(std::string(view_name(kind)) + " " + name + ": metrics in " + std::to_string(seconds_since(tg)) + " s");
+      sweep[name] = rows;
     }
-    views[view_name(kind)] = v;
-  }
-  out["views"] = views;
-  timings["view_metrics"] = seconds_since(t0);
-
-  // ---- 6: reference and errors (light-view VSGLs shading the camera view) ---------------------------
-  t0 = Clock::now();
-  const uint32_t ref_stride = reference_stride(capture.rsm, config.reference_rsm);
-  const std::vector<VsglRecord> vpls = reference_vpls(capture.rsm, capture.meta.light, ref_stride, VplExtent::kTexelFootprint);
-  FixedVsglGenerator reference(device, vpls, "reference_vpls");
-  const RadianceImage ref_image =
-      shade_camera_view(device, camera, reference.vsgls(), reference.vsgl_count(), config.error_stride);
-  const double light_flux = views["light_view"]["total_flux"].get<double>();
-  out["reference"] = json{{"rsm_stride", ref_stride},
-                          {"reference_rsm_side", (capture.rsm.width + ref_stride - 1) / ref_stride},
-                          {"vpls", vpls.size()},
-                          {"power_ratio", power_sum(vpls) / light_flux},
-                          {"image", {ref_image.width, ref_image.height}},
-                          {"method", "Every stride-th RSM texel with positive flux is a VSGL of its own moments "
-                                     "(level 0), flux scaled by stride^2, sigma^2 = A / 12 with A the world area the texel stands for "
-                                     "(bounds the 1/d^2 spikes of point VPLs); shaded at the "
-                                     "generators' pixels (G-buffer stride) by the same shading pass"}};
-  say("reference: " + std::to_string(vpls.size()) + " VPLs, shaded in " + std::to_string(seconds_since(t0)) + " s");
-  const uint32_t tile_factor = 2;  // pictures at half the error resolution, to keep them small
-  const float exposure = auto_exposure(downscale(ref_image, tile_factor));
-  std::vector<Rgb8Image> render_tiles{tone_map(downscale(ref_image, tile_factor), exposure)};
-  std::vector<Rgb8Image> error_tiles{error_map(downscale(ref_image, tile_factor), downscale(ref_image, tile_factor), 1.0f)};
-  json errors = json::object();
-  std::map<std::string, RadianceImage> k1_images;
-  for (const auto& name : config.generators) {
-    const GeneratorRun run = run_generator(device, light, name, config, config.light_vsgls, config.K, 0);
-    const RadianceImage img = shade_camera_view(device, camera, run.generator->vsgls(), run.generator->vsgl_count(),
-                                                config.error_stride);
-    errors[name] = error_json(image_error(img, ref_image));
-    render_tiles.push_back(tone_map(downscale(img, tile_factor), exposure));
-    error_tiles.push_back(error_map(downscale(img, tile_factor), downscale(ref_image, tile_factor), 1.0f));
-    if (is_fis(name)) k1_images[name] = img;
-  }
-  out["reference_error"] = errors;
-  {
-    std::vector<Rgb8Image> tiles = render_tiles;
-    tiles.insert(tiles.end(), error_tiles.begin(), error_tiles.end());
-    std::string order = "reference";
-    for (const auto& g : config.generators) order += ", " + g;
-    result.pictures.push_back({scene + "_renders.png",
-                               "Fig. 5 analog. Top row: " + order +
-                                   " (indirect light, no visibility, one exposure). Bottom row: |dY| / mean Y of the "
-                                   "reference (black 0, red, yellow, white >= 1)",
-                               tile_grid(tiles, static_cast<uint32_t>(render_tiles.size()))});
-  }
-  timings["reference_and_errors"] = seconds_since(t0);
-
-  // ---- 4 + 5: static flicker over offsets, with the K sweep for the FIS generators --------------------
-  t0 = Clock::now();
-  const uint32_t flicker_stride = stride_for_width(capture.gbuffer.width, config.flicker_width);
-  const auto flicker_of = [&](const std::string& name, float K) {
-    FlickerAccumulator acc;
-    for (uint32_t f = 0; f < config.frames; ++f) {
-      const GeneratorRun run = run_generator(device, light, name, config, config.light_vsgls, K, frame_offset_bits(f));
-      acc.add_frame(shade_camera_view(device, camera, run.generator->vsgls(), run.generator->vsgl_count(), flicker_stride),
-                    power_sum(run.vsgls));
+    out["k_sweep"] = sweep;
+    if (!k_tiles.empty()) {
+      std::string ks_text;
+      for (float K : config.k_sweep) ks_text += (ks_text.empty() ? "" : ", ") + k_label(K);
+      result.pictures.push_back({scene + "_k_sweep.png",
+                                 "Fig. 6 analog: one row per FIS generator (fis_tok15, then fis_modified), K = " +
+                                     ks_text + " left to right, same exposure as the renders",
+                                 tile_grid(k_tiles, static_cast<uint32_t>(config.k_sweep.size()))});
     }
-    return json{{"frames", acc.frames()},
-                {"weighted_cv", acc.weighted_cv()},
-                {"power_stdev", acc.power_stdev()},
-                {"power_relative_stdev", acc.power_relative_stdev()}};
-  };
-  json flicker = json::object();
-  for (const auto& name : config.generators) {
-    const auto tg = Clock::now();
-    flicker[name] = flicker_of(name, config.K);
-    say("static flicker " + name + ": " + std::to_string(seconds_since(tg)) + " s");
   }
-  out["flicker_static"] = json{{"image", {shaded_extent(capture.gbuffer.width, flicker_stride),
-                                          shaded_extent(capture.gbuffer.height, flicker_stride)}},
-                               {"gbuffer_stride", flicker_stride},
-                               {"generators", flicker}};
 
-  json sweep = json::object();
-  std::vector<Rgb8Image> k_tiles;
-  for (const auto& name : config.generators) {
-    if (!is_fis(name)) continue;
-    json rows = json::array();
-    for (float K : config.k_sweep) {
-      const auto tg = Clock::now();
-      json row = K == config.K ? flicker[name] : flicker_of(name, K);
-      const GeneratorRun run = run_generator(device, light, name, config, config.light_vsgls, K, 0);
-      const RadianceImage img = K == config.K && k1_images.count(name) > 0
-                                    ? k1_images[name]
-                                    : shade_camera_view(device, camera, run.generator->vsgls(),
-                                                        run.generator->vsgl_count(), config.error_stride);
-      row["K"] = K;
-      row["error"] = error_json(image_error(img, ref_image));
-      row["coverage"] = coverage_with_floor(run.vsgls, light_pdf, floor_light, floor_light_pdf, name, config.light_vsgls, K);
-      row["power"] = power_json(power_metrics(run.vsgls, light_flux));
-      rows.push_back(row);
-      k_tiles.push_back(tone_map(downscale(img, tile_factor), exposure));
-      say("K sweep " + name + " K=" + k_label(K) + ": " + std::to_string(seconds_since(tg)) + " s");
-    }
-    sweep[name] = rows;
-  }
-  out["k_sweep"] = sweep;
-  if (!k_tiles.empty()) {
-    std::string ks_text;
-    for (float K : config.k_sweep) ks_text += (ks_text.empty() ? "" : ", ") + k_label(K);
-    result.pictures.push_back({scene + "_k_sweep.png",
-                               "Fig. 6 analog: one row per FIS generator (fis_tok15, then fis_modified), K = " +
-                                   ks_text + " left to right, same exposure as the renders",
-                               tile_grid(k_tiles, static_cast<uint32_t>(config.k_sweep.size()))});
-  }
-  timings["flicker_and_k_sweep"] = seconds_since(t0);
-
-  // ---- 4b: the animated sequence (moving light and camera), reported separately ---------------------
-  if (config.sequence) {
-    t0 = Clock::now();
+  // 4b: the animated sequence (moving light and camera), reported separately.
+  json animated_sequence() const {
+    const auto t0 = Clock::now();
     const auto frames = sequence_frames(*config.sequence, config.frames);
     std::map<std::string, FlickerAccumulator> acc;
     FlickerAccumulator ref_acc;
@@ -411,7 +375,7 @@ QualityResult run_quality(Device& device, const Capture& capture, const std::fil
       gens[name] = json{{"weighted_cv", acc[name].weighted_cv()},
                         {"error_cv", acc[name].error_cv()},
                         {"power_relative_stdev", acc[name].power_relative_stdev()}};
-    out["flicker_animated"] =
+    const json animated =
         json{{"sequence", config.sequence->string()},
              {"scene", seq_scene},
              {"frames", frames.size()},
@@ -422,8 +386,105 @@ QualityResult run_quality(Device& device, const Capture& capture, const std::fil
              {"note", "light and camera move: weighted_cv includes the true change (compare with the reference's); "
                       "error_cv = sum_p stdev_t(Y - Yref) / sum_p mean_t(Yref) is the change the reference does not have"},
              {"generators", gens}};
-    timings["animated_sequence"] = seconds_since(t0);
     say("animated sequence: " + std::to_string(frames.size()) + " frames in " + std::to_string(seconds_since(t0)) + " s");
+    return animated;
+  }
+};
+
+// Refuses a configuration that cannot run, before any work.
+void check_config(const QualityConfig& config) {
+  if (config.frames < 2) throw InputError("quality: --frames must be at least 2 (flicker compares frames)");
+  if (config.error_stride == 0) throw InputError("quality: the error stride must be at least 1");
+  if (config.generators.empty()) throw InputError("quality: no generators");
+  for (float K : config.k_sweep)
+    if (!(K > 0.0f) || !std::isfinite(K)) throw InputError("quality: every K of the sweep must be positive");
+  for (const auto& g : config.generators) (void)generator_sources(g);  // unknown names fail here, before any work
+}
+
+// What was measured: the schema, the capture with its hashes, the device, the build, the configuration.
+void write_header(json& out, Device& device, const Capture& capture, const std::filesystem::path& capture_dir,
+                  const QualityConfig& config) {
+  out["schema"] = "vsgl-quality";
+  out["schema_version"] = kQualitySchemaVersion;
+  out["scene"] = capture.meta.scene;
+  out["capture"] = json{{"path", capture_dir.string()},
+                        {"gbuffer", {capture.gbuffer.width, capture.gbuffer.height}},
+                        {"rsm", {capture.rsm.width, capture.rsm.height}},
+                        {"hashes", capture_hashes_json(capture)}};
+  out["device"] = json{{"name", device.info().name}, {"driver", device.info().driver_name + " " + device.info().driver_info}};
+  out["build"] = build_json(config.source_dir);
+  std::vector<double> ks(config.k_sweep.begin(), config.k_sweep.end());
+  out["config"] = json{{"generators", config.generators},
+                       {"light_vsgls", config.light_vsgls},
+                       {"camera_vsgls", config.camera_vsgls},
+                       {"K", config.K},
+                       {"bisection_iterations", config.bisection_iterations},
+                       {"kmeans_iterations", config.kmeans_iterations},
+                       {"frames", config.frames},
+                       {"frame_offsets", "offset_bits(f) = bit-reversed f (van der Corput), f = 0..F-1"},
+                       {"error_stride", config.error_stride},
+                       {"flicker_width", config.flicker_width},
+                       {"reference_rsm", config.reference_rsm},
+                       {"sequence_reference_rsm", config.sequence_reference_rsm},
+                       {"k_sweep", ks},
+                       {"power_of_a_vsgl", "Phi.r + Phi.g + Phi.b"},
+                       {"luminance", "Rec. 709"}};
+}
+
+}  // namespace
+
+std::vector<std::filesystem::path> sequence_frames(const std::filesystem::path& dir, uint32_t max_frames) {
+  std::vector<std::filesystem::path> frames;
+  for (uint32_t f = 0; f < max_frames; ++f) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%04u", f);
+    const auto p = dir / name;
+    if (!std::filesystem::exists(p / "capture.json")) break;
+    frames.push_back(p);
+  }
+  if (frames.size() < 2)
+    throw InputError(dir.string() + ": not a recorded sequence (need frame_0000, frame_0001, ... with capture.json; "
+                     "record one with `vsgl-bench record --frames F --out DIR`)");
+  return frames;
+}
+
+QualityResult run_quality(Device& device, const Capture& capture, const std::filesystem::path& capture_dir,
+                          const QualityConfig& config, const std::function<void(const std::string&)>& progress) {
+  check_config(config);
+  const auto t_start = Clock::now();
+  QualityResult result;
+  json& out = result.json;
+  json timings = json::object();
+  write_header(out, device, capture, capture_dir, config);
+
+  const DeviceView camera = upload_view(device, capture, ViewKind::kCamera);
+  const DeviceView light = upload_view(device, capture, ViewKind::kLight);
+  // The lattice floor's input: the same views with the PDF 1 on the texels it weighs (DESIGN.md §11a).
+  const Capture floor_capture{capture.meta, uniform_pdf_view(capture.gbuffer), uniform_pdf_view(capture.rsm)};
+  const DeviceView floor_camera = upload_view(device, floor_capture, ViewKind::kCamera);
+  const DeviceView floor_light = upload_view(device, floor_capture, ViewKind::kLight);
+  const MipPyramid floor_light_pdf = view_data(floor_capture, ViewKind::kLight).pdf;
+  const QualityRun run{device,       capture,      config,      progress,       capture.meta.scene, camera, light,
+                       floor_capture, floor_camera, floor_light, floor_light_pdf};
+
+  MipPyramid light_pdf;
+  auto t0 = Clock::now();
+  out["views"] = run.view_metrics(result, light_pdf);
+  timings["view_metrics"] = seconds_since(t0);
+
+  t0 = Clock::now();
+  const double light_flux = out["views"]["light_view"]["total_flux"].get<double>();
+  const ReferenceShading reference = run.reference_and_errors(result, light_flux);
+  timings["reference_and_errors"] = seconds_since(t0);
+
+  t0 = Clock::now();
+  run.flicker_and_k_sweep(result, reference, light_pdf, light_flux);
+  timings["flicker_and_k_sweep"] = seconds_since(t0);
+
+  if (config.sequence) {
+    t0 = Clock::now();
+    out["flicker_animated"] = run.animated_sequence();
+    timings["animated_sequence"] = seconds_since(t0);
   }
   timings["total"] = seconds_since(t_start);
   out["timings_s"] = timings;

@@ -287,6 +287,29 @@ glm::vec3 fis_power(FisVariant variant, glm::vec3 mean_flux, const FisKernel& ke
   return M * mean_flux / (N * kernel.density);
 }
 
+FisPowerBound fis_power_bound(FisVariant variant, const std::array<MipPyramid, 3>& moments, const SamplePoint& sample,
+                              float level, const FisParams& params, FilterPrecision precision) {
+  const VirtualSquare& sq = moments[0].square;
+  const auto M = static_cast<float>(sq.square_texels());
+  const auto N = static_cast<float>(params.vsgl_count);
+  const float q_top = moments[2].top().w;
+  const glm::vec3 f = glm::vec3(fetch(moments[0], sample.x, level));
+  const glm::vec3 ef = glm::vec3(fetch_error_bound(moments[0], sample.x, level, precision));
+  FisKernel k;
+  k.level = level;
+  FisPowerBound out;
+  if (variant == FisVariant::kTok15) {
+    k.density = sample.pdf;
+    out.bound = M * ef / std::max(N * k.density, params.K);
+  } else {
+    k.density = fetch(moments[2], sample.x, level).w / q_top;
+    const float ep = fetch_error_bound(moments[2], sample.x, level, precision).w / q_top;
+    out.bound = M / (N * k.density) * (ef + glm::abs(f) * (ep / k.density));
+  }
+  out.expected = fis_power(variant, f, k, params, sq);
+  return out;
+}
+
 // ---- the generator -------------------------------------------------------------------------
 
 std::vector<VsglRecord> reference_fis(const std::array<MipPyramid, 3>& moments, FisVariant variant,

@@ -108,6 +108,18 @@ FisKernel fis_kernel(FisVariant variant, const MipPyramid& pdf_pyramid, const Sa
 glm::vec3 fis_power(FisVariant variant, glm::vec3 mean_flux, const FisKernel& kernel, const FisParams& params,
                     const VirtualSquare& square);
 
+// What a device's VSGL at `level` (the level the device chose) for `sample` should carry: the
+// power of the fetches from the CPU's pyramids of M0, M1, M2 (fis_power), and per component how
+// far a device may be from it: the fetches' filter error (fetch_error_bound at `precision`)
+// carried through Eq. 4 (Tok15: M ef / max(N p, K)) or, to first order, Eq. 5 (modified:
+// M / (N p_bar) (ef + |f| ep / p_bar), ep the error of p_bar's own fetch).
+struct FisPowerBound {
+  glm::vec3 expected{0.0f};
+  glm::vec3 bound{0.0f};
+};
+FisPowerBound fis_power_bound(FisVariant variant, const std::array<MipPyramid, 3>& moments, const SamplePoint& sample,
+                              float level, const FisParams& params, FilterPrecision precision);
+
 // The whole generator: N VSGLs from the pyramids of M0, M1, M2 (the PDF is M2's .w). Throws
 // InputError for N = 0, N larger than the texels of nonzero PDF, K <= 0 or not finite, pyramids
 // of different sizes, or an all-zero PDF.

@@ -11,8 +11,11 @@
 #include "harness/vk/buffer.hpp"
 #include "harness/vk/device.hpp"
 #include "harness/core/error.hpp"
+#include "harness/vk/framebuffer.hpp"
+#include "harness/vk/graphics_pipeline.hpp"
 #include "harness/vk/image.hpp"
-#include "harness/vk/shader_registry.hpp"
+#include "harness/vk/render_pass.hpp"
+#include "harness/vk/texture_upload.hpp"
 #include "harness/vk/unique_handle.hpp"
 #include "harness/core/version.hpp"
 #include "harness/capture/view_matrices.hpp"
@@ -48,49 +51,15 @@ VkFormat pick_depth_format(const Device& device) {
   throw DeviceError("device " + device.info().name + " supports no depth attachment format");
 }
 
-UniqueHandle<VkShaderModule> make_module(Device& device, const char* name) {
-  const auto spirv = find_shader(name);
-  VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-  info.codeSize = spirv.size() * sizeof(uint32_t);
-  info.pCode = spirv.data();
-  VkShaderModule module = VK_NULL_HANDLE;
-  VK_CHECK(vkCreateShaderModule(device.get(), &info, nullptr, &module));
-  device.set_name(module, VK_OBJECT_TYPE_SHADER_MODULE, name);
-  return UniqueHandle<VkShaderModule>(device.get(), module, vkDestroyShaderModule);
-}
-
-UniqueHandle<VkRenderPass> make_render_pass(Device& device, VkFormat depth_format) {
-  std::array<VkAttachmentDescription, kTargets + 1> attachments{};
-  for (uint32_t i = 0; i < kTargets; ++i) {
-    attachments[i].format = kColorFormat;
-    attachments[i].samples = VK_SAMPLE_COUNT_1_BIT;
-    attachments[i].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;  // zero = invalid texel
-    attachments[i].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    attachments[i].stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-    attachments[i].stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-    attachments[i].initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    attachments[i].finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-  }
-  auto& depth = attachments[kTargets];
-  depth.format = depth_format;
-  depth.samples = VK_SAMPLE_COUNT_1_BIT;
-  depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-  depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-  depth.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-  depth.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-  depth.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-  depth.finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
-
-  std::array<VkAttachmentReference, kTargets> color_refs{};
-  for (uint32_t i = 0; i < kTargets; ++i) color_refs[i] = {i, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
-  VkAttachmentReference depth_ref{kTargets, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
-  VkSubpassDescription subpass{};
-  subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
-  subpass.colorAttachmentCount = kTargets;
-  subpass.pColorAttachments = color_refs.data();
-  subpass.pDepthStencilAttachment = &depth_ref;
-
-  std::array<VkSubpassDependency, 2> deps{};
+// Five colour targets cleared to zero (= invalid texel) and left for the readback copies; the
+// dependencies order the pass after the previous view's copies and before this view's.
+RenderPass make_render_pass(Device& device, VkFormat depth_format) {
+  RenderPassDesc desc;
+  desc.color_formats.assign(kTargets, kColorFormat);
+  desc.color_final_layout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+  desc.depth_format = depth_format;
+  desc.dependencies.resize(2);
+  auto& deps = desc.dependencies;
   deps[0].srcSubpass = VK_SUBPASS_EXTERNAL;
   deps[0].dstSubpass = 0;
   deps[0].srcStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
@@ -107,18 +76,7 @@ UniqueHandle<VkRenderPass> make_render_pass(Device& device, VkFormat depth_forma
   deps[1].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
   deps[1].dstStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT;
   deps[1].dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
-
-  VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
-  info.attachmentCount = static_cast<uint32_t>(attachments.size());
-  info.pAttachments = attachments.data();
-  info.subpassCount = 1;
-  info.pSubpasses = &subpass;
-  info.dependencyCount = static_cast<uint32_t>(deps.size());
-  info.pDependencies = deps.data();
-  VkRenderPass pass = VK_NULL_HANDLE;
-  VK_CHECK(vkCreateRenderPass(device.get(), &info, nullptr, &pass));
-  device.set_name(pass, VK_OBJECT_TYPE_RENDER_PASS, "recorder.render_pass");
-  return UniqueHandle<VkRenderPass>(device.get(), pass, vkDestroyRenderPass);
+  return RenderPass(device, desc, "recorder.render_pass");
 }
 
 UniqueHandle<VkDescriptorSetLayout> make_material_set_layout(Device& device) {
@@ -150,22 +108,12 @@ UniqueHandle<VkPipelineLayout> make_pipeline_layout(Device& device, VkDescriptor
 
 // cull_mode: back faces culled for one-sided surfaces (rooms face inward), none for glTF's
 // double-sided materials.
-UniqueHandle<VkPipeline> make_pipeline(Device& device, VkRenderPass pass, VkPipelineLayout layout,
-                                       VkCullModeFlags cull_mode) {
-  auto vert = make_module(device, "scene.vert");
-  auto frag = make_module(device, "capture.frag");
-  std::array<VkPipelineShaderStageCreateInfo, 2> stages{};
-  stages[0] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
-  stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
-  stages[0].module = vert.get();
-  stages[0].pName = "main";
-  stages[1] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
-  stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
-  stages[1].module = frag.get();
-  stages[1].pName = "main";
-
-  VkVertexInputBindingDescription binding{0, sizeof(SceneVertex), VK_VERTEX_INPUT_RATE_VERTEX};
-  const std::array<VkVertexInputAttributeDescription, 7> attrs{{
+GraphicsPipeline make_pipeline(Device& device, VkRenderPass pass, VkPipelineLayout layout, VkCullModeFlags cull_mode) {
+  GraphicsPipelineDesc desc;
+  desc.vertex_shader = "scene.vert";
+  desc.fragment_shader = "capture.frag";
+  desc.vertex_binding = {0, sizeof(SceneVertex), VK_VERTEX_INPUT_RATE_VERTEX};
+  desc.vertex_attributes = {
       {0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(SceneVertex, position)},
       {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(SceneVertex, normal)},
       {2, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(SceneVertex, diffuse)},
@@ -173,59 +121,14 @@ UniqueHandle<VkPipeline> make_pipeline(Device& device, VkRenderPass pass, VkPipe
       {4, 0, VK_FORMAT_R32_SFLOAT, offsetof(SceneVertex, roughness)},
       {5, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(SceneVertex, uv)},
       {6, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(SceneVertex, tangent)},
-  }};
-  VkPipelineVertexInputStateCreateInfo vertex_input{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
-  vertex_input.vertexBindingDescriptionCount = 1;
-  vertex_input.pVertexBindingDescriptions = &binding;
-  vertex_input.vertexAttributeDescriptionCount = static_cast<uint32_t>(attrs.size());
-  vertex_input.pVertexAttributeDescriptions = attrs.data();
-
-  VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
-  assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
-  VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
-  viewport.viewportCount = 1;
-  viewport.scissorCount = 1;
-  VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
-  raster.polygonMode = VK_POLYGON_MODE_FILL;
-  raster.cullMode = cull_mode;
-  raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
-  raster.lineWidth = 1.0f;
-  VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
-  multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
-  VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
-  depth.depthTestEnable = VK_TRUE;
-  depth.depthWriteEnable = VK_TRUE;
-  depth.depthCompareOp = VK_COMPARE_OP_LESS;
-  std::array<VkPipelineColorBlendAttachmentState, kTargets> blend{};
-  for (auto& b : blend)
-    b.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
-                       VK_COLOR_COMPONENT_A_BIT;
-  VkPipelineColorBlendStateCreateInfo color{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
-  color.attachmentCount = kTargets;
-  color.pAttachments = blend.data();
-  const std::array<VkDynamicState, 2> dynamic_states{VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
-  VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
-  dynamic.dynamicStateCount = static_cast<uint32_t>(dynamic_states.size());
-  dynamic.pDynamicStates = dynamic_states.data();
-
-  VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
-  info.stageCount = static_cast<uint32_t>(stages.size());
-  info.pStages = stages.data();
-  info.pVertexInputState = &vertex_input;
-  info.pInputAssemblyState = &assembly;
-  info.pViewportState = &viewport;
-  info.pRasterizationState = &raster;
-  info.pMultisampleState = &multisample;
-  info.pDepthStencilState = &depth;
-  info.pColorBlendState = &color;
-  info.pDynamicState = &dynamic;
-  info.layout = layout;
-  info.renderPass = pass;
-  VkPipeline pipeline = VK_NULL_HANDLE;
-  VK_CHECK(vkCreateGraphicsPipelines(device.get(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
-  device.set_name(pipeline, VK_OBJECT_TYPE_PIPELINE,
-                  cull_mode == VK_CULL_MODE_NONE ? "recorder.pipeline.double_sided" : "recorder.pipeline");
-  return UniqueHandle<VkPipeline>(device.get(), pipeline, vkDestroyPipeline);
+  };
+  desc.cull_mode = cull_mode;
+  desc.front_face = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+  desc.color_attachments = kTargets;
+  desc.layout = layout;
+  desc.render_pass = pass;
+  return GraphicsPipeline(device, desc,
+                          cull_mode == VK_CULL_MODE_NONE ? "recorder.pipeline.double_sided" : "recorder.pipeline");
 }
 
 // Target t's four RGBA components go to these capture channels (-1: dropped).
@@ -247,7 +150,7 @@ struct DrawGroup {
 
 struct Texture {
   Image2D image;
-  UniqueHandle<VkSampler> sampler;
+  Sampler sampler;
 };
 
 // Everything the two views draw with: vertices, indices grouped by material, the textures with
@@ -285,57 +188,14 @@ VkFormat texture_format(Device& device, const TextureImage& tex) {
 // device) and leaves it in SHADER_READ_ONLY_OPTIMAL for the fragment shader.
 Texture upload_texture(Device& device, const TextureImage& tex, const std::string& name) {
   const std::vector<MipLevel> levels = build_mip_chain(tex);
-  const VkFormat format = texture_format(device, tex);
-  const std::size_t texel_bytes = tex.rgba8.empty() ? 4 * sizeof(float) : 4;
-  std::vector<VkDeviceSize> offsets;
-  VkDeviceSize total = 0;
+  std::vector<TextureLevel> texels;
   for (const MipLevel& level : levels) {
-    offsets.push_back(total);
-    total += VkDeviceSize{level.width} * level.height * texel_bytes;
-    total = (total + 15) & ~VkDeviceSize{15};  // keeps every level at a multiple of the texel size
+    if (tex.rgba8.empty())
+      texels.push_back({level.width, level.height, level.rgba32f.data(), level.rgba32f.size() * sizeof(float)});
+    else
+      texels.push_back({level.width, level.height, level.rgba8.data(), level.rgba8.size()});
   }
-  Buffer staging(device, total, MemoryUsage::kUpload, name + ".staging");
-  for (std::size_t l = 0; l < levels.size(); ++l) {
-    auto* dst = static_cast<unsigned char*>(staging.mapped()) + offsets[l];
-    if (tex.rgba8.empty()) {
-      std::memcpy(dst, levels[l].rgba32f.data(), levels[l].rgba32f.size() * sizeof(float));
-    } else {
-      std::memcpy(dst, levels[l].rgba8.data(), levels[l].rgba8.size());
-    }
-  }
-  const auto mip_count = static_cast<uint32_t>(levels.size());
-  Texture out{Image2D(device, tex.width, tex.height, format, VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
-                      VK_IMAGE_ASPECT_COLOR_BIT, name, mip_count),
-              {}};
-  device.submit_and_wait(
-      [&](VkCommandBuffer cmd) {
-        VkImageMemoryBarrier to_dst{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
-        to_dst.srcAccessMask = 0;
-        to_dst.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-        to_dst.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-        to_dst.newLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
-        to_dst.srcQueueFamilyIndex = to_dst.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-        to_dst.image = out.image.get();
-        to_dst.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, mip_count, 0, 1};
-        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0,
-                             nullptr, 1, &to_dst);
-        std::vector<VkBufferImageCopy> regions(levels.size());
-        for (uint32_t l = 0; l < mip_count; ++l) {
-          regions[l].bufferOffset = offsets[l];
-          regions[l].imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, l, 0, 1};
-          regions[l].imageExtent = {levels[l].width, levels[l].height, 1};
-        }
-        vkCmdCopyBufferToImage(cmd, staging.get(), out.image.get(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, mip_count,
-                               regions.data());
-        VkImageMemoryBarrier to_read = to_dst;
-        to_read.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-        to_read.dstAccessMask = VK_ACCESS_SHADER_READ_BIT;
-        to_read.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
-        to_read.newLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0, 0, nullptr,
-                             0, nullptr, 1, &to_read);
-      },
-      "upload texture " + name);
+  Image2D image = upload_texture_levels(device, texture_format(device, tex), texels, name);
 
   VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
   info.magFilter = VK_FILTER_LINEAR;
@@ -345,12 +205,8 @@ Texture upload_texture(Device& device, const TextureImage& tex, const std::strin
   info.addressModeV = address_mode(tex.wrap_v);
   info.addressModeW = VK_SAMPLER_ADDRESS_MODE_REPEAT;
   info.minLod = 0.0f;
-  info.maxLod = static_cast<float>(mip_count);
-  VkSampler sampler = VK_NULL_HANDLE;
-  VK_CHECK(vkCreateSampler(device.get(), &info, nullptr, &sampler));
-  device.set_name(sampler, VK_OBJECT_TYPE_SAMPLER, name + ".sampler");
-  out.sampler = UniqueHandle<VkSampler>(device.get(), sampler, vkDestroySampler);
-  return out;
+  info.maxLod = static_cast<float>(levels.size());
+  return Texture{std::move(image), Sampler(device, info, name + ".sampler")};
 }
 
 std::string material_label(const Scene& scene, uint32_t m) {
@@ -392,61 +248,31 @@ MaterialBlock material_block(const Material& m) {
   return b;
 }
 
-SceneResources upload_scene(Device& device, const Scene& scene, VkDescriptorSetLayout set_layout) {
+// Triangles grouped by material, each group in the scene's order (a stable partition): a
+// scene without materials is one draw of its indices exactly as given.
+std::vector<uint32_t> group_by_material(const Scene& scene, std::vector<DrawGroup>& groups) {
   const SceneMesh& mesh = scene.mesh;
-  if (mesh.vertices.empty() || mesh.indices.empty())
-    throw InputError("scene '" + scene.name + "' has no triangles");
-  if (mesh.indices.size() % 3 != 0)
-    throw InputError("scene '" + scene.name + "': " + std::to_string(mesh.indices.size()) +
-                     " indices are not a whole number of triangles");
-  check_scene_references(scene);
-
-  // Triangles grouped by material, each group in the scene's order (a stable partition): a
-  // scene without materials is one draw of its indices exactly as given.
   const auto triangle_material = [&](std::size_t t) { return mesh.vertices[mesh.indices[3 * t]].material; };
   std::map<uint32_t, std::vector<uint32_t>> by_material;  // kNoMaterial sorts last
   for (std::size_t t = 0; t < mesh.indices.size() / 3; ++t) by_material[triangle_material(t)].push_back(static_cast<uint32_t>(t));
-  SceneResources out;
   std::vector<uint32_t> indices;
   indices.reserve(mesh.indices.size());
   for (const auto& [material, triangles] : by_material) {
     const auto first = static_cast<uint32_t>(indices.size());
     for (uint32_t t : triangles) indices.insert(indices.end(), &mesh.indices[3 * t], &mesh.indices[3 * t] + 3);
     const bool has = material != kNoMaterial;
-    out.groups.push_back(DrawGroup{first, static_cast<uint32_t>(indices.size()) - first, has ? material + 1 : 0u,
-                                   has && scene.materials[material].double_sided});
+    groups.push_back(DrawGroup{first, static_cast<uint32_t>(indices.size()) - first, has ? material + 1 : 0u,
+                               has && scene.materials[material].double_sided});
   }
-  out.vertices = Buffer(device, mesh.vertices.size() * sizeof(SceneVertex), MemoryUsage::kDeviceLocal,
-                        "recorder.vertices", VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
-  out.indices = Buffer(device, indices.size() * sizeof(uint32_t), MemoryUsage::kDeviceLocal, "recorder.indices",
-                       VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
-  upload(device, out.vertices, mesh.vertices.data(), out.vertices.size());
-  upload(device, out.indices, indices.data(), out.indices.size());
+  return indices;
+}
 
-  for (std::size_t t = 0; t < scene.textures.size(); ++t)
-    out.textures.push_back(upload_texture(device, scene.textures[t], "recorder.texture" + std::to_string(t)));
-  TextureImage white;
-  white.name = "white";
-  white.width = white.height = 1;
-  white.rgba8 = {255, 255, 255, 255};
-  out.textures.push_back(upload_texture(device, white, "recorder.texture.white"));
-  const Texture& unbound = out.textures.back();
-
-  // Set 0 draws the material-less vertices (constants); set m + 1 material m.
+// One descriptor set per material (set 0: the constants), each binding its MaterialBlock at
+// `stride` * set and its maps, the white texture (the last) where a map is unbound.
+void allocate_material_sets(Device& device, SceneResources& out, const Scene& scene, VkDescriptorSetLayout set_layout,
+                            VkDeviceSize stride) {
   const auto set_count = static_cast<uint32_t>(scene.materials.size() + 1);
-  VkPhysicalDeviceProperties props{};
-  vkGetPhysicalDeviceProperties(device.physical(), &props);
-  const VkDeviceSize align = std::max<VkDeviceSize>(props.limits.minUniformBufferOffsetAlignment, sizeof(MaterialBlock));
-  const VkDeviceSize stride = (sizeof(MaterialBlock) + align - 1) / align * align;
-  std::vector<unsigned char> blocks(static_cast<std::size_t>(stride * set_count), 0);
-  for (uint32_t m = 0; m < scene.materials.size(); ++m) {
-    const MaterialBlock b = material_block(scene.materials[m]);
-    std::memcpy(blocks.data() + stride * (m + 1), &b, sizeof b);
-  }
-  out.materials = Buffer(device, blocks.size(), MemoryUsage::kDeviceLocal, "recorder.materials",
-                         VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
-  upload(device, out.materials, blocks.data(), blocks.size());
-
+  const Texture& unbound = out.textures.back();
   const std::array<VkDescriptorPoolSize, 2> sizes{{
       {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, set_count},
       {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, set_count * kMapBindings},
@@ -496,15 +322,69 @@ SceneResources upload_scene(Device& device, const Scene& scene, VkDescriptorSetL
     }
     vkUpdateDescriptorSets(device.get(), static_cast<uint32_t>(writes.size()), writes.data(), 0, nullptr);
   }
+}
+
+SceneResources upload_scene(Device& device, const Scene& scene, VkDescriptorSetLayout set_layout) {
+  const SceneMesh& mesh = scene.mesh;
+  if (mesh.vertices.empty() || mesh.indices.empty())
+    throw InputError("scene '" + scene.name + "' has no triangles");
+  if (mesh.indices.size() % 3 != 0)
+    throw InputError("scene '" + scene.name + "': " + std::to_string(mesh.indices.size()) +
+                     " indices are not a whole number of triangles");
+  check_scene_references(scene);
+
+  SceneResources out;
+  const std::vector<uint32_t> indices = group_by_material(scene, out.groups);
+  out.vertices = Buffer(device, mesh.vertices.size() * sizeof(SceneVertex), MemoryUsage::kDeviceLocal,
+                        "recorder.vertices", VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+  out.indices = Buffer(device, indices.size() * sizeof(uint32_t), MemoryUsage::kDeviceLocal, "recorder.indices",
+                       VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+  upload(device, out.vertices, mesh.vertices.data(), out.vertices.size());
+  upload(device, out.indices, indices.data(), out.indices.size());
+
+  for (std::size_t t = 0; t < scene.textures.size(); ++t)
+    out.textures.push_back(upload_texture(device, scene.textures[t], "recorder.texture" + std::to_string(t)));
+  TextureImage white;
+  white.name = "white";
+  white.width = white.height = 1;
+  white.rgba8 = {255, 255, 255, 255};
+  out.textures.push_back(upload_texture(device, white, "recorder.texture.white"));
+
+  // Set 0 draws the material-less vertices (constants); set m + 1 material m.
+  const auto set_count = static_cast<uint32_t>(scene.materials.size() + 1);
+  VkPhysicalDeviceProperties props{};
+  vkGetPhysicalDeviceProperties(device.physical(), &props);
+  const VkDeviceSize align = std::max<VkDeviceSize>(props.limits.minUniformBufferOffsetAlignment, sizeof(MaterialBlock));
+  const VkDeviceSize stride = (sizeof(MaterialBlock) + align - 1) / align * align;
+  std::vector<unsigned char> blocks(static_cast<std::size_t>(stride * set_count), 0);
+  for (uint32_t m = 0; m < scene.materials.size(); ++m) {
+    const MaterialBlock b = material_block(scene.materials[m]);
+    std::memcpy(blocks.data() + stride * (m + 1), &b, sizeof b);
+  }
+  out.materials = Buffer(device, blocks.size(), MemoryUsage::kDeviceLocal, "recorder.materials",
+                         VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+  upload(device, out.materials, blocks.data(), blocks.size());
+
+  allocate_material_sets(device, out, scene, set_layout, stride);
   return out;
 }
 
 struct RasterState {
   UniqueHandle<VkDescriptorSetLayout> set_layout;
   UniqueHandle<VkPipelineLayout> layout;
-  UniqueHandle<VkPipeline> one_sided;
-  UniqueHandle<VkPipeline> double_sided;
+  GraphicsPipeline one_sided;
+  GraphicsPipeline double_sided;
 };
+
+RasterState make_raster_state(Device& device, VkRenderPass pass) {
+  auto set_layout = make_material_set_layout(device);
+  auto layout = make_pipeline_layout(device, set_layout.get());
+  // Surfaces are seen from their normal side only (rooms face inward): cull what faces away,
+  // except for glTF's double-sided materials.
+  GraphicsPipeline one_sided = make_pipeline(device, pass, layout.get(), VK_CULL_MODE_BACK_BIT);
+  GraphicsPipeline double_sided = make_pipeline(device, pass, layout.get(), VK_CULL_MODE_NONE);
+  return RasterState{std::move(set_layout), std::move(layout), std::move(one_sided), std::move(double_sided)};
+}
 
 ViewImage render_view(Device& device, VkRenderPass pass, const RasterState& pipeline, VkFormat depth_format,
                       const SceneResources& mesh, ViewKind kind, uint32_t width, uint32_t height,
@@ -519,19 +399,10 @@ ViewImage render_view(Device& device, VkRenderPass pass, const RasterState& pipe
   Image2D depth(device, width, height, depth_format, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
                 VK_IMAGE_ASPECT_DEPTH_BIT, "recorder." + label + ".depth");
 
-  std::array<VkImageView, kTargets + 1> views{};
+  std::vector<VkImageView> views(kTargets + 1);
   for (uint32_t t = 0; t < kTargets; ++t) views[t] = targets[t].view();
   views[kTargets] = depth.view();
-  VkFramebufferCreateInfo fb_info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
-  fb_info.renderPass = pass;
-  fb_info.attachmentCount = static_cast<uint32_t>(views.size());
-  fb_info.pAttachments = views.data();
-  fb_info.width = width;
-  fb_info.height = height;
-  fb_info.layers = 1;
-  VkFramebuffer fb = VK_NULL_HANDLE;
-  VK_CHECK(vkCreateFramebuffer(device.get(), &fb_info, nullptr, &fb));
-  UniqueHandle<VkFramebuffer> framebuffer(device.get(), fb, vkDestroyFramebuffer);
+  const Framebuffer framebuffer(device, pass, views, width, height, "recorder." + label + ".framebuffer");
 
   const VkDeviceSize target_bytes = VkDeviceSize{width} * height * 4 * sizeof(float);
   std::vector<Buffer> readback;
@@ -546,7 +417,7 @@ ViewImage render_view(Device& device, VkRenderPass pass, const RasterState& pipe
         clears[kTargets].depthStencil = {1.0f, 0};
         VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
         begin.renderPass = pass;
-        begin.framebuffer = fb;
+        begin.framebuffer = framebuffer.get();
         begin.renderArea = {{0, 0}, {width, height}};
         begin.clearValueCount = static_cast<uint32_t>(clears.size());
         begin.pClearValues = clears.data();
@@ -619,14 +490,8 @@ Capture CaptureRecorder::record(const Scene& scene, const RecordSizes& sizes, ui
   check_size("G-buffer", sizes.gbuffer_width, sizes.gbuffer_height, device_.info());
   check_size("RSM", sizes.rsm_size, sizes.rsm_size, device_.info());
   const VkFormat depth_format = pick_depth_format(device_);
-  auto pass = make_render_pass(device_, depth_format);
-  RasterState pipeline;
-  pipeline.set_layout = make_material_set_layout(device_);
-  pipeline.layout = make_pipeline_layout(device_, pipeline.set_layout.get());
-  // Surfaces are seen from their normal side only (rooms face inward): cull what faces away,
-  // except for glTF's double-sided materials.
-  pipeline.one_sided = make_pipeline(device_, pass.get(), pipeline.layout.get(), VK_CULL_MODE_BACK_BIT);
-  pipeline.double_sided = make_pipeline(device_, pass.get(), pipeline.layout.get(), VK_CULL_MODE_NONE);
+  const RenderPass pass = make_render_pass(device_, depth_format);
+  const RasterState pipeline = make_raster_state(device_, pass.get());
   const SceneResources mesh = upload_scene(device_, scene, pipeline.set_layout.get());
 
   Capture capture;

@@ -286,10 +286,6 @@ class ViewVerifier {
   void check_generator_texture(std::vector<CheckResult>& out, FisVariant variant, const GpuRun& gpu,
                                const std::array<MipPyramid, 3>& chain, const std::vector<SamplePoint>& samples) const {
     CheckResult r = result(labelled(fis_variant_name(variant)), "vsgls");
-    const VirtualSquare& sq = view_.square;
-    const auto M = static_cast<float>(sq.square_texels());
-    const auto N = static_cast<float>(params_.vsgl_count);
-    const float q_top = chain[2].top().w;
     const auto cpu_generator = reference_fis(chain, variant, params_);
     double worst_ratio = 0, worst_rel = 0, worst_level = 0;
     uint32_t excused_count = 0;
@@ -299,21 +295,7 @@ class ViewVerifier {
         continue;
       }
       const float l = gpu.vsgls[i].axis_level.w;
-      const glm::vec2 x = samples[i].x;
-      const glm::vec3 f = glm::vec3(fetch(chain[0], x, l));
-      const glm::vec3 ef = glm::vec3(fetch_error_bound(chain[0], x, l, precision_));
-      FisKernel k;
-      k.level = l;
-      glm::vec3 bound;
-      if (variant == FisVariant::kTok15) {
-        k.density = samples[i].pdf;
-        bound = M * ef / std::max(N * k.density, params_.K);
-      } else {
-        k.density = fetch(chain[2], x, l).w / q_top;
-        const float ep = fetch_error_bound(chain[2], x, l, precision_).w / q_top;
-        bound = M / (N * k.density) * (ef + glm::abs(f) * (ep / k.density));
-      }
-      const glm::vec3 expected = fis_power(variant, f, k, params_, sq);
+      const auto [expected, bound] = fis_power_bound(variant, chain, samples[i], l, params_, precision_);
       const glm::vec3 got = gpu.vsgls[i].power();
       const double scale = double{std::max({std::abs(expected.r), std::abs(expected.g), std::abs(expected.b)})} + 1e-30;
       for (int c = 0; c < 3; ++c) {

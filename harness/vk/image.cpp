@@ -32,7 +32,7 @@ VkImage create_bound_image(Device& device, VkImageCreateInfo info, const std::st
 
 Image2D::Image2D(Device& device, uint32_t width, uint32_t height, VkFormat format, VkImageUsageFlags usage,
                  VkImageAspectFlags aspect, const std::string& name, uint32_t mip_levels)
-    : format_(format), width_(width), height_(height), mip_levels_(mip_levels) {
+    : format_(format), aspect_(aspect), width_(width), height_(height), mip_levels_(mip_levels) {
   VkDevice dev = device.get();
   VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
   info.format = format;
@@ -113,23 +113,36 @@ VkFormatFeatureFlags optimal_format_features(const Device& device, VkFormat form
   return props.optimalTilingFeatures;
 }
 
-void MipImage::change_layouts(VkCommandBuffer cmd, const std::vector<LevelLayout>& changes,
-                              VkPipelineStageFlags src_stages, VkAccessFlags src_access,
-                              VkPipelineStageFlags dst_stages, VkAccessFlags dst_access) const {
+void change_image_layouts(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, uint32_t layers,
+                          const std::vector<ImageLevelLayout>& changes, VkPipelineStageFlags src_stages,
+                          VkAccessFlags src_access, VkPipelineStageFlags dst_stages, VkAccessFlags dst_access) {
   std::vector<VkImageMemoryBarrier> barriers;
-  for (const LevelLayout& c : changes) {
+  for (const ImageLevelLayout& c : changes) {
     VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
     b.srcAccessMask = src_access;
     b.dstAccessMask = dst_access;
     b.oldLayout = c.from;
     b.newLayout = c.to;
     b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    b.image = image_.get();
-    b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, c.base, c.count, 0, layers_};
+    b.image = image;
+    b.subresourceRange = {aspect, c.base, c.count, 0, layers};
     barriers.push_back(b);
   }
   vkCmdPipelineBarrier(cmd, src_stages, dst_stages, 0, 0, nullptr, 0, nullptr, static_cast<uint32_t>(barriers.size()),
                        barriers.data());
+}
+
+void MipImage::change_layouts(VkCommandBuffer cmd, const std::vector<LevelLayout>& changes,
+                              VkPipelineStageFlags src_stages, VkAccessFlags src_access,
+                              VkPipelineStageFlags dst_stages, VkAccessFlags dst_access) const {
+  change_image_layouts(cmd, image_.get(), VK_IMAGE_ASPECT_COLOR_BIT, layers_, changes, src_stages, src_access,
+                       dst_stages, dst_access);
+}
+
+void Image2D::change_layouts(VkCommandBuffer cmd, const std::vector<ImageLevelLayout>& changes,
+                             VkPipelineStageFlags src_stages, VkAccessFlags src_access,
+                             VkPipelineStageFlags dst_stages, VkAccessFlags dst_access) const {
+  change_image_layouts(cmd, image_.get(), aspect_, 1, changes, src_stages, src_access, dst_stages, dst_access);
 }
 
 }  // namespace vsgl

@@ -12,12 +12,28 @@ namespace vsgl {
 
 class Device;
 
+// Levels [base, base + count) of every layer of an image, from one layout to another.
+struct ImageLevelLayout {
+  uint32_t base, count;
+  VkImageLayout from, to;
+};
+
+// One vkCmdPipelineBarrier with an image barrier per entry over `layers` array layers of `aspect`;
+// the contents are kept.
+void change_image_layouts(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, uint32_t layers,
+                          const std::vector<ImageLevelLayout>& changes, VkPipelineStageFlags src_stages,
+                          VkAccessFlags src_access, VkPipelineStageFlags dst_stages, VkAccessFlags dst_access);
+
 class Image2D {
  public:
   Image2D(Device& device, uint32_t width, uint32_t height, VkFormat format, VkImageUsageFlags usage,
           VkImageAspectFlags aspect, const std::string& name, uint32_t mip_levels = 1);
   Image2D(Image2D&&) noexcept = default;
   Image2D& operator=(Image2D&&) noexcept = default;
+
+  // Levels of the image from one layout to another (change_image_layouts).
+  void change_layouts(VkCommandBuffer cmd, const std::vector<ImageLevelLayout>& changes, VkPipelineStageFlags src_stages,
+                      VkAccessFlags src_access, VkPipelineStageFlags dst_stages, VkAccessFlags dst_access) const;
 
   VkImage get() const { return image_.get(); }
   VkImageView view() const { return view_.get(); }
@@ -32,6 +48,7 @@ class Image2D {
   UniqueHandle<VkImage> image_;
   UniqueHandle<VkImageView> view_;
   VkFormat format_;
+  VkImageAspectFlags aspect_;
   uint32_t width_, height_, mip_levels_;
 };
 
@@ -48,10 +65,7 @@ namespace vsgl {
 class MipImage {
  public:
   // Levels [base, base + count) of every layer, from one layout to another.
-  struct LevelLayout {
-    uint32_t base, count;
-    VkImageLayout from, to;
-  };
+  using LevelLayout = ImageLevelLayout;
   // One vkCmdPipelineBarrier with an image barrier per entry; the contents are kept.
   void change_layouts(VkCommandBuffer cmd, const std::vector<LevelLayout>& changes, VkPipelineStageFlags src_stages,
                       VkAccessFlags src_access, VkPipelineStageFlags dst_stages, VkAccessFlags dst_access) const;

@@ -171,14 +171,19 @@ FisGenerator::FisGenerator(Device& device, const DeviceView& view, FisVariant va
   }
 }
 
+// The paper's three passes, in order (DESIGN.md §7): the moments of every texel, their mip
+// pyramid, and one thread per VSGL sampling and filtering it.
+const std::vector<VsglGenerator::Phase<FisGenerator>>& FisGenerator::phase_list() {
+  static const std::vector<Phase<FisGenerator>> phases{
+      {"additional", &FisGenerator::record_additional},
+      {"mipmapping", &FisGenerator::record_mipmapping},
+      {"filtered_sampling", &FisGenerator::record_filtered_sampling},
+  };
+  return phases;
+}
+
 void FisGenerator::record(CommandStream& stream, const std::function<void(VkCommandBuffer)>& boundary) {
-  boundary(stream.get());
-  record_additional(stream);
-  boundary(stream.get());
-  record_mipmapping(stream);
-  boundary(stream.get());
-  record_filtered_sampling(stream);
-  boundary(stream.get());
+  record_phases(*this, stream, boundary, phase_list());
 }
 
 // Moment layers of every texel into pyramid level 0 (DESIGN.md §4, §7); only in-bounds texels.

@@ -64,7 +64,7 @@ class FisGenerator : public VsglGenerator {
   FisGenerator(Device& device, const DeviceView& view, FisVariant variant, const FisParams& params);
 
   std::string name() const override { return fis_variant_name(variant_); }
-  std::vector<std::string> phases() const override { return {"additional", "mipmapping", "filtered_sampling"}; }
+  std::vector<std::string> phases() const override { return phase_names(phase_list()); }
   void record(CommandStream& stream, const std::function<void(VkCommandBuffer)>& boundary) override;
   const Buffer& vsgls() const override { return vsgls_; }
   uint32_t vsgl_count() const override { return params_.vsgl_count; }
@@ -79,6 +79,7 @@ class FisGenerator : public VsglGenerator {
   void record_mipmapping(CommandStream& stream);
 
  private:
+  static const std::vector<Phase<FisGenerator>>& phase_list();
   void record_additional(CommandStream& stream);
   void record_filtered_sampling(CommandStream& stream);
 

@@ -178,14 +178,19 @@ void KmeansGenerator::dispatch_flat(CommandStream& stream, const ComputePipeline
   stream.dispatch(pipeline, set, push, gx, div_up(std::max(groups, 1u), gx));
 }
 
+// The paper's k-means baseline, in order: cluster assignment (seeding and Lloyd iterations), the
+// sort of the texels by cluster, and the per-cluster sums that are the VSGLs.
+const std::vector<VsglGenerator::Phase<KmeansGenerator>>& KmeansGenerator::phase_list() {
+  static const std::vector<Phase<KmeansGenerator>> phases{
+      {"cluster_assignment", &KmeansGenerator::record_cluster_assignment},
+      {"sort", &KmeansGenerator::record_sort},
+      {"sum", &KmeansGenerator::record_sum},
+  };
+  return phases;
+}
+
 void KmeansGenerator::record(CommandStream& stream, const std::function<void(VkCommandBuffer)>& boundary) {
-  boundary(stream.get());
-  record_cluster_assignment(stream);
-  boundary(stream.get());
-  record_sort(stream);
-  boundary(stream.get());
-  record_sum(stream);
-  boundary(stream.get());
+  record_phases(*this, stream, boundary, phase_list());
 }
 
 // Seeding, then I Lloyd iterations (assign -> sort by cluster -> centre update), then the final

@@ -27,7 +27,7 @@ class KmeansGenerator : public VsglGenerator {
   KmeansGenerator(Device& device, const DeviceView& view, KmeansSpace space, const KmeansParams& params);
 
   std::string name() const override { return kmeans_generator_name(space_, params_.segmented_sum); }
-  std::vector<std::string> phases() const override { return {"cluster_assignment", "sort", "sum"}; }
+  std::vector<std::string> phases() const override { return phase_names(phase_list()); }
   void record(CommandStream& stream, const std::function<void(VkCommandBuffer)>& boundary) override;
   const Buffer& vsgls() const override { return vsgls_; }
   uint32_t vsgl_count() const override { return params_.vsgl_count; }
@@ -54,6 +54,7 @@ class KmeansGenerator : public VsglGenerator {
   static ScanPlan plan_scan(uint32_t offset, uint32_t count);
 
   // Phases.
+  static const std::vector<Phase<KmeansGenerator>>& phase_list();
   void record_cluster_assignment(CommandStream& stream);
   void record_sort(CommandStream& stream);
   void record_sum(CommandStream& stream);
