@@ -1,7 +1,7 @@
 // Every generator (all of generator_names(), both views of the tiny scene) once under the Khronos
 // validation layer's GPU-assisted mode (VK_VALIDATION_FEATURE_ENABLE_GPU_ASSISTED_EXT): the layer
 // instruments every shader so that an out-of-bounds or uninitialized descriptor access on the
-// device becomes a validation error (issue 12). A positive control first provokes one, so that
+// device becomes a validation error. A positive control first provokes one, so that
 // the test proves the mode works on this driver; where the layer cannot set GPU-assisted
 // validation up on the driver, the test is skipped with the layer's own message.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The GPU side of the quality metrics (issue 8): the flicker of a generator that ignores the
+// The GPU side of the quality metrics: the flicker of a generator that ignores the
 // lattice offset is exactly zero through the real generator -> shading -> accumulator path (and a
 // FIS generator's is not), and the VPL reference rendering equals a brute-force CPU sum of point
 // VPLs on the tiny capture.

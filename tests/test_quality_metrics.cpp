@@ -1,4 +1,4 @@
-// The quality metrics (issue 8) on inputs with known answers, CPU only: footprint coverage of
+// The quality metrics on inputs with known answers, CPU only: footprint coverage of
 // hand-made kernel sets, a uniform PDF with N = M and K = 1, a high-frequency checkerboard PDF
 // where Tok15's level choice gives kernels far from the K/N mass and the modified choice does
 // not, the flicker accumulator, power and image-error metrics.
@@ -162,7 +162,7 @@ TEST(QualityCoverage, CheckerboardPdfTok15FarFromTargetModifiedOnIt) {
   EXPECT_LT(m.gap + m.overlap, t.gap + t.overlap);
 }
 
-// ---- issue 15: the Eq. 3 footprint, the lattice floor, the PDF's frequency content -----------
+// ---- the Eq. 3 footprint, the lattice floor, the PDF's frequency content -----------
 
 // A flat light view (RSM) W x H: valid inside `valid`, PDF q(x, y) (0 where invalid), uniform flux.
 ViewImage synthetic_rsm(uint32_t w, uint32_t h, const std::function<bool(uint32_t, uint32_t)>& valid,

@@ -45,7 +45,7 @@ class TimestampPoolTest : public GpuTest {};
 // resolves timestamps lazily (lavapipe reads the clock at its next flush) shifts every phase's time
 // onto a neighbour unless the pool orders the write on both sides; this test catches either shift.
 //
-// Noise cannot fail it (issue 12): noise only ever adds time to a phase, so each phase is judged
+// Noise cannot fail it: noise only ever adds time to a phase, so each phase is judged
 // by its best (minimum) of several trials, and the heavy phase is first grown until it is 64x
 // either light one, leaving a margin of 8x for the verdict. A shifted phase is not noise: it
 // moves the heavy work into a light interval in every trial, so the light phase's minimum grows

@@ -1,5 +1,5 @@
 // Measures whether the capture loader should call OpenEXR's checkOpenEXRFile (ImfCheckFile.h)
-// before reading an EXR (issue 12): its cost on a full-size view, and what it catches that
+// before reading an EXR: its cost on a full-size view, and what it catches that
 // harness/exr_io.cpp read_exr does not, over a corpus of fuzzed capture inputs.
 // Usage: measure_check_file [CORPUS_DIR...]   (inputs as fuzz_capture reads them)
 #include <OpenEXR/ImfCheckFile.h>

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# CTest fuzz_smoke (issue 12): builds the libFuzzer targets with clang (ci/fuzz-build.sh, into
+# CTest fuzz_smoke: builds the libFuzzer targets with clang (ci/fuzz-build.sh, into
 # build/fuzz), then per target replays the committed corpus (tests/fuzz/corpus/TARGET: seeds
 # and the regression inputs of every bug found) and runs a bounded number of new inputs from a
 # fixed seed, a few seconds each. Any crash, sanitizer report, leak or uncaught exception fails
