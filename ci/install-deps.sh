@@ -15,6 +15,8 @@ packages=(
   clang                                   # libFuzzer targets (tests/fuzz; the suite's fuzz smoke test)
   libtinygltf-dev                         # glTF 2.0 import (record --gltf)
   assimp-testmodels                       # Khronos sample glTF files the tests import
+  python3-jsonschema                      # second validator of the committed results (tests/validate_results.py)
+  clang-format                            # ci/check-format.sh: the changed lines follow .clang-format
 )
 
 # Headless Chromium renders results/dashboard in the dashboard test. Debian's `chromium` is a real

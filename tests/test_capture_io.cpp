@@ -2,7 +2,6 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <atomic>
 #include <bit>
 #include <cmath>
 #include <cstring>
@@ -23,34 +22,15 @@
 #include "harness/capture/capture_files.hpp"
 #include "harness/core/error.hpp"
 #include "harness/capture/exr_io.hpp"
+#include "test_support.hpp"
 
 namespace vsgl {
 namespace {
 
 namespace fs = std::filesystem;
 
-// A fresh directory under the system's temporary directory, removed with everything in it.
-class TempDir {
- public:
-  TempDir() {
-    static std::atomic<int> counter{0};
-    std::random_device entropy;
-    path_ = fs::temp_directory_path() /
-            ("vsgl-capture-test-" + std::to_string(::getpid()) + "-" +
-             std::to_string(counter.fetch_add(1)) + "-" + std::to_string(entropy()));
-    fs::create_directories(path_);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-  ~TempDir() {
-    std::error_code ignored;
-    fs::remove_all(path_, ignored);
-  }
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
+using test::read_json;
+using test::TempDir;
 
 std::set<std::string> file_names(const fs::path& dir) {
   std::set<std::string> names;
@@ -147,11 +127,6 @@ void rewrite_view(const fs::path& dir, const ViewImage& view, bool with_pdf,
     channels.push_back({names[c], view.planes[c], c == kNX ? type_of_nx : ExrSampleType::kFloat});
   }
   write_exr(dir / view_file_name(view.kind), view.width, view.height, channels);
-}
-
-nlohmann::json read_json(const fs::path& path) {
-  std::ifstream in(path);
-  return nlohmann::json::parse(in);
 }
 
 void write_json(const fs::path& path, const nlohmann::json& doc) {

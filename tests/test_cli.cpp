@@ -7,6 +7,7 @@
 #include "cli_runner.hpp"
 #include "harness/capture/capture.hpp"
 #include "harness/capture/capture_files.hpp"
+#include "test_support.hpp"
 
 namespace vsgl {
 namespace {
@@ -36,8 +37,8 @@ TEST(Cli, DevicesListsLavapipeWithTimestamps) {
 }
 
 TEST(Cli, RecordWritesALoadableCaptureWithItsBrsmPdf) {
-  const auto dir = std::filesystem::temp_directory_path() / "vsgl_cli_record_test";
-  std::filesystem::remove_all(dir);
+  const test::TempDir dir_temp("cli_record");
+  const std::filesystem::path& dir = dir_temp.path();
   const auto r = run_cli("record --scene tiny --gbuffer 96x64 --rsm 32 --validate --out " + dir.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("validation on"), std::string::npos) << r.output;
@@ -47,12 +48,11 @@ TEST(Cli, RecordWritesALoadableCaptureWithItsBrsmPdf) {
   EXPECT_EQ(c.rsm.width, 32u);
   EXPECT_TRUE(c.rsm.has_pdf);
   EXPECT_GT(c.meta.brsm_build_ms, 0.0);
-  std::filesystem::remove_all(dir);
 }
 
 TEST(Cli, RecordAnimatedSequenceWritesOneCapturePerFrame) {
-  const auto dir = std::filesystem::temp_directory_path() / "vsgl_cli_frames_test";
-  std::filesystem::remove_all(dir);
+  const test::TempDir dir_temp("cli_frames");
+  const std::filesystem::path& dir = dir_temp.path();
   const auto r = run_cli("record --scene tiny --gbuffer 48x32 --rsm 16 --frames 3 --out " + dir.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const Capture f0 = load_capture(dir / "frame_0000");
@@ -60,7 +60,6 @@ TEST(Cli, RecordAnimatedSequenceWritesOneCapturePerFrame) {
   EXPECT_EQ(f2.meta.frame, 2u);
   EXPECT_EQ(f2.meta.frames, 3u);
   EXPECT_NE(f0.meta.light.position, f2.meta.light.position);
-  std::filesystem::remove_all(dir);
 }
 
 TEST(Cli, BadInvocationsExitWithTheDocumentedCodes) {

@@ -8,10 +8,10 @@
 //   slowed. Checked only what noise cannot flip: the run says it was slowed; the slowed
 //   generator's recording holds exactly one more dispatch per view and no other generator's
 //   changed (counted while recording); and the slowed rows are SLOWER, with extra work about
-//   two orders of magnitude above the rows' own time (DebugSlowWork x 16: about 100x in a run on a busy 2-core machine, where noise moved unslowed rows by up to 7x), so that noise, which
-//   only ever adds time, would have to add tens of milliseconds to most base samples to hide it.
-//   Whether an unslowed row stays SAME is not asserted here: on a shared, busy CPU a 0.05 ms phase
-//   can double from preemption alone, which is a property of the machine, not of `compare`.
+//   two orders of magnitude above the rows' own time (DebugSlowWork x 16: about 100x in a run on a busy 2-core machine,
+//   where noise moved unslowed rows by up to 7x), so that noise, which only ever adds time, would have to add tens of
+//   milliseconds to most base samples to hide it. Whether an unslowed row stays SAME is not asserted here: on a shared,
+//   busy CPU a 0.05 ms phase can double from preemption alone, which is a property of the machine, not of `compare`.
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -26,6 +26,7 @@
 #include "harness/compare/regression_compare.hpp"
 #include "harness/generators/testing/debug_slowdown.hpp"
 #include "harness/report/tables_run.hpp"
+#include "test_support.hpp"
 
 namespace vsgl {
 namespace {
@@ -127,8 +128,8 @@ uint32_t dispatches(const nlohmann::ordered_json& doc, const std::string& g, con
 }
 
 TEST_F(CompareDebugSlowTest, SlowedGeneratorAndOnlyItIsSlower) {
-  const fs::path root = fs::temp_directory_path() / ("vsgl_compare_slow_" + std::to_string(::getpid()));
-  fs::remove_all(root);
+  const test::TempDir root_temp("compare_slow");
+  const std::filesystem::path& root = root_temp.path();
   TablesOptions o;
   o.captures_dir = root / "captures";
   o.record_sizes = RecordSizes{96, 64, 64};
@@ -174,8 +175,8 @@ TEST_F(CompareDebugSlowTest, SlowedGeneratorAndOnlyItIsSlower) {
     if (slowed.contains(r.name)) least_slowed = std::min(least_slowed, r.result.change);
     else most_other = std::max(most_other, r.result.change);
   }
-  std::printf("slowed rows: median change >= %+.0f %%; other rows: <= %+.0f %%\n", 100 * least_slowed, 100 * most_other);
-  fs::remove_all(root);
+  std::printf("slowed rows: median change >= %+.0f %%; other rows: <= %+.0f %%\n", 100 * least_slowed,
+              100 * most_other);
 }
 
 }  // namespace

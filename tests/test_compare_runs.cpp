@@ -16,6 +16,7 @@
 #include "harness/compare/regression_compare.hpp"
 #include "harness/compare/regression_run.hpp"
 #include "harness/core/statistics.hpp"
+#include "test_support.hpp"
 
 namespace vsgl {
 namespace {
@@ -80,17 +81,13 @@ SampleSource noisy(double scale, double noise, std::size_t n = 20, unsigned seed
 BenchRun run_of(const ojson& doc) { return parse_bench_run(doc, "synthetic.json"); }
 
 struct TempDir {
-  fs::path path;
-  explicit TempDir(const std::string& name)
-      : path(fs::temp_directory_path() / ("vsgl_compare_" + name + "_" + std::to_string(::getpid()))) {
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() { fs::remove_all(path); }
+  explicit TempDir(const std::string& name) : temp("compare_" + name), path(temp.path()) {}
   fs::path write(const std::string& name, const std::string& text) const {
     std::ofstream(path / name) << text;
     return path / name;
   }
+  test::TempDir temp;
+  fs::path path;
 };
 
 TEST(CompareRuns, RefusesTheTableOfAUserCaptureClearly) {

@@ -18,6 +18,7 @@
 #include "bench/cli/dashboard_generators.hpp"
 #include "harness/report/paper_tables.hpp"
 #include "harness/report/table_json.hpp"
+#include "test_support.hpp"
 
 namespace vsgl {
 namespace {
@@ -30,10 +31,7 @@ std::size_t count(const std::string& text, const std::string& what) {
   return n;
 }
 
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
+using test::read_text;
 
 TEST(DashboardSvg, StackedBarsDrawEverySegmentWithItsNumber) {
   const std::vector<LegendEntry> legend{{"a", "camera: a", "#ff0000"}, {"b", "light: b", "#0000ff"}};
@@ -81,13 +79,12 @@ TEST(DashboardPage, CommittedResultsGiveBothTablesBesideThePaper) {
 // The headless Chromium that runs here (ci/find-chromium.sh: chromium, chromium-browser, Chrome,
 // chrome-headless-shell or $VSGL_CHROMIUM), or "" with the reason in `why`.
 std::string find_chromium(std::string& why) {
-  const fs::path log = fs::temp_directory_path() / ("vsgl_find_chromium_" + std::to_string(::getpid()));
-  const std::string command = "bash " VSGL_SOURCE_DIR "/ci/find-chromium.sh > " + log.string() + ".out 2> " + log.string() + ".err";
+  const test::TempDir log("find_chromium");
+  const std::string command =
+      "bash " VSGL_SOURCE_DIR "/ci/find-chromium.sh > " + (log / "out").string() + " 2> " + (log / "err").string();
   const int status = std::system(command.c_str());
-  const std::string out = read_text(log.string() + ".out");
-  why = read_text(log.string() + ".err");
-  fs::remove(log.string() + ".out");
-  fs::remove(log.string() + ".err");
+  const std::string out = read_text(log / "out");
+  why = read_text(log / "err");
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) return "";
   return out.substr(0, out.find('\n'));
 }
@@ -107,9 +104,8 @@ TEST(DashboardPage, OpensInHeadlessChromiumWithTheChartsRendered) {
   std::string why;
   const std::string browser = find_chromium(why);
   if (browser.empty()) GTEST_SKIP() << "no headless Chromium, the page is not rendered: " << why;
-  const fs::path dir = fs::temp_directory_path() / ("vsgl_dashboard_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const test::TempDir dir_temp("dashboard");
+  const std::filesystem::path& dir = dir_temp.path();
   const auto made = test::run_cli("dashboard " + kResults.string() + " --out " + (dir / "site").string());
   ASSERT_EQ(made.exit_code, 0) << made.output;
   const fs::path page = dir / "site/index.html";
@@ -140,7 +136,6 @@ TEST(DashboardPage, OpensInHeadlessChromiumWithTheChartsRendered) {
   const double variance = sum2 / static_cast<double>(n) - mean * mean;
   EXPECT_GT(variance, 100.0) << "the screenshot is (nearly) blank";
   EXPECT_GT(camera_additional, 200u) << "no bar of the paper's chart is visible";
-  fs::remove_all(dir);
 }
 
 }  // namespace

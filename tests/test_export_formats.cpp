@@ -12,6 +12,7 @@
 #include "harness/core/error.hpp"
 #include "harness/compare/export_formats.hpp"
 #include "harness/core/json_schema_subset.hpp"
+#include "test_support.hpp"
 
 namespace vsgl {
 namespace {
@@ -21,10 +22,7 @@ using test::run_cli;
 
 const fs::path kRun = fs::path(VSGL_SOURCE_DIR) / "results/nvidia-h100-80gb-hbm3";
 
-nlohmann::json read_json(const fs::path& p) {
-  std::ifstream in(p);
-  return nlohmann::json::parse(in);
-}
+using test::read_json;
 
 TEST(ExportFormats, GithubActionBenchmarkHasOneEntryPerSeries) {
   const BenchRun run = load_bench_run_path(kRun);
@@ -77,9 +75,8 @@ TEST(ExportFormats, TheSchemasRejectOtherShapes) {
 }
 
 TEST(ExportCli, WritesBothFormatsAndRefusesBadOnes) {
-  const fs::path dir = fs::temp_directory_path() / ("vsgl_export_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const test::TempDir dir_temp("export");
+  const std::filesystem::path& dir = dir_temp.path();
   const auto gab = run_cli("export --format gab " + kRun.string() + " --out " + (dir / "gab.json").string());
   EXPECT_EQ(gab.exit_code, 0) << gab.output;
   EXPECT_EQ(read_json(dir / "gab.json").size(), 108u);  // 2 tables x 6 generators x 9 rows
@@ -94,7 +91,6 @@ TEST(ExportCli, WritesBothFormatsAndRefusesBadOnes) {
   EXPECT_NE(broken.exit_code, 0);
   EXPECT_NE(broken.output.find("not valid JSON"), std::string::npos) << broken.output;
   EXPECT_FALSE(fs::exists(dir / "y"));
-  fs::remove_all(dir);
 }
 
 }  // namespace

@@ -22,6 +22,7 @@
 #include "harness/scene/gltf_scene.hpp"
 #include "harness/scene/scene_geometry.hpp"
 #include "harness/scene/scene_textures.hpp"
+#include "test_support.hpp"
 
 namespace vsgl {
 namespace {
@@ -30,13 +31,6 @@ namespace fs = std::filesystem;
 const fs::path kModels = "/usr/share/assimp/models/glTF2";
 
 using test::input_error;
-
-fs::path temp_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("vsgl_gltf_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
 
 void write_bytes(const fs::path& path, const std::vector<unsigned char>& bytes) {
   std::ofstream out(path, std::ios::binary);
@@ -250,7 +244,8 @@ TEST(GltfImport, ImageViewPastItsBufferIsAnErrorNotAnOverread) {
   EXPECT_NE(message.find("runs past the end of buffer"), std::string::npos) << message;
   EXPECT_NE(message.find(source.string()), std::string::npos) << message;
   // However deep the file lies, the message names it whole (a checkout's path once cut it short).
-  const fs::path deep = temp_dir("deep") / std::string(120, 'd') / std::string(120, 'e') / "view-past-buffer.glb";
+  const test::TempDir deep_temp("gltf_deep");
+  const fs::path deep = deep_temp / std::string(120, 'd') / std::string(120, 'e') / "view-past-buffer.glb";
   fs::create_directories(deep.parent_path());
   fs::copy_file(source, deep);
   const std::string deep_message = input_error([&] { import_gltf(deep); });
@@ -286,7 +281,8 @@ TEST(GltfImport, BadNormalsAreRepairedAndSaidSo) {
 }
 
 TEST(GltfImport, FilesTheTestBreaksNameTheProblem) {
-  const fs::path dir = temp_dir("broken");
+  const test::TempDir dir_temp("gltf_broken");
+  const fs::path& dir = dir_temp.path();
   // A mesh name with bytes that are not printable ASCII, and an index out of range: the name is
   // escaped in the message.
   RoomOptions bad;
@@ -316,11 +312,11 @@ TEST(GltfImport, FilesTheTestBreaksNameTheProblem) {
   cam.camera = "nope";
   const std::string no_cam = input_error([&] { import_gltf(write_room(dir), cam); });
   EXPECT_NE(no_cam.find("0 'view'"), std::string::npos) << no_cam;
-  fs::remove_all(dir);
 }
 
 TEST(GltfImport, CameraAndLightChoices) {
-  const fs::path dir = temp_dir("choices");
+  const test::TempDir dir_temp("gltf_choices");
+  const fs::path& dir = dir_temp.path();
   const fs::path room = write_room(dir);
   const GltfImport by_file = import_gltf(room);
   EXPECT_NE(by_file.camera_source.find("camera 0 'view'"), std::string::npos) << by_file.camera_source;
@@ -357,7 +353,6 @@ TEST(GltfImport, CameraAndLightChoices) {
   // Frame 0 of a sequence is the static scene; later frames move camera and light.
   EXPECT_EQ(gltf_frame(by_file, 0, 4).light.position, by_file.scene.light.position);
   EXPECT_NE(gltf_frame(by_file, 1, 4).light.position, by_file.scene.light.position);
-  fs::remove_all(dir);
 }
 
 TEST(GltfImport, NamesAreEscapedAndSceneNamesAreFileNames) {
@@ -376,7 +371,8 @@ class GltfRecordTest : public test::GpuTest {
 };
 
 TEST_F(GltfRecordTest, RoomGBufferAndRsmAreExact) {
-  const fs::path dir = temp_dir("room");
+  const test::TempDir dir_temp("gltf_room");
+  const fs::path& dir = dir_temp.path();
   const GltfImport room = import_gltf(write_room(dir));
   ASSERT_EQ(room.triangles, 12u);
   const Scene& scene = room.scene;
@@ -445,7 +441,6 @@ TEST_F(GltfRecordTest, RoomGBufferAndRsmAreExact) {
     }
   EXPECT_GT(inside, 500u);
   EXPECT_GT(outside, 500u);
-  fs::remove_all(dir);
 }
 
 TEST_F(GltfRecordTest, SampleModelsRecordWithTheirTextures) {
@@ -476,7 +471,8 @@ TEST_F(GltfRecordTest, SampleModelsRecordWithTheirTextures) {
 }
 
 TEST(GltfRecordCli, RecordsTheRoomWithItsSourceInTheSidecar) {
-  const fs::path dir = temp_dir("cli");
+  const test::TempDir dir_temp("gltf_cli");
+  const fs::path& dir = dir_temp.path();
   const fs::path room = write_room(dir);
   const auto r = test::run_cli("record --gltf " + room.string() + " --out " + (dir / "cap").string() +
                                " --gbuffer 48x32 --rsm 32");
@@ -539,7 +535,6 @@ TEST(GltfRecordCli, RecordsTheRoomWithItsSourceInTheSidecar) {
                                     " --out " + (dir / "x").string());
   EXPECT_EQ(broken.exit_code, 3) << broken.output;
   EXPECT_NE(broken.output.find("BoxTextured0.bin"), std::string::npos) << broken.output;
-  fs::remove_all(dir);
 }
 
 }  // namespace

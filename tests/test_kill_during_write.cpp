@@ -28,6 +28,7 @@
 #include "harness/core/error.hpp"
 #include "harness/capture/exr_io.hpp"
 #include "harness/core/json_schema_subset.hpp"
+#include "test_support.hpp"
 
 namespace vsgl {
 namespace {
@@ -140,15 +141,9 @@ bool complete_table_file(const fs::path& p) {
   }
 }
 
-fs::path fresh_root(const std::string& name) {
-  const fs::path root = fs::temp_directory_path() / ("vsgl_kill_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(root);
-  fs::create_directories(root);
-  return root;
-}
-
 TEST(KillDuringWrite, TablesOutputsAreOldOrNewNeverPartial) {
-  const fs::path root = fresh_root("tables");
+  const test::TempDir root_temp("kill_tables");
+  const fs::path& root = root_temp.path();
   const fs::path out = root / "out";
   const std::vector<std::string> args = {
       "tables", "--quick", "--captures", (root / "captures").string(), "--out", out.string(), "--gbuffer", "96x64",
@@ -193,11 +188,11 @@ TEST(KillDuringWrite, TablesOutputsAreOldOrNewNeverPartial) {
   ASSERT_EQ(run_to_end(args, root / "last.log"), 0) << slurp(root / "last.log");
   for (const auto& f : outputs) EXPECT_TRUE(complete_table_file(out / f)) << f;
   EXPECT_TRUE(temporaries(out).empty()) << temporaries(out).front();
-  fs::remove_all(root);
 }
 
 TEST(KillDuringWrite, RecordOutputsAreOldOrNewNeverPartial) {
-  const fs::path root = fresh_root("record");
+  const test::TempDir root_temp("kill_record");
+  const fs::path& root = root_temp.path();
   const fs::path dir = root / "tiny";
   const std::vector<std::string> args = {"record", "--scene", "tiny", "--gbuffer", "96x64", "--rsm", "64",
                                          "--out", dir.string(), "--device", test_device()};
@@ -235,7 +230,6 @@ TEST(KillDuringWrite, RecordOutputsAreOldOrNewNeverPartial) {
   ASSERT_EQ(run_to_end(args, root / "last.log"), 0) << slurp(root / "last.log");
   EXPECT_NO_THROW((void)load_capture(dir));
   EXPECT_TRUE(temporaries(dir).empty()) << temporaries(dir).front();
-  fs::remove_all(root);
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include <sstream>
 #include <string>
 #include <vector>
+#include "test_support.hpp"
 
 namespace {
 
@@ -110,8 +111,8 @@ TEST(Layering, NoIncludePointsUpTheLayers) {
 
 // The check itself can fail: a tree with one include of each forbidden kind.
 TEST(Layering, FlagsUpwardSidewaysDetailAndTestingIncludes) {
-  const fs::path root = fs::temp_directory_path() / ("vsgl_layering_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
-  fs::remove_all(root);
+  const vsgl::test::TempDir root_temp("layering");
+  const std::filesystem::path& root = root_temp.path();
   const auto write = [&](const std::string& rel, const std::string& text) {
     fs::create_directories((root / rel).parent_path());
     std::ofstream(root / rel) << text;
@@ -128,7 +129,6 @@ TEST(Layering, FlagsUpwardSidewaysDetailAndTestingIncludes) {
   write("tests/t.cpp", "#include \"harness/generators/testing/t.hpp\"\n#include \"harness/vk/fine.hpp\"\n");
   write("harness/stray.cpp", "\n");
   const auto v = layering_violations(root, table);
-  fs::remove_all(root);
   ASSERT_EQ(v.size(), 5u) << joined(v);
   const std::string all = joined(v);
   EXPECT_NE(all.find("harness/core/up.cpp:1: layer 'core' includes 'vk'"), std::string::npos) << all;

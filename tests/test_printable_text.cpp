@@ -16,6 +16,7 @@
 #include "harness/report/paper_tables.hpp"
 #include "harness/core/printable_text.hpp"
 #include "harness/compare/regression_run.hpp"
+#include "test_support.hpp"
 
 namespace vsgl {
 namespace {
@@ -51,21 +52,14 @@ TEST(PrintableText, LongTextIsCut) {
 
 class TempFile {
  public:
-  explicit TempFile(const std::string& name, const std::string& bytes)
-      : dir_(fs::temp_directory_path() / ("vsgl_printable_" + std::to_string(::getpid()))) {
-    fs::create_directories(dir_);
-    path_ = dir_ / name;
+  explicit TempFile(const std::string& name, const std::string& bytes) : dir_("printable"), path_(dir_ / name) {
     std::ofstream(path_, std::ios::binary) << bytes;
-  }
-  ~TempFile() {
-    std::error_code ignored;
-    fs::remove(path_, ignored);
-    fs::remove(dir_, ignored);
   }
   const fs::path& path() const { return path_; }
 
  private:
-  fs::path dir_, path_;
+  test::TempDir dir_;
+  fs::path path_;
 };
 
 using test::input_error;

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.hpp"
+#include "test_support.hpp"
 
 namespace vsgl {
 namespace {
@@ -25,8 +26,8 @@ TEST(QualityCli, UsageAndInputErrors) {
 }
 
 TEST(QualityCli, TinyCaptureWritesJsonMarkdownAndPictures) {
-  const auto root = std::filesystem::temp_directory_path() / ("vsgl_quality_cli_" + std::to_string(getpid()));
-  std::filesystem::remove_all(root);
+  const test::TempDir root_temp("quality_cli");
+  const std::filesystem::path& root = root_temp.path();
   const std::string sizes = " --gbuffer 96x64 --rsm 64";
   auto r = test::run_cli("record --scene tiny" + sizes + " --out " + (root / "cap").string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
@@ -72,7 +73,6 @@ TEST(QualityCli, TinyCaptureWritesJsonMarkdownAndPictures) {
   const double power = j["views"]["light_view"]["generators"]["fis_modified"]["power"]["power_ratio"];
   EXPECT_GT(power, 0.5);
   EXPECT_LT(power, 1.5);
-  std::filesystem::remove_all(root);
 }
 
 }  // namespace

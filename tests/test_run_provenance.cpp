@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "harness/timing/run_provenance.hpp"
+#include "test_support.hpp"
 
 namespace vsgl {
 namespace {
@@ -24,8 +25,7 @@ void write(const fs::path& p, const std::string& text) {
 
 class GitTree {
  public:
-  GitTree() : dir_(fs::temp_directory_path() / ("vsgl_provenance_" + std::to_string(::getpid()))) {
-    fs::remove_all(dir_);
+  GitTree() : temp_("provenance"), dir_(temp_.path()) {
     for (const char* f : {"harness/a.cpp", "results/paper/paper_tables.json", "results/schema/table.schema.json",
                           "results/lavapipe/table1.json"}) {
       write(dir_ / f, "v1\n");
@@ -33,7 +33,6 @@ class GitTree {
     ok_ = sh("git init -q && git -c user.name=t -c user.email=t@t add -A && "
              "git -c user.name=t -c user.email=t@t commit -qm init");
   }
-  ~GitTree() { fs::remove_all(dir_); }
   bool ok() const { return ok_; }
   const fs::path& dir() const { return dir_; }
   bool sh(const std::string& command) const {
@@ -42,6 +41,7 @@ class GitTree {
   void restore() const { sh("git checkout -q -- ."); }
 
  private:
+  test::TempDir temp_;
   fs::path dir_;
   bool ok_ = false;
 };

@@ -22,6 +22,7 @@
 #include "harness/quality/png_image.hpp"
 #include "harness/scene/scene.hpp"
 #include "harness/quality/shading_pass.hpp"
+#include "test_support.hpp"
 
 namespace vsgl {
 namespace {
@@ -174,14 +175,13 @@ TEST(ShadingPicture, PngRoundTripsAndIsDeterministic) {
   EXPECT_EQ(decoded.height, picture.height);
   EXPECT_EQ(decoded.rgb, picture.rgb);
 
-  const auto dir = std::filesystem::temp_directory_path() / ("vsgl_png_test_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const test::TempDir dir_temp("png");
+  const std::filesystem::path& dir = dir_temp.path();
   const auto path = dir / "picture.png";
   write_png_atomic(path, picture);
   std::ifstream in(path, std::ios::binary);
   const std::vector<char> on_disk((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   EXPECT_EQ(on_disk, png);
-  std::filesystem::remove_all(dir);
 
   const std::vector<char> garbage = {'n', 'o', 't', ' ', 'a', ' ', 'p', 'n', 'g'};
   EXPECT_THROW(decode_png(garbage, "garbage.png"), InputError);
@@ -190,8 +190,8 @@ TEST(ShadingPicture, PngRoundTripsAndIsDeterministic) {
 // `vsgl-bench shade` as a user meets it: one PNG per generator at the stride's size, the same
 // bytes on a second run, and usage errors for an unknown generator or a missing capture.
 TEST(ShadingCli, WritesOnePngPerGeneratorDeterministically) {
-  const auto dir = std::filesystem::temp_directory_path() / ("vsgl_cli_shade_test_" + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
+  const test::TempDir dir_temp("cli_shade");
+  const std::filesystem::path& dir = dir_temp.path();
   const auto capture = dir / "tiny";
   const auto rec = test::run_cli("record --scene tiny --gbuffer 96x64 --rsm 32 --out " + capture.string());
   ASSERT_EQ(rec.exit_code, 0) << rec.output;
@@ -221,7 +221,6 @@ TEST(ShadingCli, WritesOnePngPerGeneratorDeterministically) {
   EXPECT_EQ(test::run_cli("shade --stride 2").exit_code, 2);
   const auto missing = test::run_cli("shade --capture " + (dir / "nowhere").string());
   EXPECT_EQ(missing.exit_code, 3) << missing.output;
-  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -12,6 +12,90 @@ using json = nlohmann::json;
 const std::set<std::string> kKnownKeywords = {
     "$schema", "$id", "$defs", "$ref", "title", "description", "type", "properties", "required",
     "additionalProperties", "items", "minItems", "enum", "const", "minimum", "exclusiveMinimum"};
+const std::set<std::string> kTypeNames = {"object", "array", "string", "boolean", "null", "integer", "number"};
+const std::string kRefPrefix = "#/$defs/";
+
+// Keywords of drafts 7 and 2020-12 whose values hold subschemas, outside the subset: walked so
+// that a problem under them is reported too, not only the keyword itself.
+const std::set<std::string> kSchemaMapKeywords = {"definitions", "patternProperties", "dependentSchemas",
+                                                  "dependencies"};
+const std::set<std::string> kSchemaKeywords = {
+    "additionalItems",       "contains",     "not", "if", "then", "else", "propertyNames", "unevaluatedItems",
+    "unevaluatedProperties", "contentSchema"};
+const std::set<std::string> kSchemaListKeywords = {"allOf", "anyOf", "oneOf", "prefixItems"};
+
+// JSON pointer escaping (RFC 6901) of one reference token.
+std::string pointer_token(const std::string& key) {
+  std::string out;
+  for (const char c : key) out += c == '~' ? std::string("~0") : c == '/' ? std::string("~1") : std::string(1, c);
+  return out;
+}
+
+class SchemaWalker {
+ public:
+  explicit SchemaWalker(const json& root) : root_(root) {}
+
+  void walk(const json& s, const std::string& at, bool is_root) {
+    if (s.is_boolean()) return;
+    if (!s.is_object()) return problem(at, "is neither a schema object nor a boolean");
+    for (const auto& [key, value] : s.items()) {
+      const std::string here = at + "/" + pointer_token(key);
+      if (!kKnownKeywords.count(key)) {
+        problem(here, "keyword '" + key + "' is not supported by the validator");
+        if (kSchemaKeywords.count(key)) walk(value, here, false);
+        if (kSchemaMapKeywords.count(key) && value.is_object())
+          for (const auto& [name, sub] : value.items())
+            if (sub.is_object() || sub.is_boolean()) walk(sub, here + "/" + pointer_token(name), false);
+        if (kSchemaListKeywords.count(key) && value.is_array())
+          for (std::size_t i = 0; i < value.size(); ++i) walk(value[i], here + "/" + std::to_string(i), false);
+        continue;
+      }
+      check_keyword(key, value, here, is_root);
+    }
+  }
+
+  std::vector<std::string> problems;
+
+ private:
+  void check_keyword(const std::string& key, const json& value, const std::string& here, bool is_root) {
+    if (key == "$schema" || key == "$id" || key == "title" || key == "description") {
+      if (!value.is_string()) problem(here, "must be a string");
+    } else if (key == "type") {
+      const bool listed = value.is_array() && !value.empty();
+      for (const auto& name : listed ? value : json::array({value}))
+        if (!name.is_string() || !kTypeNames.count(name.get<std::string>()))
+          problem(here, "names no JSON type: " + name.dump());
+    } else if (key == "properties" || key == "$defs") {
+      if (key == "$defs" && !is_root) problem(here, "$defs only at the root ($ref resolves against the root's)");
+      if (!value.is_object()) return problem(here, "must be an object of schemas");
+      for (const auto& [name, sub] : value.items()) walk(sub, here + "/" + pointer_token(name), false);
+    } else if (key == "additionalProperties" || key == "items") {
+      if (value.is_array()) return problem(here, "must be one schema (a list of schemas is not supported)");
+      walk(value, here, false);
+    } else if (key == "required") {
+      if (!value.is_array()) return problem(here, "must be an array of member names");
+      for (const auto& name : value)
+        if (!name.is_string()) problem(here, "names a member with a non-string " + name.dump());
+    } else if (key == "minItems") {
+      if (!value.is_number_unsigned()) problem(here, "must be a non-negative integer");
+    } else if (key == "minimum" || key == "exclusiveMinimum") {
+      if (!value.is_number()) problem(here, "must be a number (draft 4's boolean form is not supported)");
+    } else if (key == "enum") {
+      if (!value.is_array()) problem(here, "must be an array");
+    } else if (key == "$ref") {
+      const bool resolves = value.is_string() && value.get<std::string>().rfind(kRefPrefix, 0) == 0 &&
+                            root_.contains("$defs") && root_["$defs"].is_object() &&
+                            root_["$defs"].contains(value.get<std::string>().substr(kRefPrefix.size()));
+      if (!resolves) problem(here, value.dump() + " does not name an entry of the root's $defs");
+    }
+    // "const": any value.
+  }
+
+  void problem(const std::string& at, const std::string& what) {
+    problems.push_back((at.empty() ? "/" : at) + ": " + what);
+  }
+  const json& root_;
+};
 
 bool has_type(const json& v, const std::string& type) {
   if (type == "object") return v.is_object();
@@ -34,15 +118,8 @@ class Validator {
       return;
     }
     if (!schema.is_object()) throw std::invalid_argument("schema at " + where + " is neither an object nor a boolean");
-    for (const auto& [key, _] : schema.items())
-      if (!kKnownKeywords.count(key)) throw std::invalid_argument("schema keyword '" + key + "' is not supported");
-    if (schema.contains("$ref")) {
-      const std::string ref = schema["$ref"].get<std::string>();
-      const std::string prefix = "#/$defs/";
-      if (ref.rfind(prefix, 0) != 0 || !root_.contains("$defs") || !root_["$defs"].contains(ref.substr(prefix.size())))
-        throw std::invalid_argument("schema $ref '" + ref + "' does not name an entry of $defs");
-      check(v, root_["$defs"][ref.substr(prefix.size())], where);
-    }
+    if (schema.contains("$ref"))  // it resolves: schema_subset_problems checked it before
+      check(v, root_["$defs"][schema["$ref"].get<std::string>().substr(kRefPrefix.size())], where);
     if (schema.contains("type")) {
       const json& t = schema["type"];
       bool ok = false;
@@ -108,7 +185,18 @@ void walk_finite(const nlohmann::ordered_json& v, const std::string& where) {
 
 }  // namespace
 
+std::vector<std::string> schema_subset_problems(const nlohmann::json& schema) {
+  SchemaWalker w(schema);
+  w.walk(schema, "", true);
+  return w.problems;
+}
+
 std::vector<std::string> validate_against_schema(const nlohmann::json& doc, const nlohmann::json& schema) {
+  if (const auto problems = schema_subset_problems(schema); !problems.empty()) {
+    std::string all;
+    for (const auto& p : problems) all += "\n  " + p;
+    throw std::invalid_argument("the schema asks for what the validator cannot check:" + all);
+  }
   Validator v(schema);
   v.check(doc, schema, "");
   return v.errors;

@@ -83,10 +83,6 @@ VsglRecord vsgl_from_moments(glm::vec4 m0, glm::vec4 m1, glm::vec4 m2, glm::vec3
 
 // ---- sg_eval.glsl --------------------------------------------------------------------------
 
-float sg_value(glm::vec3 w, glm::vec3 axis, float sharpness) {
-  return std::exp(sharpness * (glm::dot(w, axis) - 1.0f));
-}
-
 float sg_integral(float s) {
   if (s < 0.01f) return 4.0f * kPi * (1.0f - s * (1.0f - s * (2.0f / 3.0f - s * (1.0f / 3.0f))));
   return 2.0f * kPi * (1.0f - std::exp(-2.0f * s)) / s;

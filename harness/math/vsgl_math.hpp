@@ -65,7 +65,6 @@ VsglRecord vsgl_from_moments(glm::vec4 m0, glm::vec4 m1, glm::vec4 m2, glm::vec3
 
 // ---- sg_eval.glsl --------------------------------------------------------------------------
 
-float sg_value(glm::vec3 w, glm::vec3 axis, float sharpness);  // exp(s (dot(w, a) - 1))
 float sg_integral(float s);                                    // 2 pi (1 - exp(-2 s)) / s
 float sg_normalization(float s);                               // 1 / sg_integral(s)
 // Integral over S^2 of the product of three SGs (unit axes), without cancellation.

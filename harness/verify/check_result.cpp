@@ -32,10 +32,4 @@ nlohmann::json to_json(const CheckResult& r) {
 
 std::string check_number(double value, int digits) { return number_text(value, digits); }
 
-bool all_passed(const std::vector<CheckResult>& results) {
-  for (const auto& r : results)
-    if (!r.passed()) return false;
-  return true;
-}
-
 }  // namespace vsgl

@@ -23,7 +23,6 @@ struct CheckResult {
 
 std::string format_check(const CheckResult& r);  // one aligned line: PASS/FAIL, names, numbers
 nlohmann::json to_json(const CheckResult& r);
-bool all_passed(const std::vector<CheckResult>& results);
 // A number for a check's detail line, with `digits` significant digits.
 std::string check_number(double value, int digits = 3);
 

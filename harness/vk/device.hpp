@@ -24,7 +24,6 @@ class Device {
   VkDevice get() const { return device_; }
   VkPhysicalDevice physical() const { return info_.handle; }
   VkQueue queue() const { return queue_; }
-  uint32_t queue_family() const { return info_.compute_queue_family; }
   const DeviceInfo& info() const { return info_; }
   const Instance& instance() const { return instance_; }
   bool pipeline_statistics_enabled() const { return pipeline_statistics_; }

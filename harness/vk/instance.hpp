@@ -28,7 +28,6 @@ class Instance {
 
   VkInstance get() const { return instance_; }
   bool validation_enabled() const { return validation_; }
-  bool debug_utils() const { return debug_utils_; }
 
   // Validation messages of severity ERROR seen so far (warnings are printed, not counted).
   uint32_t validation_errors() const { return errors_.load(); }

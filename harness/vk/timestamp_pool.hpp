@@ -35,7 +35,6 @@ class TimestampPool {
   // one that can only be a negative interval seen through the wrap (more than half the range).
   double interval_ns(uint64_t start_ticks, uint64_t end_ticks) const;
 
-  uint64_t wrap_mask() const { return mask_; }
   double period_ns() const { return period_ns_; }
   uint32_t valid_bits() const { return valid_bits_; }
 

@@ -20,8 +20,6 @@ const float VSGL_COSINE_SG_SHARPNESS = 2.133;
 // A receiver closer than this to the VSGL's mean uses this distance and its own normal as wc.
 const float VSGL_MIN_DISTANCE = 1e-6;
 
-float sg_value(vec3 w, vec3 axis, float sharpness) { return exp(sharpness * (dot(w, axis) - 1.0)); }
-
 // Integral over S^2 of G(w; a, s) = 2 pi (1 - exp(-2 s)) / s; a series below s = 0.01, where the
 // subtraction would cancel in float (4 pi (1 - s + 2/3 s^2 - 1/3 s^3), error < 3e-9 relative).
 float sg_integral(float s) {

@@ -1,0 +1,61 @@
+#pragma once
+// What many suites need: a temporary directory that cleans up after itself, and readers of
+// whole files that name the path when they cannot.
+#include <cerrno>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <system_error>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace vsgl::test {
+
+// A fresh, empty directory <system temp>/vsgl_<name>_XXXXXX (mkdtemp: unique even across
+// concurrent test processes and reruns), removed with everything in it on destruction.
+class TempDir {
+ public:
+  explicit TempDir(std::string_view name = "test") {
+    std::string pattern = (std::filesystem::temp_directory_path() / ("vsgl_" + std::string(name) + "_XXXXXX")).string();
+    std::vector<char> buffer(pattern.begin(), pattern.end());
+    buffer.push_back('\0');
+    if (::mkdtemp(buffer.data()) == nullptr)
+      throw std::system_error(errno, std::generic_category(), "cannot create a temporary directory " + pattern);
+    path_ = buffer.data();
+  }
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+  ~TempDir() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path_, ignored);
+  }
+  const std::filesystem::path& path() const { return path_; }
+  std::filesystem::path operator/(const std::filesystem::path& p) const { return path_ / p; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+// The file's bytes; throws std::runtime_error naming the path when it cannot be read.
+inline std::string read_text(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read " + path.string());
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+// The file parsed as JSON; throws naming the path when it cannot be read or parsed.
+inline nlohmann::json read_json(const std::filesystem::path& path) {
+  const std::string text = read_text(path);
+  try {
+    return nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw std::runtime_error(path.string() + ": " + e.what());
+  }
+}
+
+}  // namespace vsgl::test
