@@ -45,7 +45,7 @@ TEST(QualityCli, TinyCaptureWritesJsonMarkdownAndPictures) {
   std::ifstream in(dir / "quality.json");
   const auto j = nlohmann::json::parse(in);
   EXPECT_EQ(j["schema"], "vsgl-quality");
-  EXPECT_EQ(j["schema_version"], 2);
+  EXPECT_EQ(j["schema_version"], 3);  // stdev: sample (n - 1) since version 3
   EXPECT_TRUE(j["capture"]["hashes"]["rsm"].contains("pdf")) << j["capture"]["hashes"].dump();
   EXPECT_EQ(j["flicker_static"]["generators"]["fis_modified"]["frames"], 3);
   EXPECT_EQ(j["flicker_animated"]["frames"], 3);

@@ -326,8 +326,8 @@ TEST(QualityFlicker, KnownCoefficientOfVariation) {
   acc.add_frame(RadianceImage{2, 1, {grey(1.0f), grey(2.0f)}}, 1.0);
   acc.add_frame(RadianceImage{2, 1, {grey(3.0f), grey(2.0f)}}, 3.0);
   EXPECT_NEAR(acc.weighted_cv(), 0.25, 1e-6);
-  EXPECT_DOUBLE_EQ(acc.power_stdev(), 1.0);
-  EXPECT_DOUBLE_EQ(acc.power_relative_stdev(), 0.5);
+  EXPECT_DOUBLE_EQ(acc.power_stdev(), std::sqrt(2.0));  // powers 1 and 3: sample standard deviation (n - 1)
+  EXPECT_DOUBLE_EQ(acc.power_relative_stdev(), std::sqrt(2.0) / 2.0);
   EXPECT_THROW(acc.add_frame(RadianceImage{1, 1, {grey(1.0f)}}, 1.0), InputError);
   FlickerAccumulator one;
   one.add_frame(RadianceImage{1, 1, {grey(1.0f)}}, 1.0);

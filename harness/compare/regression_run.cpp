@@ -10,6 +10,7 @@
 #include "harness/core/json_reader.hpp"
 #include "harness/core/statistics.hpp"
 #include "harness/core/printable_text.hpp"
+#include "harness/formats/table_model.hpp"
 
 namespace vsgl {
 namespace {
@@ -49,85 +50,68 @@ std::string text_or(const json& obj, const std::string& key, const std::string& 
   return it != obj.end() && it->is_string() ? it->get<std::string>() : fallback;
 }
 
-// The statistics block of a table JSON (DESIGN.md §9): samples, median, quartiles, paper value.
-RunSeries stats_series(const Reader& r, const json& stats, const std::string& pointer) {
+RunSeries series_of(const TimingStats& stats, std::string name, int table, const std::string& generator,
+                    const std::string& view, const std::string& phase) {
   RunSeries s;
-  const json& samples = r.member(stats, pointer, "samples_ms");
-  if (!samples.is_array() || samples.empty()) r.fail(pointer + "/samples_ms", "is not a non-empty array");
-  for (std::size_t i = 0; i < samples.size(); ++i)
-    s.samples_ms.push_back(r.time(samples[i], pointer + "/samples_ms/" + std::to_string(i)));
-  s.median_ms = r.time(stats, pointer, "median_ms");
-  s.q1_ms = r.time(stats, pointer, "q1_ms");
-  s.q3_ms = r.time(stats, pointer, "q3_ms");
-  if (const auto p = stats.find("paper_ms"); p != stats.end() && p->is_number()) s.paper_ms = p->get<double>();
+  s.name = std::move(name);
+  s.table = table, s.generator = generator, s.view = view, s.phase = phase;
+  s.samples_ms = stats.samples_ms;
+  s.median_ms = stats.median_ms;
+  s.q1_ms = stats.q1_ms;
+  s.q3_ms = stats.q3_ms;
+  s.paper_ms = stats.paper_ms;
   return s;
 }
 
+// What identifies a run and must be in its file, beyond what the table model itself requires.
+template <typename T>
+const T& required(const Reader& r, const std::optional<T>& v, const std::string& pointer) {
+  if (!v) r.fail(pointer, "missing field");
+  return *v;
+}
+
 BenchRun parse_table_json(const json& doc, const Reader& r) {
+  const TableModel m = table_model_from_json(doc, r.where());
   BenchRun run;
   run.format = "table";
-  const json& table_value = r.member(doc, "", "table");
-  if (table_value.is_null())
+  if (!m.table)
     r.fail("/table", "is null: this is the table of a capture that is not one of the paper's (scene '" +
-                         (doc.contains("scene") && doc["scene"].is_string() ? printable_text(doc["scene"].get<std::string>()) : std::string("?")) +
+                         (m.scene ? printable_text(*m.scene) : std::string("?")) +
                          "'); compare, export and dashboard key runs by paper table (1, 2) and do not read it yet");
-  if (!table_value.is_number_integer() || (table_value != 1 && table_value != 2))
-    r.fail("/table", "is " + printable_text(table_value.dump()) + ", not 1 or 2");
-  const int table = table_value.get<int>();
-  const json& device = r.object(doc, "", "device");
-  run.device = r.text(device, "/device", "name");
-  run.device_type = text_or(device, "type", "");
-  const json& build = r.object(doc, "", "build");
-  run.git_commit = r.text(build, "/build", "git_commit");
-  run.git_dirty = r.flag(build, "/build", "git_dirty", false);
-  const json& meta = r.object(doc, "", "run");
-  run.date = r.text(meta, "/run", "started_utc");
-  run.quick = r.flag(meta, "/run", "quick", false);
-  if (const auto slow = meta.find("debug_slow"); slow != meta.end()) {
-    if (!slow->is_array()) r.fail("/run/debug_slow", "is not an array");
-    for (std::size_t i = 0; i < slow->size(); ++i) {
-      if (!(*slow)[i].is_string()) r.fail("/run/debug_slow/" + std::to_string(i), "is not a generator name");
-      run.debug_slow.push_back((*slow)[i].get<std::string>());
-    }
-  }
+  if (*m.table != 1 && *m.table != 2) r.fail("/table", "is " + std::to_string(*m.table) + ", not 1 or 2");
+  const int table = *m.table;
+  if (!m.device.fields.is_object()) r.fail("/device", "missing field");
+  run.device = required(r, m.device.name, "/device/name");
+  run.device_type = m.device.type;
+  if (!m.build.fields.is_object()) r.fail("/build", "missing field");
+  run.git_commit = required(r, m.build.git_commit, "/build/git_commit");
+  run.git_dirty = m.build.git_dirty;
+  if (!m.run.fields.is_object()) r.fail("/run", "missing field");
+  run.date = required(r, m.run.started_utc, "/run/started_utc");
+  run.quick = m.run.quick;
+  run.debug_slow = m.run.debug_slow;
 
   RunTable t;
   t.table = table;
-  t.capture_hashes = unordered(r.object(r.object(doc, "", "capture"), "/capture", "hashes"));
+  if (!m.capture.fields.is_object()) r.fail("/capture", "missing field");
+  t.capture_hashes = unordered(required(r, m.capture.hashes, "/capture/hashes"));
   // The workload, not the protocol: repetitions, noise target and caps change how long a run
   // measures, not what it measures; the generator list decides which rows exist (compared row
   // by row); kmeans_sum and sampler are descriptions.
-  json workload = r.object(doc, "", "config");
+  if (!m.config.is_object()) r.fail("/config", "missing field");
+  json workload = m.config;
   for (const char* key : {"timing", "generators", "kmeans_sum", "sampler"}) workload.erase(key);
   t.workload = unordered(workload);
   run.tables[table] = t;
 
   const std::string prefix = "table" + std::to_string(table) + "/";
-  const json& generators = r.object(doc, "", "generators");
-  if (generators.empty()) r.fail("/generators", "holds no generator");
-  for (const auto& [g, gj] : generators.items()) {
-    const std::string gp = "/generators/" + g;
-    const json& views = r.object(gj, gp, "views");
-    for (const char* view : {"camera_view", "light_view"}) {
-      const std::string vp = gp + "/views/" + view;
-      const json& vj = r.object(views, gp + "/views", view);
-      const json& phases = r.object(vj, vp, "phases");
-      if (phases.empty()) r.fail(vp + "/phases", "holds no phase");
-      for (const auto& [phase, stats] : phases.items()) {
-        RunSeries s = stats_series(r, stats, vp + "/phases/" + phase);
-        s.name = prefix + g + "/" + view + "/" + phase;
-        s.table = table, s.generator = g, s.view = view, s.phase = phase;
-        run.series.push_back(std::move(s));
-      }
-      RunSeries total = stats_series(r, r.object(vj, vp, "total"), vp + "/total");
-      total.name = prefix + g + "/" + view + "/total";
-      total.table = table, total.generator = g, total.view = view, total.phase = "total";
-      run.series.push_back(std::move(total));
+  for (const GeneratorTiming& g : m.generators) {
+    for (const auto& [view, v] : g.views) {
+      for (const PhaseTiming& p : v.phases)
+        run.series.push_back(series_of(p.stats, prefix + g.name + "/" + view + "/" + p.phase, table, g.name, view, p.phase));
+      run.series.push_back(series_of(v.total, prefix + g.name + "/" + view + "/total", table, g.name, view, "total"));
     }
-    RunSeries total = stats_series(r, r.object(gj, gp, "total"), gp + "/total");
-    total.name = prefix + g + "/total";
-    total.table = table, total.generator = g, total.phase = "total";
-    run.series.push_back(std::move(total));
+    run.series.push_back(series_of(g.total, prefix + g.name + "/total", table, g.name, "", "total"));
   }
   return run;
 }

@@ -20,12 +20,10 @@ ValueSummary summarize_values(std::vector<double> values) {
   std::sort(values.begin(), values.end());
   ValueSummary s;
   s.count = values.size();
-  double sum = 0;
-  for (double v : values) sum += v;
-  s.mean = sum / static_cast<double>(values.size());
-  double sq = 0;
-  for (double v : values) sq += (v - s.mean) * (v - s.mean);
-  s.stdev = std::sqrt(sq / static_cast<double>(values.size()));
+  // Mean and sample standard deviation (n - 1) as every table has them (core/statistics.hpp).
+  const SampleStats st = summarize(values);
+  s.mean = st.mean;
+  s.stdev = st.stdev;
   s.min = values.front();
   s.max = values.back();
   s.p99 = quantile_sorted(values, 0.99);
@@ -398,14 +396,11 @@ double FlickerAccumulator::error_cv() const {
 
 double FlickerAccumulator::power_stdev() const {
   if (frames_ < 2) throw InputError("flicker: needs at least 2 frames");
-  // Two passes, deviations from the first frame's power: exactly 0 when every frame has the same
-  // power.
-  double sum = 0;
-  for (double p : powers_) sum += p - powers_.front();
-  const double mean = sum / static_cast<double>(powers_.size());
-  double dev = 0;
-  for (double p : powers_) dev += (p - powers_.front() - mean) * (p - powers_.front() - mean);
-  return std::sqrt(dev / static_cast<double>(powers_.size()));
+  // The sample standard deviation (n - 1) of core/statistics.hpp, of the deviations from the first
+  // frame's power (the same spread): exactly 0 when every frame has the same power.
+  std::vector<double> deviations;
+  for (double p : powers_) deviations.push_back(p - powers_.front());
+  return summarize(deviations).stdev;
 }
 
 double FlickerAccumulator::power_relative_stdev() const {

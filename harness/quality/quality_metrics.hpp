@@ -15,7 +15,8 @@
 
 namespace vsgl {
 
-// mean, population stdev, min, max, 99th percentile (type-7 quantile) of a set of values.
+// mean, sample standard deviation (n - 1, core's summarize), min, max, 99th percentile (type-7
+// quantile) of a set of values; at least 2 values (std::invalid_argument otherwise).
 struct ValueSummary {
   std::size_t count = 0;
   double mean = 0, stdev = 0, min = 0, max = 0, p99 = 0;
@@ -142,7 +143,7 @@ class FlickerAccumulator {
   // Luminance-weighted mean temporal CV (0 when every frame is identical). Throws InputError for
   // fewer than 2 frames or images without a lit pixel.
   double weighted_cv() const;
-  // Population stdev of the per-frame total power, and that divided by its mean.
+  // Sample standard deviation (n - 1) of the per-frame total power, and that divided by its mean.
   double power_stdev() const;
   double power_relative_stdev() const;
   // With references: sum_p stdev_t(Y_t(p) - Yref_t(p)) / sum_p mean_t(Yref_t(p)) — the part of the

@@ -1,9 +1,13 @@
 #include "harness/quality/quality_report.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <functional>
 #include <sstream>
+#include <string_view>
+
+#include "harness/core/error.hpp"
 
 namespace vsgl {
 namespace {
@@ -39,11 +43,9 @@ json claim(const std::string& text, const std::string& source, const std::string
 constexpr double kExcessMargin = 0.02;
 constexpr const char* kVerdictFootprint = "eq3";
 
-json excess_claim(const std::string& text, const std::string& view, const json& tok15, const json& modified) {
-  const auto pick = [](const json& cov, const char* footprint, const char* part) {
-    return cov[part][footprint]["count_error"].get<double>();
-  };
-  const double t = pick(tok15, kVerdictFootprint, "excess"), m = pick(modified, kVerdictFootprint, "excess");
+json excess_claim(const std::string& text, const std::string& view, const CoverageSummary& tok15, const CoverageSummary& modified) {
+  static_assert(std::string_view(kVerdictFootprint) == "eq3", "the verdict reads the Eq. 3 footprint");
+  const double t = tok15.excess_eq3.count_error, m = modified.excess_eq3.count_error;
   const double d = t - m;
   const std::string verdict = d > kExcessMargin    ? "holds"
                               : d < -kExcessMargin ? "does not hold"
@@ -56,78 +58,76 @@ json excess_claim(const std::string& text, const std::string& view, const json& 
               {"fis_modified", m},
               {"margin", kExcessMargin},
               {"footprint", kVerdictFootprint},
-              {"floor", {pick(tok15, kVerdictFootprint, "lattice_floor"), pick(modified, kVerdictFootprint, "lattice_floor")}},
-              {"box_footprint_excess", {pick(tok15, "box", "excess"), pick(modified, "box", "excess")}},
+              {"floor", {tok15.floor_eq3.count_error, modified.floor_eq3.count_error}},
+              {"box_footprint_excess", {tok15.excess_box.count_error, modified.excess_box.count_error}},
               {"verdict", verdict}};
 }
 
-bool has(const json& j, const std::string& a, const std::string& b) {
-  return j.contains(a) && j[a].contains(b);
+const std::string kFig1Claim =
+    "Modified FIS reduces overlaps of and gaps between filtering kernels (Fig. 1) and the too-bright VSGLs they "
+    "cause (Fig. 5).";
+const std::string kFlickerClaim =
+    "Using our kernel size, flickering artifacts are reduced significantly for a high-frequency PDF.";
+
+// Fig. 1 / Fig. 5 on one view: the coverage excess, the spread of the kernel mass, the brightest VSGL.
+void add_view_claims(json& claims, const ViewQuality& v, const std::string& view) {
+  const auto tok = v.generators.find("fis_tok15"), mod = v.generators.find("fis_modified");
+  if (tok == v.generators.end() || mod == v.generators.end()) return;
+  if (!tok->second.coverage || !mod->second.coverage) throw InputError("quality: " + view + ": the FIS generators have no coverage");
+  const CoverageSummary& tc = *tok->second.coverage;
+  const CoverageSummary& mc = *mod->second.coverage;
+  claims.push_back(excess_claim(kFig1Claim, view, tc, mc));
+  claims.push_back(claim(kFig1Claim, "paper §3 (Eq. 2-3)", view + ": stdev of kernel PDF mass a(l)p_bar / (K/N)",
+                         tc.mass_over_target.stdev, mc.mass_over_target.stdev));
+  claims.push_back(claim(kFig1Claim, "paper_tables.json claims[3]", view + ": too-bright VSGLs, max Phi_i / mean Phi",
+                         tok->second.power.max_over_mean, mod->second.power.max_over_mean));
+}
+
+void add_flicker_claims(json& claims, const QualityModel& m) {
+  if (m.flicker_static.contains("fis_tok15") && m.flicker_static.contains("fis_modified"))
+    claims.push_back(claim(kFlickerClaim, "paper §1, §4 (text)", "static scene, per-frame lattice offset: luminance-weighted temporal CV",
+                           m.flicker_static.at("fis_tok15").weighted_cv, m.flicker_static.at("fis_modified").weighted_cv));
+  if (!m.flicker_animated) return;
+  const auto& f = m.flicker_animated->generators;
+  if (f.contains("fis_tok15") && f.contains("fis_modified"))
+    claims.push_back(claim(kFlickerClaim, "paper §1, §4 (text)",
+                           "animated sequence: temporal CV of the error against the per-frame reference",
+                           f.at("fis_tok15").error_cv, f.at("fis_modified").error_cv));
+}
+
+// Fig. 6: from the smallest to the largest K of the sweep, flicker should fall and the error grow.
+void add_k_sweep_claims(json& claims, const QualityModel& m) {
+  for (const char* gen : {"fis_modified", "fis_tok15"}) {
+    const auto it = std::find_if(m.k_sweep.begin(), m.k_sweep.end(), [&](const auto& s) { return s.first == gen; });
+    if (it == m.k_sweep.end() || it->second.size() < 2) continue;
+    const KSweepRow& lo = it->second.front();
+    const KSweepRow& hi = it->second.back();
+    const double cv_lo = lo.weighted_cv, cv_hi = hi.weighted_cv;
+    const double e_lo = lo.error.relative_rmse, e_hi = hi.error.relative_rmse;
+    json c = json{{"claim", "K > 1 trades illumination detail for temporal coherence (Fig. 6)."},
+                  {"source", "paper_tables.json claims[4]"},
+                  {"measure", std::string(gen) + ": K = " + num(lo.K) + " -> " + num(hi.K) + ": flicker (weighted CV) " +
+                                  arrow(cv_lo, cv_hi) + ", relative RMSE vs reference " + arrow(e_lo, e_hi)},
+                  {"generator", gen},
+                  {"flicker", {cv_lo, cv_hi}},
+                  {"relative_rmse", {e_lo, e_hi}}};
+    const bool coherence = cv_hi < cv_lo, blur = e_hi > e_lo;
+    c["verdict"] = coherence && blur ? "holds"
+                   : coherence       ? "partly: coherence improves, error does not grow"
+                   : blur            ? "partly: error grows, coherence does not improve"
+                                     : "does not hold";
+    claims.push_back(c);
+  }
 }
 
 }  // namespace
 
 void add_claim_verdicts(json& r) {
+  const QualityModel m = quality_model_from_json(r, "the quality document");
   json claims = json::array();
-  const std::string fig1 =
-      "Modified FIS reduces overlaps of and gaps between filtering kernels (Fig. 1) and the too-bright VSGLs they "
-      "cause (Fig. 5).";
-  for (const char* view : {"light_view", "camera_view"}) {
-    const json& g = r["views"][view]["generators"];
-    if (!g.contains("fis_tok15") || !g.contains("fis_modified")) continue;
-    claims.push_back(excess_claim(fig1, view, g["fis_tok15"]["coverage"], g["fis_modified"]["coverage"]));
-    const double ts = g["fis_tok15"]["coverage"]["mass_over_target"]["stdev"].get<double>();
-    const double ms = g["fis_modified"]["coverage"]["mass_over_target"]["stdev"].get<double>();
-    claims.push_back(claim(fig1, "paper §3 (Eq. 2-3)",
-                           std::string(view) + ": stdev of kernel PDF mass a(l)p_bar / (K/N)", ts, ms));
-    const double tb = g["fis_tok15"]["power"]["max_over_mean"].get<double>();
-    const double mb = g["fis_modified"]["power"]["max_over_mean"].get<double>();
-    claims.push_back(claim(fig1, "paper_tables.json claims[3]",
-                           std::string(view) + ": too-bright VSGLs, max Phi_i / mean Phi", tb, mb));
-  }
-  if (has(r, "flicker_static", "generators") && r["flicker_static"]["generators"].contains("fis_tok15") &&
-      r["flicker_static"]["generators"].contains("fis_modified")) {
-    const json& f = r["flicker_static"]["generators"];
-    const double t = f["fis_tok15"]["weighted_cv"].get<double>(), m = f["fis_modified"]["weighted_cv"].get<double>();
-    claims.push_back(claim("Using our kernel size, flickering artifacts are reduced significantly for a high-frequency "
-                           "PDF.",
-                           "paper §1, §4 (text)", "static scene, per-frame lattice offset: luminance-weighted temporal CV",
-                           t, m));
-  }
-  if (r.contains("flicker_animated")) {
-    const json& f = r["flicker_animated"]["generators"];
-    if (f.contains("fis_tok15") && f.contains("fis_modified")) {
-      const double t = f["fis_tok15"]["error_cv"].get<double>(), m = f["fis_modified"]["error_cv"].get<double>();
-      claims.push_back(claim("Using our kernel size, flickering artifacts are reduced significantly for a "
-                             "high-frequency PDF.",
-                             "paper §1, §4 (text)",
-                             "animated sequence: temporal CV of the error against the per-frame reference", t, m));
-    }
-  }
-  if (r.contains("k_sweep")) {
-    for (const char* gen : {"fis_modified", "fis_tok15"}) {
-      if (!r["k_sweep"].contains(gen) || r["k_sweep"][gen].size() < 2) continue;
-      const json& rows = r["k_sweep"][gen];
-      const json& lo = rows.front();
-      const json& hi = rows.back();
-      const double cv_lo = lo["weighted_cv"].get<double>(), cv_hi = hi["weighted_cv"].get<double>();
-      const double e_lo = lo["error"]["relative_rmse"].get<double>(), e_hi = hi["error"]["relative_rmse"].get<double>();
-      json c = json{{"claim", "K > 1 trades illumination detail for temporal coherence (Fig. 6)."},
-                    {"source", "paper_tables.json claims[4]"},
-                    {"measure", std::string(gen) + ": K = " + num(lo["K"].get<double>()) + " -> " +
-                                    num(hi["K"].get<double>()) + ": flicker (weighted CV) " + arrow(cv_lo, cv_hi) +
-                                    ", relative RMSE vs reference " + arrow(e_lo, e_hi)},
-                    {"generator", gen},
-                    {"flicker", {cv_lo, cv_hi}},
-                    {"relative_rmse", {e_lo, e_hi}}};
-      const bool coherence = cv_hi < cv_lo, blur = e_hi > e_lo;
-      c["verdict"] = coherence && blur ? "holds"
-                     : coherence       ? "partly: coherence improves, error does not grow"
-                     : blur            ? "partly: error grows, coherence does not improve"
-                                       : "does not hold";
-      claims.push_back(c);
-    }
-  }
+  for (const char* view : {"light_view", "camera_view"}) add_view_claims(claims, m.views.at(view), view);
+  add_flicker_claims(claims, m);
+  add_k_sweep_claims(claims, m);
   for (const char* t : {"Modified FIS costs about 5 microseconds more in total than Tok15 FIS.",
                         "Modified FIS is about 7-9 times faster than the k-means generators.",
                         "FIS cost is almost independent of the PDF; k-means cost is not.",
@@ -137,26 +137,26 @@ void add_claim_verdicts(json& r) {
   r["claims"] = claims;
 }
 
-std::string quality_markdown(const json& r, const std::vector<QualityPicture>& pictures) {
-  std::ostringstream md;
-  const auto gens = r["config"]["generators"].get<std::vector<std::string>>();
-  md << "# Quality: " << r["scene"].get<std::string>() << "\n\n";
-  md << "Capture `" << r["capture"]["path"].get<std::string>() << "` (G-buffer " << r["capture"]["gbuffer"][0] << "x"
-     << r["capture"]["gbuffer"][1] << ", RSM " << r["capture"]["rsm"][0] << "^2), device "
-     << r["device"]["name"].get<std::string>() << ", vsgl-bench " << r["build"]["vsgl_bench_version"].get<std::string>()
-     << " (commit " << r["build"]["git_commit"].get<std::string>()
-     << (r["build"]["git_dirty"].get<bool>() ? ", dirty" : "") << "). N = " << r["config"]["light_vsgls"]
-     << " (light view), " << r["config"]["camera_vsgls"] << " (camera view), K = " << r["config"]["K"]
-     << ". Schema `vsgl-quality` v" << r["schema_version"] << "; every number is in `quality.json`.\n\n";
+namespace {
 
+void write_heading(std::ostringstream& md, const QualityModel& m) {
+  md << "# Quality: " << m.scene << "\n\n";
+  md << "Capture `" << m.capture_path << "` (G-buffer " << m.gbuffer_size[0] << "x" << m.gbuffer_size[1] << ", RSM "
+     << m.rsm_size[0] << "^2), device " << m.device_name << ", vsgl-bench " << m.version << " (commit " << m.git_commit
+     << (m.git_dirty ? ", dirty" : "") << "). N = " << m.light_vsgls << " (light view), " << m.camera_vsgls
+     << " (camera view), K = " << m.K << ". Schema `vsgl-quality` v" << m.schema_version
+     << "; every number is in `quality.json`.\n\n";
+}
+
+void write_claims(std::ostringstream& md, const QualityModel& m) {
   md << "## Claims\n\n| claim | measure | fis_tok15 | fis_modified | verdict |\n|---|---|---|---|---|\n";
-  for (const json& c : r["claims"]) {
-    md << "| " << c["claim"].get<std::string>() << " | " << c["measure"].get<std::string>() << " | ";
-    if (c.contains("fis_tok15"))
-      md << num(c["fis_tok15"].get<double>()) << " | " << num(c["fis_modified"].get<double>());
+  for (const QualityClaimRow& c : m.claims) {
+    md << "| " << c.claim << " | " << c.measure << " | ";
+    if (c.fis_tok15)
+      md << num(*c.fis_tok15) << " | " << num(c.fis_modified.value_or(0.0));
     else
       md << " | ";
-    md << " | **" << c["verdict"].get<std::string>() << "** |\n";
+    md << " | **" << c.verdict << "** |\n";
   }
   md << "\nFig. 1 (the coverage rows) is judged on each generator's *excess* over its lattice floor: the "
         "count-weighted coverage error e = sum q |n - 1| / sum q (n = kernels covering texel t) of the generator on "
@@ -168,137 +168,133 @@ std::string quality_markdown(const json& r, const std::vector<QualityPicture>& p
      << num(kExcessMargin)
      << " (the margin, fixed for all scenes), does not hold when it is lower by more than that. The other "
         "reduction claims hold when fis_modified is lower than fis_tok15 by more than 1%.\n";
+}
 
+void write_frequency(std::ostringstream& md, const QualityModel& m) {
   md << "\n## How high-frequency the PDFs are\n\nHaar wavelet spectrum on the mip levels: share of the PDF's "
         "energy mean(p^2) (p normalized to mean 1 over the virtual square) at wavelengths below 2^(k+1) texels "
         "(`pdf_frequency` in the JSON: 0 for a uniform PDF, about 0.5 for a texel checkerboard of 1 and 0).\n\n"
         "| view | relative variance | < 2 texels | < 4 | < 8 | < the mean kernel side | mean kernel side (texels) "
         "|\n|---|---|---|---|---|---|---|\n";
   for (const char* view : {"light_view", "camera_view"}) {
-    if (!r["views"][view].contains("pdf_frequency")) continue;
-    const json& f = r["views"][view]["pdf_frequency"];
-    const auto share = [&](std::size_t k) {
-      return k < f["fine_share"].size() ? num(f["fine_share"][k].get<double>()) : std::string("n/a");
-    };
-    md << "| " << view << " | " << num(f["relative_variance"].get<double>()) << " | " << share(0) << " | " << share(1)
-       << " | " << share(2) << " | " << num(f["share_below_kernel"].get<double>()) << " (< "
-       << num(f["share_below_kernel_side_texels"].get<double>()) << ") | "
-       << num(f["mean_kernel_side_texels"].get<double>()) << " |\n";
+    if (!m.views.at(view).pdf_frequency) continue;
+    const PdfFrequencySummary& f = *m.views.at(view).pdf_frequency;
+    const auto share = [&](std::size_t k) { return k < f.fine_share.size() ? num(f.fine_share[k]) : std::string("n/a"); };
+    md << "| " << view << " | " << num(f.relative_variance) << " | " << share(0) << " | " << share(1) << " | " << share(2)
+       << " | " << num(f.share_below_kernel) << " (< " << num(f.share_below_kernel_side_texels) << ") | "
+       << num(f.mean_kernel_side_texels) << " |\n";
   }
+}
 
-  for (const char* view : {"light_view", "camera_view"}) {
-    const json& v = r["views"][view];
-    md << "\n## " << view << " (N = " << v["vsgls"] << ", total flux " << num(v["total_flux"].get<double>())
-       << ")\n\n| metric |";
-    for (const auto& g : gens) md << " " << g << " |";
-    md << "\n|---|";
-    for (std::size_t i = 0; i < gens.size(); ++i) md << "---|";
+// One metric of a generator on a view; coverage metrics are n/a for k-means.
+using CoverageCell = std::function<std::string(const CoverageSummary&)>;
+
+void write_view(std::ostringstream& md, const QualityModel& m, const std::string& view) {
+  const ViewQuality& v = m.views.at(view);
+  md << "\n## " << view << " (N = " << v.vsgls << ", total flux " << num(v.total_flux) << ")\n\n| metric |";
+  for (const auto& g : m.generators) md << " " << g << " |";
+  md << "\n|---|";
+  for (std::size_t i = 0; i < m.generators.size(); ++i) md << "---|";
+  md << "\n";
+  const auto row = [&](const std::string& label, const std::function<std::string(const GeneratorQuality&)>& cell) {
+    md << "| " << label << " |";
+    for (const auto& g : m.generators) md << " " << cell(v.generators.at(g)) << " |";
     md << "\n";
-    const auto row = [&](const std::string& label, const std::function<std::string(const json&)>& cell) {
-      md << "| " << label << " |";
-      for (const auto& g : gens) md << " " << cell(v["generators"][g]) << " |";
-      md << "\n";
-    };
-    const auto cov = [&](const char* key) {
-      return [key](const json& g) { return g.contains("coverage") ? num(g["coverage"][key].get<double>()) : "n/a"; };
-    };
-    const auto mass = [&](const char* key) {
-      return [key](const json& g) {
-        return g.contains("coverage") ? num(g["coverage"]["mass_over_target"][key].get<double>()) : "n/a";
-      };
-    };
-    const auto nested = [&](const char* part, const char* footprint, const char* key) {
-      return [=](const json& g) {
-        return g.contains("coverage") ? num(g["coverage"][part][footprint][key].get<double>()) : "n/a";
-      };
-    };
-    row("gap (PDF-weighted, box)", cov("gap"));
-    row("overlap n >= 2 (PDF-weighted, box)", cov("overlap"));
-    row("gap + overlap (box)", cov("gap_plus_overlap"));
-    row("lattice floor: gap, box", nested("lattice_floor", "box", "gap"));
-    row("lattice floor: overlap, box", nested("lattice_floor", "box", "overlap"));
-    row("count-weighted error sum q|n-1|/sum q, box", [](const json& g) {
-      return g.contains("coverage") ? num(g["coverage"]["box"]["count_error"].get<double>()) : "n/a";
-    });
-    row("... lattice floor, box", nested("lattice_floor", "box", "count_error"));
-    row("... excess over the floor, box", nested("excess", "box", "count_error"));
-    row("count-weighted error, Eq. 3 footprint", [](const json& g) {
-      return g.contains("coverage") ? num(g["coverage"]["eq3"]["count_error"].get<double>()) : "n/a";
-    });
-    row("... lattice floor, Eq. 3", nested("lattice_floor", "eq3", "count_error"));
-    row("... **excess over the floor, Eq. 3 (the verdict)**", nested("excess", "eq3", "count_error"));
-    row("gap / surplus, Eq. 3", [](const json& g) {
-      return g.contains("coverage") ? num(g["coverage"]["eq3"]["gap"].get<double>()) + " / " +
-                                          num(g["coverage"]["eq3"]["surplus"].get<double>())
-                                    : "n/a";
-    });
-    row("PDF-weighted mean n, Eq. 3", [](const json& g) {
-      return g.contains("coverage") ? num(g["coverage"]["eq3"]["mean_count"].get<double>()) : "n/a";
-    });
-    row("kernel mass / (K/N): mean", mass("mean"));
-    row("kernel mass / (K/N): stdev", mass("stdev"));
-    row("kernel mass / (K/N): min", mass("min"));
-    row("kernel mass / (K/N): max", mass("max"));
-    row("max Phi_i / mean", [](const json& g) { return num(g["power"]["max_over_mean"].get<double>()); });
-    row("p99 Phi_i / mean", [](const json& g) { return num(g["power"]["p99_over_mean"].get<double>()); });
-    row("sum Phi / total flux", [](const json& g) { return num(g["power"]["power_ratio"].get<double>()); });
-  }
-  md << "\nCoverage is defined for the FIS generators only (a k-means cluster has no square footprint): n/a.\n";
+  };
+  const auto cov = [&](const std::string& label, const CoverageCell& cell) {
+    row(label, [&](const GeneratorQuality& g) { return g.coverage ? cell(*g.coverage) : std::string("n/a"); });
+  };
+  const auto power = [&](const std::string& label, double PowerSummary::*field) {
+    row(label, [&](const GeneratorQuality& g) { return num(g.power.*field); });
+  };
+  cov("gap (PDF-weighted, box)", [](const CoverageSummary& c) { return num(c.gap); });
+  cov("overlap n >= 2 (PDF-weighted, box)", [](const CoverageSummary& c) { return num(c.overlap); });
+  cov("gap + overlap (box)", [](const CoverageSummary& c) { return num(c.gap_plus_overlap); });
+  cov("lattice floor: gap, box", [](const CoverageSummary& c) { return num(c.floor_box.gap); });
+  cov("lattice floor: overlap, box", [](const CoverageSummary& c) { return num(c.floor_box.overlap.value_or(0.0)); });
+  cov("count-weighted error sum q|n-1|/sum q, box", [](const CoverageSummary& c) { return num(c.box.count_error); });
+  cov("... lattice floor, box", [](const CoverageSummary& c) { return num(c.floor_box.count_error); });
+  cov("... excess over the floor, box", [](const CoverageSummary& c) { return num(c.excess_box.count_error); });
+  cov("count-weighted error, Eq. 3 footprint", [](const CoverageSummary& c) { return num(c.eq3.count_error); });
+  cov("... lattice floor, Eq. 3", [](const CoverageSummary& c) { return num(c.floor_eq3.count_error); });
+  cov("... **excess over the floor, Eq. 3 (the verdict)**", [](const CoverageSummary& c) { return num(c.excess_eq3.count_error); });
+  cov("gap / surplus, Eq. 3", [](const CoverageSummary& c) { return num(c.eq3.gap) + " / " + num(c.eq3.surplus); });
+  cov("PDF-weighted mean n, Eq. 3", [](const CoverageSummary& c) { return num(c.eq3.mean_count); });
+  cov("kernel mass / (K/N): mean", [](const CoverageSummary& c) { return num(c.mass_over_target.mean); });
+  cov("kernel mass / (K/N): stdev", [](const CoverageSummary& c) { return num(c.mass_over_target.stdev); });
+  cov("kernel mass / (K/N): min", [](const CoverageSummary& c) { return num(c.mass_over_target.min); });
+  cov("kernel mass / (K/N): max", [](const CoverageSummary& c) { return num(c.mass_over_target.max); });
+  power("max Phi_i / mean", &PowerSummary::max_over_mean);
+  power("p99 Phi_i / mean", &PowerSummary::p99_over_mean);
+  power("sum Phi / total flux", &PowerSummary::power_ratio);
+}
 
-  const json& ref = r["reference"];
-  md << "\n## Error against the reference (light-view VSGLs lighting the camera view)\n\nReference: "
-     << ref["vpls"] << " VPLs (RSM subsampled to " << ref["reference_rsm_side"] << "^2, stride " << ref["rsm_stride"]
-     << ", sum Phi / flux " << num(ref["power_ratio"].get<double>()) << "), image " << ref["image"][0] << "x"
-     << ref["image"][1] << ". " << ref["method"].get<std::string>()
+void write_reference_error(std::ostringstream& md, const QualityModel& m) {
+  md << "\n## Error against the reference (light-view VSGLs lighting the camera view)\n\nReference: " << m.reference_vpls
+     << " VPLs (RSM subsampled to " << m.reference_rsm_side << "^2, stride " << m.reference_rsm_stride << ", sum Phi / flux "
+     << num(m.reference_power_ratio) << "), image " << m.reference_image[0] << "x" << m.reference_image[1] << ". "
+     << m.reference_method
      << ". p99 pixel error: 99th percentile of |dY| / mean Y(reference).\n\n| generator | relative RMSE | p99 pixel "
         "error |\n|---|---|---|\n";
-  for (const auto& g : gens)
-    md << "| " << g << " | " << num(r["reference_error"][g]["relative_rmse"].get<double>()) << " | "
-       << num(r["reference_error"][g]["p99_pixel_error"].get<double>()) << " |\n";
+  for (const auto& g : m.generators)
+    md << "| " << g << " | " << num(m.reference_error.at(g).relative_rmse) << " | " << num(m.reference_error.at(g).p99_pixel_error)
+       << " |\n";
+}
 
-  const json& fs = r["flicker_static"];
-  md << "\n## Flicker, static scene (" << r["config"]["frames"] << " frames, only the lattice offset changes; image "
-     << fs["image"][0] << "x" << fs["image"][1] << ")\n\n| generator | weighted temporal CV | stdev of total power | "
-                                                   "relative stdev of total power |\n|---|---|---|---|\n";
-  for (const auto& g : gens) {
-    const json& f = fs["generators"][g];
-    md << "| " << g << " | " << num(f["weighted_cv"].get<double>()) << " | " << num(f["power_stdev"].get<double>())
-       << " | " << num(f["power_relative_stdev"].get<double>()) << " |\n";
+void write_flicker(std::ostringstream& md, const QualityModel& m) {
+  md << "\n## Flicker, static scene (" << m.frames << " frames, only the lattice offset changes; image " << m.flicker_image[0]
+     << "x" << m.flicker_image[1] << ")\n\n| generator | weighted temporal CV | stdev of total power | "
+                                     "relative stdev of total power |\n|---|---|---|---|\n";
+  for (const auto& g : m.generators) {
+    const StaticFlicker& f = m.flicker_static.at(g);
+    md << "| " << g << " | " << num(f.weighted_cv) << " | " << num(f.power_stdev) << " | " << num(f.power_relative_stdev) << " |\n";
   }
-
-  if (r.contains("flicker_animated")) {
-    const json& fa = r["flicker_animated"];
-    md << "\n## Flicker, animated sequence (" << fa["frames"] << " frames of `" << fa["sequence"].get<std::string>()
-       << "`; light and camera move)\n\n" << fa["note"].get<std::string>() << ". Reference weighted CV "
-       << num(fa["reference_weighted_cv"].get<double>())
-       << ".\n\n| generator | weighted temporal CV | error CV | relative stdev of total power |\n|---|---|---|---|\n";
-    for (const auto& g : gens) {
-      const json& f = fa["generators"][g];
-      md << "| " << g << " | " << num(f["weighted_cv"].get<double>()) << " | " << num(f["error_cv"].get<double>())
-         << " | " << num(f["power_relative_stdev"].get<double>()) << " |\n";
-    }
-  } else {
+  if (!m.flicker_animated) {
     md << "\n## Flicker, animated sequence\n\nNot run (no `--sequence DIR`).\n";
+    return;
   }
+  const QualityModel::Animated& fa = *m.flicker_animated;
+  md << "\n## Flicker, animated sequence (" << fa.frames << " frames of `" << fa.sequence << "`; light and camera move)\n\n"
+     << fa.note << ". Reference weighted CV " << num(fa.reference_weighted_cv)
+     << ".\n\n| generator | weighted temporal CV | error CV | relative stdev of total power |\n|---|---|---|---|\n";
+  for (const auto& g : m.generators) {
+    const AnimatedFlicker& f = fa.generators.at(g);
+    md << "| " << g << " | " << num(f.weighted_cv) << " | " << num(f.error_cv) << " | " << num(f.power_relative_stdev) << " |\n";
+  }
+}
 
+void write_k_sweep(std::ostringstream& md, const QualityModel& m) {
   md << "\n## K sweep (Fig. 6)\n\n| generator | K | weighted CV | relative RMSE | p99 pixel error | gap + overlap | "
         "count error, Eq. 3 (floor) | max Phi_i / mean |\n|---|---|---|---|---|---|---|---|\n";
-  for (auto it = r["k_sweep"].begin(); it != r["k_sweep"].end(); ++it)
-    for (const json& row : it.value())
-      md << "| " << it.key() << " | " << num(row["K"].get<double>()) << " | " << num(row["weighted_cv"].get<double>())
-         << " | " << num(row["error"]["relative_rmse"].get<double>()) << " | "
-         << num(row["error"]["p99_pixel_error"].get<double>()) << " | "
-         << num(row["coverage"]["gap_plus_overlap"].get<double>()) << " | "
-         << num(row["coverage"]["eq3"]["count_error"].get<double>()) << " ("
-         << num(row["coverage"]["lattice_floor"]["eq3"]["count_error"].get<double>()) << ") | "
-         << num(row["power"]["max_over_mean"].get<double>()) << " |\n";
+  for (const auto& [g, rows] : m.k_sweep)
+    for (const KSweepRow& row : rows)
+      md << "| " << g << " | " << num(row.K) << " | " << num(row.weighted_cv) << " | " << num(row.error.relative_rmse) << " | "
+         << num(row.error.p99_pixel_error) << " | " << num(row.coverage.gap_plus_overlap) << " | "
+         << num(row.coverage.eq3.count_error) << " (" << num(row.coverage.floor_eq3.count_error) << ") | "
+         << num(row.power.max_over_mean) << " |\n";
+}
 
+}  // namespace
+
+std::string quality_markdown(const QualityModel& m, const std::vector<QualityPicture>& pictures) {
+  std::ostringstream md;
+  write_heading(md, m);
+  write_claims(md, m);
+  write_frequency(md, m);
+  for (const char* view : {"light_view", "camera_view"}) write_view(md, m, view);
+  md << "\nCoverage is defined for the FIS generators only (a k-means cluster has no square footprint): n/a.\n";
+  write_reference_error(md, m);
+  write_flicker(md, m);
+  write_k_sweep(md, m);
   md << "\n## Pictures\n\n";
   for (const auto& p : pictures) md << "- `" << p.file << "`: " << p.description << "\n";
   md << "\n## Run time\n\n";
-  for (auto it = r["timings_s"].begin(); it != r["timings_s"].end(); ++it)
-    md << "- " << it.key() << ": " << num(it.value().get<double>()) << " s\n";
+  for (const auto& [k, v] : m.timings_s) md << "- " << k << ": " << num(v) << " s\n";
   return md.str();
+}
+
+std::string quality_markdown(const json& r, const std::vector<QualityPicture>& pictures) {
+  return quality_markdown(quality_model_from_json(r, "the quality document"), pictures);
 }
 
 }  // namespace vsgl

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "harness/quality/quality_model.hpp"
 #include "harness/quality/quality_run.hpp"
 
 namespace vsgl {
@@ -17,6 +18,8 @@ void add_claim_verdicts(nlohmann::json& result);
 
 // Markdown: per view, fis_tok15 vs fis_modified (and the other generators) on every metric; the
 // reference error, flicker and K sweep tables; the claims with verdicts; the pictures.
+// Throws InputError naming a missing or mistyped field of the document.
+std::string quality_markdown(const QualityModel& result, const std::vector<QualityPicture>& pictures);
 std::string quality_markdown(const nlohmann::json& result, const std::vector<QualityPicture>& pictures);
 
 }  // namespace vsgl

@@ -7,7 +7,7 @@
 //   5. the K sweep (Fig. 6): flicker and reference error of both FIS generators for each K;
 //   6. error against a VPL reference (harness/quality/quality_reference.hpp).
 // Everything is computed before anything is written; the result is a JSON document (schema
-// "vsgl-quality", version 2) plus pictures, rendered to markdown by quality_report.hpp.
+// "vsgl-quality", version 3) plus pictures, rendered to markdown by quality_report.hpp.
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -26,7 +26,9 @@ namespace vsgl {
 class Device;
 
 // 2: coverage beside its lattice floor (box and Eq. 3 footprints), pdf_frequency, Fig. 1 judged on the excess.
-inline constexpr int kQualitySchemaVersion = 2;
+// 3: every "stdev" (mass_over_target.stdev, power_stdev, power_relative_stdev) is the sample standard
+//    deviation (n - 1) of core/statistics.hpp, as in the tables; version 2 files hold the population value.
+inline constexpr int kQualitySchemaVersion = 3;
 
 struct QualityConfig {
   std::vector<std::string> generators = paper_generator_names();

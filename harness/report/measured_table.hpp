@@ -10,13 +10,12 @@
 
 #include "harness/core/source_lines.hpp"
 #include "harness/core/statistics.hpp"
+#include "harness/formats/table_model.hpp"
 #include "harness/timing/copy_bandwidth.hpp"
 #include "harness/timing/timing_runner.hpp"
 #include "harness/vk/device_info.hpp"
 
 namespace vsgl {
-
-inline constexpr int kTableSchemaVersion = 2;
 
 struct ViewExtent {
   uint32_t width = 0;

@@ -24,15 +24,9 @@ constexpr double kLinesRatioMin = 4.0;          // claim 6: k-means at least 4x 
 
 std::string number(double v) { return number_text(v, 6); }
 
-ojson claim(const std::string& text, const std::string& id, const std::string& criterion, ojson measured,
-            std::optional<bool> holds, const std::string& note, bool informative) {
-  return ojson{{"id", id},
-               {"claim", text},
-               {"criterion", criterion},
-               {"measured", std::move(measured)},
-               {"holds", holds ? ojson(*holds) : ojson(nullptr)},
-               {"note", note},
-               {"informative_only", informative}};
+TableClaim claim(const std::string& text, const std::string& id, const std::string& criterion, ojson measured,
+                 std::optional<bool> holds, const std::string& note, bool informative) {
+  return TableClaim{id, text, criterion, std::move(measured), holds, note, informative};
 }
 
 }  // namespace
@@ -46,6 +40,12 @@ OverheadVerdict judge_overhead(double low_us, double high_us, double bound_us, b
 }
 
 nlohmann::ordered_json claims_json(const MeasuredTable& t, const MeasuredTable* other, const ReportContext& ctx) {
+  ojson out = ojson::array();
+  for (const TableClaim& c : table_claims(t, other, ctx)) out.push_back(to_json(c));
+  return out;
+}
+
+std::vector<TableClaim> table_claims(const MeasuredTable& t, const MeasuredTable* other, const ReportContext& ctx) {
   const auto& texts = ctx.paper.at("claims");
   if (!texts.is_array() || texts.size() != 6)
     throw InputError(ctx.paper_path + ": expected the paper's 6 claims, found " + std::to_string(texts.size()));
@@ -53,7 +53,7 @@ nlohmann::ordered_json claims_json(const MeasuredTable& t, const MeasuredTable* 
   // A CPU device (lavapipe) says nothing about GPU performance: its verdicts are informative.
   const bool informative = ctx.device.type == VK_PHYSICAL_DEVICE_TYPE_CPU;
   const bool tok = has_generator(t, "fis_tok15"), mod = has_generator(t, "fis_modified");
-  ojson out = ojson::array();
+  std::vector<TableClaim> out;
 
   {  // 1: the modified kernel costs only microseconds more. Judged on the 95 % interval of the
      // per-round differences of the generator totals (DESIGN.md §9), never on one noisy number: holds

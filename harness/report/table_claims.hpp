@@ -3,6 +3,7 @@
 // table with its threshold named once below; on a CPU device the timing verdicts are informative.
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -25,6 +26,8 @@ struct OverheadVerdict {
 OverheadVerdict judge_overhead(double low_us, double high_us, double bound_us, bool reaches_nominal);
 
 // `other` is the other paper table of the same run (claim 3 compares them), or nullptr.
+std::vector<TableClaim> table_claims(const MeasuredTable& t, const MeasuredTable* other, const ReportContext& ctx);
+// The same as the table JSON's "claims" array.
 nlohmann::ordered_json claims_json(const MeasuredTable& t, const MeasuredTable* other, const ReportContext& ctx);
 
 }  // namespace vsgl

@@ -10,8 +10,9 @@
 
 namespace vsgl {
 
-// The table document. `other` is the other paper table of the same run (for the Table 1 ->
+// The table model of a measured table (formats/table_model.hpp), and its document. `other` is the other paper table of the same run (for the Table 1 ->
 // Table 2 change), or nullptr. Throws std::invalid_argument when a statistic cannot be computed.
+TableModel table_model(const MeasuredTable& table, const MeasuredTable* other, const ReportContext& ctx);
 nlohmann::ordered_json table_json(const MeasuredTable& table, const MeasuredTable* other, const ReportContext& ctx);
 
 // The paper's column name of a generator ("[Tok15]", "Ours (modified FIS)", ...).

@@ -4,6 +4,7 @@
 #include <sstream>
 #include <vector>
 
+#include "harness/core/error.hpp"
 #include "harness/report/table_claims.hpp"
 
 namespace vsgl {
@@ -16,7 +17,6 @@ std::string fixed(double v, int digits = 3) {
   std::snprintf(buf, sizeof buf, "%.*f", digits, v);
   return buf;
 }
-std::string paper_cell(const ojson& v, int digits = 3) { return v.is_number() ? fixed(v.get<double>(), digits) : "—"; }
 
 std::string phase_title(const std::string& phase, const std::string& view) {
   if (phase == "additional") return view == "camera_view" ? "Additional G-buffer" : "Additional RSM";
@@ -39,36 +39,45 @@ void row(std::ostringstream& os, const std::vector<std::string>& cells) {
   os << "\n";
 }
 
-}  // namespace
+template <typename T>
+const T& need(const std::optional<T>& v, const char* what) {
+  if (!v) throw InputError(std::string("the table has no ") + what + ", which the markdown shows");
+  return *v;
+}
 
-std::string table_markdown(const ojson& t) {
-  std::ostringstream os;
-  const ojson& gens = t.at("generators");
-  const ojson& views = t.at("config").at("views");
-  // The paper's columns only for the paper's tables; another capture has no paper numbers.
-  const bool paper = t.at("table").is_number();
-  if (paper) {
-    os << "## Table " << t.at("table").get<int>() << ": " << t.at("title").get<std::string>() << "\n\n";
-  } else {
-    os << "## Scene " << t.at("capture").at("scene").get<std::string>() << ": " << t.at("title").get<std::string>() << "\n\n";
-  }
-  os << "Scene `" << t.at("capture").at("scene").get<std::string>() << "` on **" << t.at("device").at("name").get<std::string>()
-     << "** (" << t.at("driver").at("name").get<std::string>() << " " << t.at("driver").at("version").get<std::string>()
-     << ", Vulkan " << t.at("api_version").get<std::string>() << ")";
-  if (paper) os << "; paper: " << t.at("paper").at("gpu").get<std::string>();
-  const ojson& capture = t.at("capture");
-  if (capture.contains("source")) {
-    const ojson& src = capture.at("source");
-    os << "; from " << src.at("format").get<std::string>() << " file `" << src.at("file").get<std::string>() << "` ("
-       << src.at("triangles").get<uint64_t>() << " triangles, " << src.at("content_hash").get<std::string>() << ")";
-  }
-  os << ". Median of " << t.at("timing").at("repetitions").get<int>() << " repetitions (stop: "
-     << t.at("timing").at("stop_reason").get<std::string>() << ", worst IQR/median "
-     << fixed(t.at("timing").at("worst_relative_iqr").get<double>()) << "), ms.\n\n";
+std::string paper_cell(const std::optional<double>& v, int digits = 3) { return v ? fixed(*v, digits) : "—"; }
 
+// The generator's column name (its key when the file has no label).
+std::string label_of(const TableModel& t, const std::string& g) {
+  const GeneratorTiming* gen = t.find_generator(g);
+  return gen != nullptr && gen->label ? *gen->label : g;
+}
+
+const char* view_title(const std::string& view) {
+  return view == "camera_view" ? "PDF for BRSM (camera view)" : "PDF (light view)";
+}
+
+// The heading and the line saying where and how the table was measured.
+void write_heading(std::ostringstream& os, const TableModel& t, bool paper) {
+  const std::string scene = t.capture.scene ? *t.capture.scene : t.scene.value_or("?");
+  if (paper) os << "## Table " << *t.table << ": " << need(t.title, "title") << "\n\n";
+  else os << "## Scene " << scene << ": " << need(t.title, "title") << "\n\n";
+  const DriverSummary& driver = need(t.driver, "driver");
+  os << "Scene `" << scene << "` on **" << need(t.device.name, "device name") << "** (" << driver.name << " " << driver.version << ", Vulkan "
+     << need(t.api_version, "api_version") << ")";
+  if (paper) os << "; paper: " << need(t.paper, "paper").gpu;
+  if (const auto& src = t.capture.source)
+    os << "; from " << src->format << " file `" << src->file << "` (" << src->triangles << " triangles, " << src->content_hash << ")";
+  const TimingStop& timing = need(t.timing, "timing");
+  os << ". Median of " << timing.repetitions << " repetitions (stop: " << timing.stop_reason << ", worst IQR/median "
+     << fixed(timing.worst_relative_iqr) << "), ms.\n\n";
+}
+
+// Per view the first three phases of every generator, then the generator totals.
+void write_timing_table(std::ostringstream& os, const TableModel& t, bool paper) {
   std::vector<std::string> head{""}, rule{"---"};
-  for (const auto& [g, gj] : gens.items()) {
-    head.push_back(gj.at("label").get<std::string>());
+  for (const GeneratorTiming& g : t.generators) {
+    head.push_back(label_of(t, g.name));
     rule.push_back("---:");
     if (!paper) continue;
     head.push_back("paper");
@@ -78,134 +87,140 @@ std::string table_markdown(const ojson& t) {
   row(os, head);
   row(os, rule);
   for (const char* view : {"camera_view", "light_view"}) {
-    const ojson& vc = views.at(view);
-    std::vector<std::string> title{std::string("**") + (std::string(view) == "camera_view" ? "PDF for BRSM (camera view)" : "PDF (light view)") +
-                                   "**, N = " + std::to_string(vc.at("vsgl_count").get<int>())};
-    for (std::size_t i = 0; i < per_generator * gens.size(); ++i) title.emplace_back("");
+    std::vector<std::string> title{std::string("**") + view_title(view) + "**, N = " + std::to_string(t.vsgl_count(view))};
+    for (std::size_t i = 0; i < per_generator * t.generators.size(); ++i) title.emplace_back("");
     row(os, title);
     for (std::size_t p = 0; p < 3; ++p) {
       std::vector<std::string> cells{"phase " + std::to_string(p + 1)};
-      for (const auto& [g, gj] : gens.items()) {
-        const ojson& phases = gj.at("views").at(view).at("phases");
+      for (const GeneratorTiming& g : t.generators) {
+        const std::vector<PhaseTiming>& phases = g.views.at(view).phases;
         if (p >= phases.size()) {
           for (std::size_t i = 0; i < per_generator; ++i) cells.emplace_back("");
           continue;
         }
-        auto it = phases.begin();
-        std::advance(it, static_cast<std::ptrdiff_t>(p));
-        cells.push_back(phase_title(it.key(), view) + ": " + fixed(it.value().at("median_ms").get<double>()));
-        if (paper) cells.push_back(paper_cell(it.value().at("paper_ms")));
+        cells.push_back(phase_title(phases[p].phase, view) + ": " + fixed(phases[p].stats.median_ms));
+        if (paper) cells.push_back(paper_cell(phases[p].stats.paper_ms));
       }
       row(os, cells);
     }
   }
   std::vector<std::string> total{"**Total**"};
-  for (const auto& [g, gj] : gens.items()) {
-    total.push_back("**" + fixed(gj.at("total").at("median_ms").get<double>()) + "**");
-    if (paper) total.push_back(paper_cell(gj.at("total").at("paper_ms")));
+  for (const GeneratorTiming& g : t.generators) {
+    total.push_back("**" + fixed(g.total.median_ms) + "**");
+    if (paper) total.push_back(paper_cell(g.total.paper_ms));
   }
   row(os, total);
+}
 
-  const ojson& r = t.at("ratios");
-  if (!r.empty()) {
-    os << "\n### Ratios the paper argues with\n\n";
-    const auto ratio_row = [&](const std::string& name, const std::string& measured, const std::string& paper_value) {
-      if (paper) row(os, {name, measured, paper_value});
-      else row(os, {name, measured});
-    };
-    ratio_row("ratio", "this run", "paper");
-    ratio_row("---", "---:", "---:");
-    if (r.contains("modified_minus_tok15_us"))
-      for (const auto& [k, v] : r["modified_minus_tok15_us"].items())
-        ratio_row("modified − Tok15, " + k + " (µs)", fixed(v.at("measured").get<double>(), 1), paper_cell(v.at("paper"), 1));
-    if (r.contains("kmeans_over_modified"))
-      for (const auto& [k, v] : r["kmeans_over_modified"].items())
-        ratio_row(k + " / modified total", fixed(v.at("measured").get<double>(), 2), paper_cell(v.at("paper"), 2));
-    if (r.contains("table1_to_table2"))
-      for (const auto& [k, v] : r["table1_to_table2"].items())
-        row(os, {k + " total, Table 2 / Table 1", fixed(v.at("measured").get<double>(), 3), paper_cell(v.at("paper"), 3)});
+void write_ratios(std::ostringstream& os, const TableRatios& r, bool paper) {
+  if (!r.modified_minus_tok15_us && !r.paired_modified_minus_tok15 && !r.kmeans_over_modified && !r.table1_to_table2) return;
+  os << "\n### Ratios the paper argues with\n\n";
+  const auto ratio_row = [&](const std::string& name, const std::string& measured, const std::string& paper_value) {
+    if (paper) row(os, {name, measured, paper_value});
+    else row(os, {name, measured});
+  };
+  ratio_row("ratio", "this run", "paper");
+  ratio_row("---", "---:", "---:");
+  for (const auto& [k, v] : r.modified_minus_tok15_us.value_or(KeyedRatios{}))
+    ratio_row("modified − Tok15, " + k + " (µs)", fixed(v.measured, 1), paper_cell(v.paper, 1));
+  for (const auto& [k, v] : r.kmeans_over_modified.value_or(KeyedRatios{}))
+    ratio_row(k + " / modified total", fixed(v.measured, 2), paper_cell(v.paper, 2));
+  for (const auto& [k, v] : r.table1_to_table2.value_or(KeyedRatios{}))
+    row(os, {k + " total, Table 2 / Table 1", fixed(v.measured, 3), paper_cell(v.paper, 3)});
+}
+
+void write_paired(std::ostringstream& os, const PairedOverhead& p, bool paper) {
+  os << "\n### Overhead of the modified FIS, paired by round (µs)\n\n"
+     << "Per-round differences fis_modified − fis_tok15 (same round, so drift and the shared passes' noise "
+        "cancel): median, Hodges–Lehmann estimate and its "
+     << fixed(100 * p.nominal_confidence, 0) << " % distribution-free interval (Wilcoxon signed-rank).\n\n";
+  // The paper's column only for the paper's tables, as above.
+  std::vector<std::string> columns{"difference", "median", "Hodges–Lehmann", "interval", "confidence", "rounds"};
+  if (paper) columns.push_back("paper");
+  row(os, columns);
+  row(os, std::vector<std::string>(columns.size(), "---:"));
+  const auto line = [&](const std::string& name, const PairedDifference& d) {
+    std::vector<std::string> cells{name, signed_fixed(d.median_us, 1), signed_fixed(d.hodges_lehmann_us, 1),
+                                   "[" + signed_fixed(d.ci_low_us, 1) + ", " + signed_fixed(d.ci_high_us, 1) + "]",
+                                   fixed(100 * d.confidence, 1) + " %" + (d.reaches_nominal ? "" : " (short)"),
+                                   std::to_string(d.rounds)};
+    if (paper) cells.push_back(paper_cell(d.paper_us, 1));
+    row(os, cells);
+  };
+  for (const auto& [view, v] : p.views) {
+    line(view + " total", v.total);
+    line(view + " filtered sampling", v.filtered_sampling);
   }
+  line("generator total", p.total);
+}
 
-  if (r.contains("paired_modified_minus_tok15")) {
-    const ojson& p = r["paired_modified_minus_tok15"];
-    os << "\n### Overhead of the modified FIS, paired by round (µs)\n\n"
-       << "Per-round differences fis_modified − fis_tok15 (same round, so drift and the shared passes' noise "
-          "cancel): median, Hodges–Lehmann estimate and its "
-       << fixed(100 * p.at("nominal_confidence").get<double>(), 0)
-       << " % distribution-free interval (Wilcoxon signed-rank).\n\n";
-    // The paper's column only for the paper's tables, as above.
-    std::vector<std::string> columns{"difference", "median", "Hodges–Lehmann", "interval", "confidence", "rounds"};
-    if (paper) columns.push_back("paper");
-    row(os, columns);
-    row(os, std::vector<std::string>(columns.size(), "---:"));
-    const auto line = [&](const std::string& name, const ojson& d) {
-      const double conf = d.at("confidence").get<double>();
-      std::vector<std::string> cells{
-          name, signed_fixed(d.at("median_us").get<double>(), 1), signed_fixed(d.at("hodges_lehmann_us").get<double>(), 1),
-          "[" + signed_fixed(d.at("ci_low_us").get<double>(), 1) + ", " + signed_fixed(d.at("ci_high_us").get<double>(), 1) + "]",
-          fixed(100 * conf, 1) + " %" + (d.at("reaches_nominal").get<bool>() ? "" : " (short)"),
-          std::to_string(d.at("rounds").get<int>())};
-      if (paper) cells.push_back(paper_cell(d.at("paper_us"), 1));
-      row(os, cells);
-    };
-    for (const char* view : {"camera_view", "light_view"}) {
-      line(std::string(view) + " total", p.at(view).at("total"));
-      line(std::string(view) + " filtered sampling", p.at(view).at("filtered_sampling"));
-    }
-    line("generator total", p.at("total"));
-  }
-
-  const ojson& bw = t.at("bandwidth");
-  const ojson& copy = bw.at("copy");
+void write_bandwidth(std::ostringstream& os, const TableModel& t, const TableBandwidth& bw) {
+  const CopyBandwidthResult& copy = bw.copy;
   os << "\n### Physical limit: copy bandwidth and the streaming passes\n\n"
-     << "Copy bandwidth (vkCmdCopyBuffer, read + written): **" << gigabytes(copy.at("bytes_per_s").get<double>())
-     << " GB/s** (buffers of " << fixed(copy.at("buffer_bytes").get<double>() / (1 << 20), 0) << " MiB, median of "
-     << copy.at("samples_ms").size() << " copies";
-  if (!copy.at("reduced_because").get<std::string>().empty())
-    os << "; smaller than the " << fixed(copy.at("requested_bytes").get<double>() / (1 << 20), 0)
-       << " MiB asked: " << copy.at("reduced_because").get<std::string>();
-  os << "). Each pass's least traffic (" << bw.at("model").get<std::string>() << ") over its median time:\n\n";
-  if (!bw.at("passes").empty()) {
-    row(os, {"generator", "view", "pass", "least traffic (MB)", "median (ms)", "achieved (GB/s)", "of copy bandwidth"});
-    row(os, {"---", "---", "---", "---:", "---:", "---:", "---:"});
-    for (const auto& [g, pass_views] : bw.at("passes").items())
-      for (const auto& [view, passes] : pass_views.items())
-        for (const auto& [pass, v] : passes.items()) {
-          std::string fraction = fixed(100 * v.at("fraction_of_copy").get<double>(), 1) + " %";
-          if (v.contains("level_by_level_fraction_of_copy"))
-            fraction += " (level by level: " + fixed(100 * v.at("level_by_level_fraction_of_copy").get<double>(), 1) + " %)";
-          row(os, {gens.at(g).at("label").get<std::string>(), view, pass,
-                   fixed(v.at("min_bytes").get<double>() * 1e-6, 1), fixed(v.at("median_ms").get<double>()),
-                   gigabytes(v.at("achieved_bytes_per_s").get<double>()), fraction});
-        }
-  }
+     << "Copy bandwidth (vkCmdCopyBuffer, read + written): **" << gigabytes(copy.bytes_per_s) << " GB/s** (buffers of "
+     << fixed(static_cast<double>(copy.buffer_bytes) / (1 << 20), 0) << " MiB, median of " << copy.samples_ms.size() << " copies";
+  if (!copy.reduced_because.empty())
+    os << "; smaller than the " << fixed(static_cast<double>(copy.requested_bytes) / (1 << 20), 0)
+       << " MiB asked: " << copy.reduced_because;
+  os << "). Each pass's least traffic (" << bw.model << ") over its median time:\n\n";
+  if (bw.passes.empty()) return;
+  row(os, {"generator", "view", "pass", "least traffic (MB)", "median (ms)", "achieved (GB/s)", "of copy bandwidth"});
+  row(os, {"---", "---", "---", "---:", "---:", "---:", "---:"});
+  for (const GeneratorTraffic& g : bw.passes)
+    for (const auto& [view, passes] : g.views)
+      for (const auto& [pass, v] : passes) {
+        std::string fraction = fixed(100 * v.fraction_of_copy, 1) + " %";
+        if (v.level_by_level_fraction_of_copy)
+          fraction += " (level by level: " + fixed(100 * *v.level_by_level_fraction_of_copy, 1) + " %)";
+        row(os, {label_of(t, g.generator), view, pass, fixed(static_cast<double>(v.min_bytes) * 1e-6, 1), fixed(v.median_ms),
+                 gigabytes(v.achieved_bytes_per_s), fraction});
+      }
+}
 
+void write_table3(std::ostringstream& os, const TableModel& t, const std::vector<Table3Row>& rows) {
   os << "\n### Table 3 analog (counted, not typed in)\n\n";
   row(os, {"generator", "compute shaders", "paper", "dispatch calls (camera / light)", "paper", "lines of code", "paper"});
   row(os, {"---", "---:", "---:", "---:", "---:", "---:", "---:"});
-  for (const auto& [g, v] : t.at("table3").items()) {
-    row(os, {gens.at(g).at("label").get<std::string>(), std::to_string(v.at("shaders").at("measured").get<int>()),
-             paper_cell(v.at("shaders").at("paper"), 0),
-             std::to_string(v.at("dispatch_calls").at("camera_view").get<int>()) + " / " +
-                 std::to_string(v.at("dispatch_calls").at("light_view").get<int>()),
-             paper_cell(v.at("dispatch_calls").at("paper"), 0), std::to_string(v.at("lines_of_code").at("measured").get<int>()),
-             paper_cell(v.at("lines_of_code").at("paper"), 0)});
-  }
+  for (const Table3Row& r : rows)
+    row(os, {label_of(t, r.generator), std::to_string(static_cast<int>(r.shaders.measured)), paper_cell(r.shaders.paper, 0),
+             std::to_string(r.dispatch_camera_view) + " / " + std::to_string(r.dispatch_light_view),
+             paper_cell(r.dispatch_paper, 0), std::to_string(r.lines_of_code), paper_cell(r.lines_of_code_paper, 0)});
+}
 
+std::string claim_verdict(const TableClaim& c) {
+  if (c.holds) return *c.holds ? "holds" : "does not hold";
+  return c.note.rfind(kInconclusivePrefix, 0) == 0 ? "inconclusive" : "not measured";
+}
+
+void write_claims(std::ostringstream& os, const std::vector<TableClaim>& claims) {
   os << "\n### The paper's claims on this run\n\n";
-  for (const auto& c : t.at("claims")) {
-    const ojson& h = c.at("holds");
-    const std::string note = c.at("note").get<std::string>();
-    const std::string verdict = !h.is_null()                          ? (h.get<bool>() ? "holds" : "does not hold")
-                                : note.rfind(kInconclusivePrefix, 0) == 0 ? "inconclusive"
-                                                                          : "not measured";
-    os << "- **" << verdict << "**" << (c.at("informative_only").get<bool>() && !c.at("measured").empty() ? " (informative: CPU device)" : "")
-       << " — " << c.at("claim").get<std::string>() << "\n  - criterion: " << c.at("criterion").get<std::string>();
-    if (!c.at("measured").empty()) os << "\n  - measured: `" << c.at("measured").dump() << "`";
-    if (!c.at("note").get<std::string>().empty()) os << "\n  - " << c.at("note").get<std::string>();
+  for (const TableClaim& c : claims) {
+    const bool measured = !c.measured.empty();
+    os << "- **" << claim_verdict(c) << "**" << (c.informative_only && measured ? " (informative: CPU device)" : "") << " — "
+       << c.claim << "\n  - criterion: " << c.criterion;
+    if (measured) os << "\n  - measured: `" << c.measured.dump() << "`";
+    if (!c.note.empty()) os << "\n  - " << c.note;
     os << "\n";
   }
+}
+
+}  // namespace
+
+std::string table_markdown(const TableModel& t) {
+  std::ostringstream os;
+  // The paper's columns only for the paper's tables; another capture has no paper numbers.
+  const bool paper = t.table.has_value();
+  write_heading(os, t, paper);
+  write_timing_table(os, t, paper);
+  const TableRatios& ratios = need(t.ratios, "ratios");
+  write_ratios(os, ratios, paper);
+  if (ratios.paired_modified_minus_tok15) write_paired(os, *ratios.paired_modified_minus_tok15, paper);
+  write_bandwidth(os, t, need(t.bandwidth, "bandwidth"));
+  write_table3(os, t, need(t.table3, "table3"));
+  write_claims(os, need(t.claims, "claims"));
   return os.str();
 }
+
+std::string table_markdown(const ojson& t) { return table_markdown(table_model_from_json(t, "the table")); }
 
 }  // namespace vsgl

@@ -1,0 +1,542 @@
+#include "harness/formats/table_model.hpp"
+
+#include <cstdint>
+#include <stdexcept>
+
+#include "harness/core/error.hpp"
+#include "harness/core/json_reader.hpp"
+#include "harness/core/printable_text.hpp"
+
+namespace vsgl {
+namespace {
+
+using ojson = nlohmann::ordered_json;
+
+ojson number_or_null(const std::optional<double>& v) { return v ? ojson(*v) : ojson(nullptr); }
+
+// ---- writing ----
+
+ojson stats_json(const TimingStats& s) {
+  ojson o{{"median_ms", s.median_ms}, {"paper_ms", number_or_null(s.paper_ms)}};
+  if (s.min_ms) o["min_ms"] = *s.min_ms;
+  if (s.max_ms) o["max_ms"] = *s.max_ms;
+  o["q1_ms"] = s.q1_ms;
+  o["q3_ms"] = s.q3_ms;
+  if (s.mean_ms) o["mean_ms"] = *s.mean_ms;
+  if (s.stdev_ms) o["stdev_ms"] = *s.stdev_ms;
+  if (s.relative_iqr) o["relative_iqr"] = *s.relative_iqr;
+  if (s.count) o["count"] = *s.count;
+  o["samples_ms"] = s.samples_ms;
+  return o;
+}
+
+ojson generator_json(const GeneratorTiming& g) {
+  ojson views = ojson::object();
+  for (const auto& [view, v] : g.views) {
+    ojson phases = ojson::object();
+    for (const PhaseTiming& p : v.phases) phases[p.phase] = stats_json(p.stats);
+    ojson vj{{"phases", phases}, {"total", stats_json(v.total)}};
+    if (v.dispatch_calls) vj["dispatch_calls"] = *v.dispatch_calls;
+    views[view] = vj;
+  }
+  ojson o = ojson::object();
+  if (g.label) o["label"] = *g.label;
+  if (g.in_paper) o["in_paper"] = *g.in_paper;
+  o["views"] = views;
+  o["total"] = stats_json(g.total);
+  return o;
+}
+
+ojson measured_paper_json(const MeasuredVsPaper& m) { return ojson{{"measured", m.measured}, {"paper", number_or_null(m.paper)}}; }
+
+ojson keyed_json(const KeyedRatios& rows) {
+  ojson o = ojson::object();
+  for (const auto& [k, v] : rows) o[k] = measured_paper_json(v);
+  return o;
+}
+
+ojson paired_json(const PairedDifference& p) {
+  return ojson{{"rounds", p.rounds},
+               {"median_us", p.median_us},
+               {"hodges_lehmann_us", p.hodges_lehmann_us},
+               {"ci_low_us", p.ci_low_us},
+               {"ci_high_us", p.ci_high_us},
+               {"confidence", p.confidence},
+               {"reaches_nominal", p.reaches_nominal},
+               {"critical_value", p.critical_value},
+               {"paper_us", number_or_null(p.paper_us)}};
+}
+
+ojson ratios_json(const TableRatios& r) {
+  ojson o = ojson::object();
+  if (r.modified_minus_tok15_us) o["modified_minus_tok15_us"] = keyed_json(*r.modified_minus_tok15_us);
+  if (r.paired_modified_minus_tok15) {
+    const PairedOverhead& p = *r.paired_modified_minus_tok15;
+    ojson pj{{"estimator", p.estimator}, {"interval", p.interval}, {"nominal_confidence", p.nominal_confidence}};
+    for (const auto& [view, v] : p.views)
+      pj[view] = ojson{{"total", paired_json(v.total)}, {"filtered_sampling", paired_json(v.filtered_sampling)}};
+    pj["total"] = paired_json(p.total);
+    o["paired_modified_minus_tok15"] = pj;
+  }
+  if (r.kmeans_over_modified) o["kmeans_over_modified"] = keyed_json(*r.kmeans_over_modified);
+  if (r.table1_to_table2) o["table1_to_table2"] = keyed_json(*r.table1_to_table2);
+  return o;
+}
+
+ojson pass_json(const PassTraffic& p) {
+  ojson o{{"min_bytes_read", p.min_bytes_read},
+          {"min_bytes_written", p.min_bytes_written},
+          {"min_bytes", p.min_bytes},
+          {"median_ms", p.median_ms},
+          {"achieved_bytes_per_s", p.achieved_bytes_per_s},
+          {"fraction_of_copy", p.fraction_of_copy}};
+  if (p.level_by_level_bytes) o["level_by_level_bytes"] = *p.level_by_level_bytes;
+  if (p.level_by_level_fraction_of_copy) o["level_by_level_fraction_of_copy"] = *p.level_by_level_fraction_of_copy;
+  return o;
+}
+
+ojson bandwidth_json(const TableBandwidth& b) {
+  const CopyBandwidthResult& c = b.copy;
+  ojson copy{{"method", c.method},
+             {"requested_bytes", c.requested_bytes},
+             {"buffer_bytes", c.buffer_bytes},
+             {"reduced_because", c.reduced_because},
+             {"bytes_per_copy", c.bytes_per_copy},
+             {"warmup_copies", c.warmup_copies},
+             {"samples_ms", c.samples_ms},
+             {"median_ms", c.median_ms},
+             {"bytes_per_s", c.bytes_per_s}};
+  ojson passes = ojson::object();
+  for (const GeneratorTraffic& g : b.passes) {
+    ojson views = ojson::object();
+    for (const auto& [view, pass_map] : g.views) {
+      ojson pj = ojson::object();
+      for (const auto& [pass, traffic] : pass_map) pj[pass] = pass_json(traffic);
+      views[view] = pj;
+    }
+    passes[g.generator] = views;
+  }
+  return ojson{{"copy", copy}, {"model", b.model}, {"passes", passes}};
+}
+
+ojson table3_json(const std::vector<Table3Row>& rows) {
+  ojson out = ojson::object();
+  for (const Table3Row& r : rows) {
+    ojson files = ojson::array();
+    for (const auto& f : r.files) files.push_back(ojson{{"path", f.path}, {"lines", f.lines}});
+    out[r.generator] =
+        ojson{{"shaders", measured_paper_json(r.shaders)},
+              {"dispatch_calls", ojson{{"camera_view", r.dispatch_camera_view},
+                                       {"light_view", r.dispatch_light_view},
+                                       {"paper", number_or_null(r.dispatch_paper)}}},
+              {"lines_of_code", ojson{{"measured", r.lines_of_code}, {"paper", number_or_null(r.lines_of_code_paper)}, {"files", files}}}};
+  }
+  return out;
+}
+
+}  // namespace
+
+nlohmann::ordered_json to_json(const TableClaim& c) {
+  return ojson{{"id", c.id},
+               {"claim", c.claim},
+               {"criterion", c.criterion},
+               {"measured", c.measured},
+               {"holds", c.holds ? ojson(*c.holds) : ojson(nullptr)},
+               {"note", c.note},
+               {"informative_only", c.informative_only}};
+}
+
+namespace {
+
+// ---- reading ----
+
+// Field access that names the file and the JSON pointer of whatever is missing or mistyped.
+class Reader : public OrderedJsonReader {
+ public:
+  explicit Reader(std::string what) : OrderedJsonReader(std::move(what), JsonPathStyle::kPointer) {}
+
+  double time(const ojson& v, const std::string& pointer) const {
+    const double t = number(v, pointer);
+    if (!(t > 0)) fail(pointer, "is not a positive time (" + printable_text(v.dump()) + ")");
+    return t;
+  }
+  double time(const ojson& obj, const std::string& pointer, const std::string& key) const {
+    return time(member(obj, pointer, key), pointer + "/" + key);
+  }
+  std::vector<double> times(const ojson& obj, const std::string& pointer, const std::string& key) const {
+    const ojson& a = member(obj, pointer, key);
+    if (!a.is_array() || a.empty()) fail(pointer + "/" + key, "is not a non-empty array");
+    std::vector<double> out;
+    for (std::size_t i = 0; i < a.size(); ++i) out.push_back(time(a[i], pointer + "/" + key + "/" + std::to_string(i)));
+    return out;
+  }
+  // A parsed file holds non-negative integers as unsigned, a document built in memory as signed.
+  uint64_t uint64(const ojson& obj, const std::string& pointer, const std::string& key) const {
+    const ojson& v = member(obj, pointer, key);
+    if (!v.is_number_integer() || (!v.is_number_unsigned() && v.get<int64_t>() < 0))
+      wrong_type(v, pointer + "/" + key, "a non-negative integer");
+    return v.get<uint64_t>();
+  }
+  uint32_t count32(const ojson& obj, const std::string& pointer, const std::string& key) const {
+    const uint64_t v = uint64(obj, pointer, key);
+    if (v > UINT32_MAX) fail(pointer + "/" + key, "is out of the unsigned 32-bit range");
+    return static_cast<uint32_t>(v);
+  }
+  // Absent (or null) is none; present must be of the type.
+  std::optional<double> optional_number(const ojson& obj, const std::string& pointer, const std::string& key) const {
+    const auto it = obj.find(key);
+    if (it == obj.end() || it->is_null()) return std::nullopt;
+    return number(*it, pointer + "/" + key);
+  }
+  std::optional<uint64_t> optional_uint64(const ojson& obj, const std::string& pointer, const std::string& key) const {
+    if (!obj.contains(key)) return std::nullopt;
+    return uint64(obj, pointer, key);
+  }
+  std::optional<std::string> optional_string(const ojson& obj, const std::string& pointer, const std::string& key) const {
+    if (!obj.contains(key)) return std::nullopt;
+    return string(obj, pointer, key);
+  }
+  bool flag(const ojson& obj, const std::string& pointer, const std::string& key, bool fallback) const {
+    const auto it = obj.find(key);
+    if (it == obj.end()) return fallback;
+    if (!it->is_boolean()) fail(pointer + "/" + key, std::string("is ") + it->type_name() + ", not a boolean");
+    return it->get<bool>();
+  }
+  // A top-level object that may be absent or null (then: nullptr).
+  const ojson* optional_section(const ojson& doc, const std::string& key) const {
+    const auto it = doc.find(key);
+    if (it == doc.end() || it->is_null()) return nullptr;
+    return &object(doc, "", key);
+  }
+  const ojson* optional_object(const ojson& obj, const std::string& pointer, const std::string& key) const {
+    if (!obj.contains(key)) return nullptr;
+    return &object(obj, pointer, key);
+  }
+};
+
+TimingStats read_stats(const Reader& r, const ojson& s, const std::string& p) {
+  TimingStats out;
+  out.samples_ms = r.times(s, p, "samples_ms");
+  out.median_ms = r.time(s, p, "median_ms");
+  out.q1_ms = r.time(s, p, "q1_ms");
+  out.q3_ms = r.time(s, p, "q3_ms");
+  out.paper_ms = r.optional_number(s, p, "paper_ms");
+  out.min_ms = r.optional_number(s, p, "min_ms");
+  out.max_ms = r.optional_number(s, p, "max_ms");
+  out.mean_ms = r.optional_number(s, p, "mean_ms");
+  out.stdev_ms = r.optional_number(s, p, "stdev_ms");
+  out.relative_iqr = r.optional_number(s, p, "relative_iqr");
+  out.count = r.optional_uint64(s, p, "count");
+  return out;
+}
+
+GeneratorTiming read_generator(const Reader& r, const std::string& name, const ojson& gj, const std::string& gp) {
+  if (!gj.is_object()) r.wrong_type(gj, gp, "an object");
+  GeneratorTiming g;
+  g.name = name;
+  g.label = r.optional_string(gj, gp, "label");
+  if (gj.contains("in_paper")) g.in_paper = r.boolean(gj, gp, "in_paper");
+  const ojson& views = r.object(gj, gp, "views");
+  for (const char* view : {"camera_view", "light_view"}) {
+    const std::string vp = gp + "/views/" + view;
+    const ojson& vj = r.object(views, gp + "/views", view);
+    ViewTiming v;
+    const ojson& phases = r.object(vj, vp, "phases");
+    if (phases.empty()) r.fail(vp + "/phases", "holds no phase");
+    for (const auto& [phase, stats] : phases.items()) {
+      if (!stats.is_object()) r.wrong_type(stats, vp + "/phases/" + phase, "an object");
+      v.phases.push_back({phase, read_stats(r, stats, vp + "/phases/" + phase)});
+    }
+    v.total = read_stats(r, r.object(vj, vp, "total"), vp + "/total");
+    if (vj.contains("dispatch_calls")) v.dispatch_calls = r.count32(vj, vp, "dispatch_calls");
+    g.views[view] = std::move(v);
+  }
+  g.total = read_stats(r, r.object(gj, gp, "total"), gp + "/total");
+  return g;
+}
+
+MeasuredVsPaper read_measured_paper(const Reader& r, const ojson& o, const std::string& p) {
+  if (!o.is_object()) r.wrong_type(o, p, "an object");
+  return {r.number(o, p, "measured"), r.optional_number(o, p, "paper")};
+}
+
+KeyedRatios read_keyed(const Reader& r, const ojson& o, const std::string& p) {
+  KeyedRatios rows;
+  for (const auto& [k, v] : o.items()) rows.emplace_back(k, read_measured_paper(r, v, p + "/" + k));
+  return rows;
+}
+
+PairedDifference read_paired(const Reader& r, const ojson& o, const std::string& p) {
+  PairedDifference d;
+  d.rounds = r.uint64(o, p, "rounds");
+  d.median_us = r.number(o, p, "median_us");
+  d.hodges_lehmann_us = r.number(o, p, "hodges_lehmann_us");
+  d.ci_low_us = r.number(o, p, "ci_low_us");
+  d.ci_high_us = r.number(o, p, "ci_high_us");
+  d.confidence = r.number(o, p, "confidence");
+  d.reaches_nominal = r.boolean(o, p, "reaches_nominal");
+  d.critical_value = r.string(o, p, "critical_value");
+  d.paper_us = r.optional_number(o, p, "paper_us");
+  return d;
+}
+
+TableRatios read_ratios(const Reader& r, const ojson& o, const std::string& p) {
+  TableRatios out;
+  if (const ojson* m = r.optional_object(o, p, "modified_minus_tok15_us")) out.modified_minus_tok15_us = read_keyed(r, *m, p + "/modified_minus_tok15_us");
+  if (const ojson* po = r.optional_object(o, p, "paired_modified_minus_tok15")) {
+    const std::string pp = p + "/paired_modified_minus_tok15";
+    PairedOverhead paired;
+    paired.estimator = r.string(*po, pp, "estimator");
+    paired.interval = r.string(*po, pp, "interval");
+    paired.nominal_confidence = r.number(*po, pp, "nominal_confidence");
+    for (const char* view : {"camera_view", "light_view"}) {
+      const ojson& v = r.object(*po, pp, view);
+      const std::string vp = pp + "/" + view;
+      paired.views[view] = {read_paired(r, r.object(v, vp, "total"), vp + "/total"),
+                            read_paired(r, r.object(v, vp, "filtered_sampling"), vp + "/filtered_sampling")};
+    }
+    paired.total = read_paired(r, r.object(*po, pp, "total"), pp + "/total");
+    out.paired_modified_minus_tok15 = paired;
+  }
+  if (const ojson* k = r.optional_object(o, p, "kmeans_over_modified")) out.kmeans_over_modified = read_keyed(r, *k, p + "/kmeans_over_modified");
+  if (const ojson* t = r.optional_object(o, p, "table1_to_table2")) out.table1_to_table2 = read_keyed(r, *t, p + "/table1_to_table2");
+  return out;
+}
+
+PassTraffic read_pass(const Reader& r, const ojson& o, const std::string& p) {
+  if (!o.is_object()) r.wrong_type(o, p, "an object");
+  PassTraffic t;
+  t.min_bytes_read = r.uint64(o, p, "min_bytes_read");
+  t.min_bytes_written = r.uint64(o, p, "min_bytes_written");
+  t.min_bytes = r.uint64(o, p, "min_bytes");
+  t.median_ms = r.number(o, p, "median_ms");
+  t.achieved_bytes_per_s = r.number(o, p, "achieved_bytes_per_s");
+  t.fraction_of_copy = r.number(o, p, "fraction_of_copy");
+  t.level_by_level_bytes = r.optional_uint64(o, p, "level_by_level_bytes");
+  t.level_by_level_fraction_of_copy = r.optional_number(o, p, "level_by_level_fraction_of_copy");
+  return t;
+}
+
+TableBandwidth read_bandwidth(const Reader& r, const ojson& o, const std::string& p) {
+  TableBandwidth b;
+  const ojson& c = r.object(o, p, "copy");
+  const std::string cp = p + "/copy";
+  b.copy.method = r.string(c, cp, "method");
+  b.copy.requested_bytes = r.uint64(c, cp, "requested_bytes");
+  b.copy.buffer_bytes = r.uint64(c, cp, "buffer_bytes");
+  b.copy.reduced_because = r.string(c, cp, "reduced_because");
+  b.copy.bytes_per_copy = r.uint64(c, cp, "bytes_per_copy");
+  b.copy.warmup_copies = r.uint64(c, cp, "warmup_copies");
+  b.copy.samples_ms = r.times(c, cp, "samples_ms");
+  b.copy.median_ms = r.time(c, cp, "median_ms");
+  b.copy.bytes_per_s = r.number(c, cp, "bytes_per_s");
+  b.model = r.string(o, p, "model");
+  for (const auto& [g, views] : r.object(o, p, "passes").items()) {
+    const std::string gp = p + "/passes/" + g;
+    if (!views.is_object()) r.wrong_type(views, gp, "an object");
+    GeneratorTraffic traffic{g, {}};
+    for (const auto& [view, passes] : views.items()) {
+      if (!passes.is_object()) r.wrong_type(passes, gp + "/" + view, "an object");
+      for (const auto& [pass, v] : passes.items()) traffic.views[view][pass] = read_pass(r, v, gp + "/" + view + "/" + pass);
+    }
+    b.passes.push_back(std::move(traffic));
+  }
+  return b;
+}
+
+std::vector<Table3Row> read_table3(const Reader& r, const ojson& o, const std::string& p) {
+  std::vector<Table3Row> rows;
+  for (const auto& [g, v] : o.items()) {
+    const std::string gp = p + "/" + g;
+    if (!v.is_object()) r.wrong_type(v, gp, "an object");
+    Table3Row row;
+    row.generator = g;
+    row.shaders = read_measured_paper(r, r.object(v, gp, "shaders"), gp + "/shaders");
+    const ojson& d = r.object(v, gp, "dispatch_calls");
+    row.dispatch_camera_view = r.count32(d, gp + "/dispatch_calls", "camera_view");
+    row.dispatch_light_view = r.count32(d, gp + "/dispatch_calls", "light_view");
+    row.dispatch_paper = r.optional_number(d, gp + "/dispatch_calls", "paper");
+    const ojson& l = r.object(v, gp, "lines_of_code");
+    const std::string lp = gp + "/lines_of_code";
+    row.lines_of_code = r.uint64(l, lp, "measured");
+    row.lines_of_code_paper = r.optional_number(l, lp, "paper");
+    const ojson& files = r.member(l, lp, "files");
+    if (!files.is_array()) r.wrong_type(files, lp + "/files", "an array");
+    for (std::size_t i = 0; i < files.size(); ++i) {
+      const std::string fp = lp + "/files/" + std::to_string(i);
+      if (!files[i].is_object()) r.wrong_type(files[i], fp, "an object");
+      row.files.push_back({r.string(files[i], fp, "path"), r.uint64(files[i], fp, "lines")});
+    }
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+std::vector<TableClaim> read_claims(const Reader& r, const ojson& a) {
+  if (!a.is_array()) r.wrong_type(a, "/claims", "an array");
+  std::vector<TableClaim> out;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const std::string p = "/claims/" + std::to_string(i);
+    const ojson& c = a[i];
+    if (!c.is_object()) r.wrong_type(c, p, "an object");
+    TableClaim claim;
+    claim.id = r.string(c, p, "id");
+    claim.claim = r.string(c, p, "claim");
+    claim.criterion = r.string(c, p, "criterion");
+    claim.measured = r.object(c, p, "measured");
+    const ojson& holds = r.member(c, p, "holds");
+    if (!holds.is_null()) claim.holds = r.boolean(c, p, "holds");
+    claim.note = r.string(c, p, "note");
+    claim.informative_only = r.boolean(c, p, "informative_only");
+    out.push_back(std::move(claim));
+  }
+  return out;
+}
+
+CaptureSummary read_capture(const Reader& r, const ojson& c) {
+  CaptureSummary out;
+  out.fields = c;
+  if (const ojson* h = r.optional_object(c, "/capture", "hashes")) out.hashes = *h;
+  out.scene = r.optional_string(c, "/capture", "scene");
+  if (const ojson* s = r.optional_object(c, "/capture", "source")) {
+    const std::string sp = "/capture/source";
+    out.source = CaptureSummary::Source{r.string(*s, sp, "format"), r.string(*s, sp, "file"), r.string(*s, sp, "content_hash"),
+                                        r.uint64(*s, sp, "triangles")};
+  }
+  return out;
+}
+
+}  // namespace
+
+const GeneratorTiming* TableModel::find_generator(const std::string& name) const {
+  for (const GeneratorTiming& g : generators)
+    if (g.name == name) return &g;
+  return nullptr;
+}
+
+int TableModel::vsgl_count(const std::string& view) const {
+  const auto views = config.find("views");
+  if (views == config.end() || !views->is_object() || !views->contains(view) || !(*views)[view].is_object() ||
+      !(*views)[view].contains("vsgl_count") || !(*views)[view]["vsgl_count"].is_number_integer())
+    throw InputError("the table has no integer /config/views/" + view + "/vsgl_count");
+  return (*views)[view]["vsgl_count"].get<int>();
+}
+
+CaptureSummary capture_summary_from_json(const nlohmann::ordered_json& capture, const std::string& what) {
+  const Reader r(what);
+  if (!capture.is_object()) r.wrong_type(capture, "/capture", "an object");
+  return read_capture(r, capture);
+}
+
+nlohmann::ordered_json to_json(const TableModel& m) {
+  ojson doc;
+  doc["schema_version"] = m.schema_version;
+  doc["table"] = m.table ? ojson(*m.table) : ojson(nullptr);
+  if (m.title) doc["title"] = *m.title;
+  if (m.scene) doc["scene"] = *m.scene;
+  if (m.unit) doc["unit"] = *m.unit;
+  doc["device"] = m.device.fields;
+  if (m.driver) doc["driver"] = ojson{{"name", m.driver->name}, {"info", m.driver->info}, {"version", m.driver->version}};
+  if (m.api_version) doc["api_version"] = *m.api_version;
+  if (m.timestamp_period_ns) doc["timestamp_period_ns"] = *m.timestamp_period_ns;
+  if (m.timestamp_valid_bits) doc["timestamp_valid_bits"] = *m.timestamp_valid_bits;
+  doc["build"] = m.build.fields;
+  doc["run"] = m.run.fields;
+  doc["config"] = m.config;
+  doc["capture"] = m.capture.fields;
+  if (m.paper) doc["paper"] = ojson{{"source", m.paper->source}, {"file", m.paper->file}, {"gpu", m.paper->gpu}};
+  if (m.timing)
+    doc["timing"] = ojson{{"repetitions", m.timing->repetitions},
+                          {"timed_seconds", m.timing->timed_seconds},
+                          {"stop_reason", m.timing->stop_reason},
+                          {"worst_relative_iqr", m.timing->worst_relative_iqr}};
+  ojson gens = ojson::object();
+  for (const GeneratorTiming& g : m.generators) {
+    for (const char* view : {"camera_view", "light_view"})
+      if (!g.views.contains(view)) throw std::invalid_argument("generator " + g.name + " has no " + view + " timing");
+    gens[g.name] = generator_json(g);
+  }
+  doc["generators"] = gens;
+  if (m.ratios) doc["ratios"] = ratios_json(*m.ratios);
+  if (m.bandwidth) doc["bandwidth"] = bandwidth_json(*m.bandwidth);
+  if (m.table3) doc["table3"] = table3_json(*m.table3);
+  if (m.claims) {
+    ojson claims = ojson::array();
+    for (const TableClaim& c : *m.claims) claims.push_back(to_json(c));
+    doc["claims"] = claims;
+  }
+  return doc;
+}
+
+TableModel table_model_from_json(const nlohmann::ordered_json& doc, const std::string& what) {
+  const Reader r(what);
+  if (!doc.is_object()) r.fail("", "is not a JSON object");
+  TableModel m;
+  const ojson& version = r.member(doc, "", "schema_version");
+  if (!version.is_number_integer()) r.wrong_type(version, "/schema_version", "an integer");
+  m.schema_version = version.get<int>();
+  const ojson& table = r.member(doc, "", "table");
+  if (!table.is_null()) {
+    if (!table.is_number_integer()) r.fail("/table", "is " + printable_text(table.dump()) + ", not a table number or null");
+    m.table = table.get<int>();
+  }
+  m.title = r.optional_string(doc, "", "title");
+  m.scene = r.optional_string(doc, "", "scene");
+  m.unit = r.optional_string(doc, "", "unit");
+
+  if (const ojson* device = r.optional_section(doc, "device")) {
+    m.device.fields = *device;
+    m.device.name = r.optional_string(*device, "/device", "name");
+    m.device.type = device->contains("type") && (*device)["type"].is_string() ? (*device)["type"].get<std::string>() : "";
+  } else {
+    m.device.fields = nullptr;
+  }
+  if (const ojson* d = r.optional_object(doc, "", "driver"))
+    m.driver = DriverSummary{r.string(*d, "/driver", "name"), r.string(*d, "/driver", "info"), r.string(*d, "/driver", "version")};
+  m.api_version = r.optional_string(doc, "", "api_version");
+  m.timestamp_period_ns = r.optional_number(doc, "", "timestamp_period_ns");
+  m.timestamp_valid_bits = r.optional_uint64(doc, "", "timestamp_valid_bits");
+
+  if (const ojson* build = r.optional_section(doc, "build")) {
+    m.build.fields = *build;
+    m.build.git_commit = r.optional_string(*build, "/build", "git_commit");
+    m.build.git_dirty = r.flag(*build, "/build", "git_dirty", false);
+  } else {
+    m.build.fields = nullptr;
+  }
+  if (const ojson* run = r.optional_section(doc, "run")) {
+    m.run.fields = *run;
+    m.run.started_utc = r.optional_string(*run, "/run", "started_utc");
+    m.run.quick = r.flag(*run, "/run", "quick", false);
+    if (const auto slow = run->find("debug_slow"); slow != run->end()) {
+      if (!slow->is_array()) r.fail("/run/debug_slow", "is not an array");
+      for (std::size_t i = 0; i < slow->size(); ++i) {
+        if (!(*slow)[i].is_string()) r.fail("/run/debug_slow/" + std::to_string(i), "is not a generator name");
+        m.run.debug_slow.push_back((*slow)[i].get<std::string>());
+      }
+    }
+  } else {
+    m.run.fields = nullptr;
+  }
+  if (const ojson* config = r.optional_section(doc, "config")) m.config = *config;
+  else m.config = nullptr;
+  if (const ojson* capture = r.optional_section(doc, "capture")) m.capture = read_capture(r, *capture);
+  else m.capture.fields = nullptr;
+  if (const ojson* p = r.optional_object(doc, "", "paper"))
+    m.paper = PaperSource{r.string(*p, "/paper", "source"), r.string(*p, "/paper", "file"), r.string(*p, "/paper", "gpu")};
+  if (const ojson* t = r.optional_object(doc, "", "timing"))
+    m.timing = TimingStop{r.uint64(*t, "/timing", "repetitions"), r.number(*t, "/timing", "timed_seconds"),
+                          r.string(*t, "/timing", "stop_reason"), r.number(*t, "/timing", "worst_relative_iqr")};
+
+  const ojson& generators = r.object(doc, "", "generators");
+  if (generators.empty()) r.fail("/generators", "holds no generator");
+  for (const auto& [g, gj] : generators.items()) m.generators.push_back(read_generator(r, g, gj, "/generators/" + g));
+
+  if (const ojson* ratios = r.optional_object(doc, "", "ratios")) m.ratios = read_ratios(r, *ratios, "/ratios");
+  if (const ojson* b = r.optional_object(doc, "", "bandwidth")) m.bandwidth = read_bandwidth(r, *b, "/bandwidth");
+  if (const ojson* t3 = r.optional_object(doc, "", "table3")) m.table3 = read_table3(r, *t3, "/table3");
+  if (doc.contains("claims")) m.claims = read_claims(r, doc["claims"]);
+  return m;
+}
+
+}  // namespace vsgl

@@ -1,0 +1,243 @@
+#pragma once
+// The table JSON of DESIGN.md §10 (results/schema/table.schema.json) as one typed model: the
+// writer (report/table_json.cpp) fills it, the markdown (report/table_markdown.cpp) renders it,
+// and `compare`, `export` and `dashboard` (compare/regression_run.cpp) read a file into it.
+//
+// What is required: a writer always fills every field. The model itself requires only the
+// timings (per generator, view and phase the samples, median and quartiles); every other field is
+// optional here, absent in the model when absent in the file, and written back only when
+// present, so a file round-trips unchanged. A reader that needs more says so (compare needs the
+// table number, device name, build commit, run start and capture hashes). Objects the harness writes from elsewhere and only passes on
+// (device, build, run, config, capture, a claim's measurements) are kept whole as JSON, with the
+// few fields a reader needs parsed out beside them.
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace vsgl {
+
+inline constexpr int kTableSchemaVersion = 2;
+
+// DESIGN.md §9's statistics of one series (ms), with the paper's value beside it.
+struct TimingStats {
+  std::vector<double> samples_ms;  // every timed replay, positive
+  double median_ms = 0;
+  double q1_ms = 0;
+  double q3_ms = 0;
+  std::optional<double> paper_ms;  // null in the file: the paper has no number here
+  std::optional<double> min_ms, max_ms, mean_ms;
+  std::optional<double> stdev_ms;  // sample standard deviation (n - 1)
+  std::optional<double> relative_iqr;
+  std::optional<uint64_t> count;
+};
+
+struct PhaseTiming {
+  std::string phase;  // "additional", "mipmapping", "filtered_sampling", "cluster_assignment", ...
+  TimingStats stats;
+};
+
+struct ViewTiming {
+  std::vector<PhaseTiming> phases;  // in the generator's order
+  TimingStats total;
+  std::optional<uint32_t> dispatch_calls;
+};
+
+struct GeneratorTiming {
+  std::string name;  // "fis_tok15", ...
+  std::optional<std::string> label;  // the paper's column name
+  std::optional<bool> in_paper;
+  std::map<std::string, ViewTiming> views;  // "camera_view", "light_view"
+  TimingStats total;  // per round: camera view + light view
+};
+
+struct MeasuredVsPaper {
+  double measured = 0;
+  std::optional<double> paper;
+};
+
+// One per-round difference fis_modified - fis_tok15 (µs), DESIGN.md §9.
+struct PairedDifference {
+  uint64_t rounds = 0;
+  double median_us = 0;
+  double hodges_lehmann_us = 0;
+  double ci_low_us = 0;
+  double ci_high_us = 0;
+  double confidence = 0;
+  bool reaches_nominal = false;
+  std::string critical_value;  // "exact" | "normal"
+  std::optional<double> paper_us;
+};
+
+struct PairedViewDifference {
+  PairedDifference total;
+  PairedDifference filtered_sampling;
+};
+
+struct PairedOverhead {
+  std::string estimator;
+  std::string interval;
+  double nominal_confidence = 0;
+  std::map<std::string, PairedViewDifference> views;  // "camera_view", "light_view"
+  PairedDifference total;
+};
+
+// Keyed rows in the order written ("camera_view", "light_view", "total"; or generator names).
+using KeyedRatios = std::vector<std::pair<std::string, MeasuredVsPaper>>;
+
+struct TableRatios {
+  std::optional<KeyedRatios> modified_minus_tok15_us;  // difference of the medians
+  std::optional<PairedOverhead> paired_modified_minus_tok15;
+  std::optional<KeyedRatios> kmeans_over_modified;
+  std::optional<KeyedRatios> table1_to_table2;
+};
+
+struct CopyBandwidthResult {
+  std::string method;
+  uint64_t requested_bytes = 0;
+  uint64_t buffer_bytes = 0;
+  std::string reduced_because;  // empty: the buffers are the size asked for
+  uint64_t bytes_per_copy = 0;
+  uint64_t warmup_copies = 0;
+  std::vector<double> samples_ms;
+  double median_ms = 0;
+  double bytes_per_s = 0;
+};
+
+struct PassTraffic {
+  uint64_t min_bytes_read = 0;
+  uint64_t min_bytes_written = 0;
+  uint64_t min_bytes = 0;
+  double median_ms = 0;
+  double achieved_bytes_per_s = 0;
+  double fraction_of_copy = 0;
+  std::optional<uint64_t> level_by_level_bytes;  // mipmapping only
+  std::optional<double> level_by_level_fraction_of_copy;
+};
+
+struct GeneratorTraffic {
+  std::string generator;
+  std::map<std::string, std::map<std::string, PassTraffic>> views;  // view -> pass -> traffic
+};
+
+struct TableBandwidth {
+  CopyBandwidthResult copy;
+  std::string model;  // how the least traffic is counted
+  std::vector<GeneratorTraffic> passes;  // FIS generators, in column order
+};
+
+struct SourceFileLines {
+  std::string path;
+  uint64_t lines = 0;
+};
+
+struct Table3Row {
+  std::string generator;
+  MeasuredVsPaper shaders;
+  uint32_t dispatch_camera_view = 0;
+  uint32_t dispatch_light_view = 0;
+  std::optional<double> dispatch_paper;
+  uint64_t lines_of_code = 0;
+  std::optional<double> lines_of_code_paper;
+  std::vector<SourceFileLines> files;
+};
+
+// One of the paper's claims checked on this run (report/table_claims.hpp).
+struct TableClaim {
+  std::string id;
+  std::string claim;
+  std::string criterion;
+  nlohmann::ordered_json measured = nlohmann::ordered_json::object();
+  std::optional<bool> holds;  // null: not measured or inconclusive (see note)
+  std::string note;
+  bool informative_only = false;
+};
+
+struct DriverSummary {
+  std::string name, info, version;
+};
+
+struct PaperSource {
+  std::string source, file, gpu;
+};
+
+struct TimingStop {
+  uint64_t repetitions = 0;
+  double timed_seconds = 0;
+  std::string stop_reason;
+  double worst_relative_iqr = 0;
+};
+
+struct CaptureSummary {
+  nlohmann::ordered_json fields = nlohmann::ordered_json::object();  // scene, dir, recorded_now, hashes, ...
+  std::optional<nlohmann::ordered_json> hashes;  // {"gbuffer": {...}, "rsm": {...}}; compare needs them
+  std::optional<std::string> scene;
+  struct Source {
+    std::string format, file, content_hash;
+    uint64_t triangles = 0;
+  };
+  std::optional<Source> source;  // a glTF scene's
+};
+
+// `fields` null: the file has none (a test's synthetic table); compare requires them.
+struct DeviceSummary {
+  nlohmann::ordered_json fields = nlohmann::ordered_json::object();  // as `devices --json` writes it
+  std::optional<std::string> name;
+  std::string type;  // "discrete", "cpu", ... ("" when absent)
+};
+
+struct BuildSummary {
+  nlohmann::ordered_json fields = nlohmann::ordered_json::object();
+  std::optional<std::string> git_commit;
+  bool git_dirty = false;
+};
+
+struct RunSummary {
+  nlohmann::ordered_json fields = nlohmann::ordered_json::object();
+  std::optional<std::string> started_utc;
+  bool quick = false;
+  std::vector<std::string> debug_slow;  // TEST-ONLY slowed generators
+};
+
+struct TableModel {
+  int schema_version = kTableSchemaVersion;
+  std::optional<int> table;  // 1, 2; none: a user's capture (no paper numbers)
+  std::optional<std::string> title, scene, unit;
+  DeviceSummary device;
+  std::optional<DriverSummary> driver;
+  std::optional<std::string> api_version;
+  std::optional<double> timestamp_period_ns;
+  std::optional<uint64_t> timestamp_valid_bits;
+  BuildSummary build;
+  RunSummary run;
+  nlohmann::ordered_json config = nlohmann::ordered_json::object();  // views, N, K, timing options
+  CaptureSummary capture;
+  std::optional<PaperSource> paper;
+  std::optional<TimingStop> timing;
+  std::vector<GeneratorTiming> generators;  // in column order
+  std::optional<TableRatios> ratios;
+  std::optional<TableBandwidth> bandwidth;
+  std::optional<std::vector<Table3Row>> table3;
+  std::optional<std::vector<TableClaim>> claims;
+
+  const GeneratorTiming* find_generator(const std::string& name) const;
+  // config.views.<view>.vsgl_count; throws InputError when absent.
+  int vsgl_count(const std::string& view) const;
+};
+
+// The document, keys in the order of the schema. Throws std::invalid_argument for a model that
+// cannot be written (a required view missing).
+nlohmann::ordered_json to_json(const TableModel& model);
+nlohmann::ordered_json to_json(const TableClaim& claim);
+
+// Reads a table document; `what` names it in messages. Throws InputError naming the JSON pointer
+// of whatever is missing or mistyped, and a time that is not positive. A table that is null (a
+// user's capture) is read; callers that need a paper table say so.
+TableModel table_model_from_json(const nlohmann::ordered_json& doc, const std::string& what);
+// The capture object alone (its hashes, scene and glTF source parsed out), as at /capture.
+CaptureSummary capture_summary_from_json(const nlohmann::ordered_json& capture, const std::string& what);
+
+}  // namespace vsgl
