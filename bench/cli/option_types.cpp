@@ -64,7 +64,7 @@ CLI::Validator size_text() {
         if (w == 0 || h == 0) return "must be at least 1x1, not " + text;
         return {};
       },
-      "WxH");
+      "");  // the type name says WxH
 }
 
 CLI::Validator usage_checked(std::function<void(const std::string&)> parse, std::string description) {
