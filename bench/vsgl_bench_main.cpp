@@ -29,6 +29,10 @@ int dispatch(int argc, char** argv) {
       vsgl::cli::add_compare_command(app), vsgl::cli::add_export_command(app),  vsgl::cli::add_dashboard_command(app),
   };
   app.footer("`vsgl-bench <command> --help` lists a command's options.\n\n" + vsgl::cli::exit_codes_help());
+  if (argc == 2 && std::string(argv[1]) == "help") {  // `vsgl-bench help`, as before: the top-level help
+    std::fputs(app.help().c_str(), stdout);
+    return 0;
+  }
   if (const auto exit_code = vsgl::cli::parse_command_line(app, argc, argv)) return *exit_code;
   for (const auto& c : commands)
     if (c.app->parsed()) return c.run();

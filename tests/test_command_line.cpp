@@ -29,6 +29,9 @@ TEST(CliUsage, TopLevelHelpListsEveryCommandAndTheExitCodeTable) {
   for (const auto& e : cli::exit_code_table()) EXPECT_TRUE(contains(r.output, e.meaning)) << e.meaning << "\n" << r.output;
   EXPECT_TRUE(contains(r.output, "70")) << r.output;
   EXPECT_FALSE(contains(r.output, "--copy-mib")) << "command options belong to the command's help\n" << r.output;
+  const auto help = run_cli_without_vulkan("help");
+  EXPECT_EQ(help.exit_code, 0) << help.output;
+  EXPECT_EQ(help.output, r.output);
 }
 
 TEST(CliUsage, EachCommandsHelpShowsOnlyItsOwnOptions) {
