@@ -12,8 +12,9 @@
 //               [--vsgl_replays=N]   (replays per benchmark, default 30)
 //   e.g. vsgl-gbench --benchmark_format=json --benchmark_out=gbench.json
 //
-// Every --vsgl_name option is `vsgl-bench tables --name` (underscores for dashes), read by the
-// same code (bench/cli/), so the two front ends cannot drift; exit codes are vsgl-bench's.
+// Every --vsgl_name option is `vsgl-bench tables --name` (underscores for dashes), declared by the
+// same code (bench/cli/), so the two front ends cannot drift; `vsgl-gbench --help` lists them;
+// exit codes are vsgl-bench's.
 //
 // Differences from `vsgl-bench tables`: Google Benchmark chooses the iteration counts, and the
 // cases run one after another rather than interleaved; every case is warmed up twice first.
@@ -28,9 +29,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "bench/cli/args.hpp"
+#include <CLI/CLI.hpp>
+
+#include "bench/cli/command_line.hpp"
 #include "bench/cli/exit_codes.hpp"
-#include "bench/cli/gbench_tokens.hpp"
+#include "bench/cli/option_types.hpp"
 #include "bench/cli/generator_options.hpp"
 #include "bench/cli/gpu_session.hpp"
 #include "harness/capture/capture_files.hpp"
@@ -38,6 +41,7 @@
 #include "harness/vk/device.hpp"
 #include "harness/generators/device_view.hpp"
 #include "harness/core/error.hpp"
+#include "harness/core/program_name.hpp"
 #include "harness/generators/fis/fis_generator.hpp"
 #include "harness/generators/generator_registry.hpp"
 #include "harness/timing/run_provenance.hpp"
@@ -50,7 +54,7 @@ using namespace vsgl;
 
 struct Options {
   std::string captures = "captures";
-  std::vector<int> tables{1, 2};
+  std::vector<int> tables;                // filled from --vsgl_tables unless captures are given
   std::vector<std::string> capture_dirs;  // --vsgl_capture: instead of the paper's tables
   cli::GeneratorOptions generator;
   // Replays per benchmark. Fixed, because each iteration replays the whole case while reporting
@@ -59,28 +63,26 @@ struct Options {
   uint32_t replays = 30;
 };
 
-Options parse(cli::Args& args) {
-  Options o;
-  o.captures = args.string("--captures", "captures");
-  o.capture_dirs = args.values("--capture");
-  const auto tables = args.value("--tables");
-  if (!o.capture_dirs.empty() && tables)
-    throw UsageError("--vsgl_capture times the given captures; --vsgl_tables picks the paper's: give one of them");
-  o.tables.clear();
-  if (!o.capture_dirs.empty()) {
-    o.generator = cli::read_generator_options(args);
-    if (o.generator.generators.empty()) o.generator.generators = generator_names();
-    o.replays = args.u32("--replays", 30, 1);
-    return o;
-  }
-  for (const auto& s : cli::Args(std::vector<std::string>{"--tables", tables.value_or("1,2")}).list("--tables", "1,2")) {
-    if (s != "1" && s != "2") throw UsageError("--vsgl_tables takes 1, 2 or 1,2, not '" + s + "'");
-    o.tables.push_back(s == "1" ? 1 : 2);
-  }
-  o.generator = cli::read_generator_options(args);
-  if (o.generator.generators.empty()) o.generator.generators = generator_names();
-  o.replays = args.u32("--replays", 30, 1);
-  return o;
+// The tool's own options (each `vsgl-bench tables --name` as --vsgl_name, declared by the same
+// functions); every --benchmark_* argument is left for Google Benchmark.
+void add_options(CLI::App& app, Options& o, std::vector<std::string>& tables, cli::DeviceOptions& device) {
+  const cli::OptionNames names{.gbench = true};
+  app.add_option(names("captures"), o.captures, "capture root; missing captures are recorded first")
+      ->type_name("DIR")
+      ->capture_default_str();
+  auto* table_option = cli::add_list_option(app, names("tables"), tables,
+                                            "which tables (1: CAPTURES/atrium, 2: CAPTURES/conference)",
+                                            cli::one_of({"1", "2"}));
+  app.add_option(names("capture"), o.capture_dirs,
+                 "time this capture instead (repeatable): benchmarks <scene>/..., or tableN/... for a capture of a "
+                 "paper table's scene")
+      ->allow_extra_args(false)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
+      ->type_name("DIR")
+      ->excludes(table_option);
+  cli::add_generator_options(app, o.generator, names);
+  app.add_option(names("replays"), o.replays, "replays per benchmark")->check(cli::at_least(1))->capture_default_str();
+  cli::add_device_options(app, device, names);
 }
 
 // Everything the registered benchmarks replay; alive until the end of main.
@@ -94,11 +96,29 @@ struct TableState {
 };
 
 int run(int argc, char** argv) {
-  benchmark::Initialize(&argc, argv);  // removes the --benchmark_* flags
-  cli::Args args(cli::gbench_tokens(argc, argv));
-  const Options o = parse(args);
-  cli::GpuSession session = cli::GpuSession::open(args);
-  args.finish();
+  CLI::App app("vsgl-gbench: the tables' measurements as Google Benchmark results (manual time = GPU "
+               "timestamps), for dashboards; Google Benchmark's own flags (--benchmark_format=json, "
+               "--benchmark_out=FILE, --benchmark_repetitions=R, ...) pass through",
+               "vsgl-gbench");
+  app.footer(cli::exit_codes_help());
+  app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  app.allow_extras();
+  Options o;
+  std::vector<std::string> table_names{"1", "2"};
+  cli::DeviceOptions device_options;
+  add_options(app, o, table_names, device_options);
+  if (const auto exit_code = cli::parse_command_line(app, argc, argv)) return *exit_code;
+  // What CLI11 left is Google Benchmark's, or a mistake: both are checked before any device work.
+  std::vector<std::string> extras = cli::benchmark_arguments(app);
+  std::vector<char*> gbench_argv{argv[0]};
+  for (std::string& a : extras) gbench_argv.push_back(a.data());
+  int gbench_argc = static_cast<int>(gbench_argv.size());
+  benchmark::Initialize(&gbench_argc, gbench_argv.data());
+  if (benchmark::ReportUnrecognizedArguments(gbench_argc, gbench_argv.data())) return static_cast<int>(ExitCode::kUsage);
+  if (o.capture_dirs.empty())
+    for (const auto& t : table_names) o.tables.push_back(t == "1" ? 1 : 2);
+  if (o.generator.generators.empty()) o.generator.generators = generator_names();
+  cli::GpuSession session = cli::GpuSession::open(device_options);
   Device& device = session.device();
   const DeviceInfo& info = device.info();
   require_timestamps(info);
@@ -187,5 +207,6 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  return vsgl::cli::run_reporting_errors("vsgl-gbench", [&] { return run(argc, argv); });
+  vsgl::set_program_name("vsgl-gbench");
+  return vsgl::cli::run_reporting_errors([&] { return run(argc, argv); });
 }

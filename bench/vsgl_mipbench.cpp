@@ -18,11 +18,14 @@
 
 #include <nlohmann/json.hpp>
 
-#include "bench/cli/args.hpp"
+#include <CLI/CLI.hpp>
+
+#include "bench/cli/command_line.hpp"
 #include "bench/cli/exit_codes.hpp"
-#include "bench/cli/gbench_tokens.hpp"
+#include "bench/cli/option_types.hpp"
 #include "bench/cli/gpu_session.hpp"
 #include "harness/core/error.hpp"
+#include "harness/core/program_name.hpp"
 #include "harness/generators/device_view.hpp"
 #include "harness/generators/fis/fis_generator.hpp"
 #include "harness/report/tables_run.hpp"
@@ -62,17 +65,35 @@ struct TableState {
 };
 
 int run(int argc, char** argv) {
-  benchmark::Initialize(&argc, argv);
-  cli::Args args(cli::gbench_tokens(argc, argv));
-  const std::string captures = args.string("--captures", "captures");
+  CLI::App app("vsgl-mipbench: the FIS texture path's mipmapping strategies timed alone, as Google Benchmark "
+               "results (manual time = GPU timestamps); Google Benchmark's own --benchmark_* flags pass through",
+               "vsgl-mipbench");
+  app.footer(cli::exit_codes_help());
+  app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  app.allow_extras();
+  const cli::OptionNames names{.gbench = true};
+  std::string captures = "captures";
+  std::vector<std::string> table_names{"1", "2"};
+  uint32_t replays = 30;
+  cli::DeviceOptions device_options;
+  app.add_option(names("captures"), captures, "capture root; missing captures are recorded first")
+      ->type_name("DIR")
+      ->capture_default_str();
+  cli::add_list_option(app, names("tables"), table_names, "which tables (1: CAPTURES/atrium, 2: CAPTURES/conference)",
+                       cli::one_of({"1", "2"}));
+  app.add_option(names("replays"), replays, "replays per benchmark")->check(cli::at_least(1))->capture_default_str();
+  cli::add_device_options(app, device_options, names);
+  if (const auto exit_code = cli::parse_command_line(app, argc, argv)) return *exit_code;
+  // What CLI11 left is Google Benchmark's, or a mistake: both are checked before any device work.
+  std::vector<std::string> extras = cli::benchmark_arguments(app);
+  std::vector<char*> gbench_argv{argv[0]};
+  for (std::string& a : extras) gbench_argv.push_back(a.data());
+  int gbench_argc = static_cast<int>(gbench_argv.size());
+  benchmark::Initialize(&gbench_argc, gbench_argv.data());
+  if (benchmark::ReportUnrecognizedArguments(gbench_argc, gbench_argv.data())) return static_cast<int>(ExitCode::kUsage);
   std::vector<int> tables;
-  for (const auto& s : args.list("--tables", "1,2")) {
-    if (s != "1" && s != "2") throw UsageError("--vsgl_tables takes 1, 2 or 1,2, not '" + s + "'");
-    tables.push_back(s == "1" ? 1 : 2);
-  }
-  const uint32_t replays = args.u32("--replays", 30, 1);
-  cli::GpuSession session = cli::GpuSession::open(args);
-  args.finish();
+  for (const auto& t : table_names) tables.push_back(t == "1" ? 1 : 2);
+  cli::GpuSession session = cli::GpuSession::open(device_options);
   Device& device = session.device();
   const DeviceInfo& info = device.info();
   require_timestamps(info);
@@ -130,5 +151,6 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  return vsgl::cli::run_reporting_errors("vsgl-mipbench", [&] { return run(argc, argv); });
+  vsgl::set_program_name("vsgl-mipbench");
+  return vsgl::cli::run_reporting_errors([&] { return run(argc, argv); });
 }

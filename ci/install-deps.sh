@@ -10,6 +10,7 @@ packages=(
   vulkan-validationlayers                 # Khronos validation layer (tests, --validate)
   libbenchmark-dev libgtest-dev           # Google Benchmark, GoogleTest
   nlohmann-json3-dev libglm-dev           # JSON, vector maths
+  libcli11-dev                            # command-line parsing (bench/cli/)
   libopenexr-dev                          # EXR captures
   libstb-dev                              # PNG output of the shading pass
   clang                                   # libFuzzer targets (tests/fuzz; the suite's fuzz smoke test)

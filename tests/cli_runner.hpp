@@ -12,8 +12,10 @@ struct CliResult {
   std::string output;  // stdout and stderr together
 };
 
-inline CliResult run_program(const std::string& executable, const std::string& arguments) {
-  const std::string command = executable + " " + arguments + " 2>&1";
+// `environment`: "NAME=VALUE ..." put before the command (a shell assignment).
+inline CliResult run_program(const std::string& executable, const std::string& arguments,
+                             const std::string& environment = "") {
+  const std::string command = (environment.empty() ? "" : environment + " ") + executable + " " + arguments + " 2>&1";
   CliResult result{-1, {}};
   FILE* pipe = popen(command.c_str(), "r");
   if (pipe == nullptr) return result;
@@ -25,5 +27,13 @@ inline CliResult run_program(const std::string& executable, const std::string& a
 }
 
 inline CliResult run_cli(const std::string& arguments) { return run_program(VSGL_BENCH_EXE, arguments); }
+
+// Vulkan's loader finds no driver at all: any command that reaches the device exits 4, so one
+// that exits 2 here was refused before Vulkan was touched.
+inline constexpr const char* kNoVulkanDriver = "VK_ICD_FILENAMES=/nonexistent/vsgl_icd.json VK_DRIVER_FILES=/nonexistent/vsgl_icd.json";
+
+inline CliResult run_cli_without_vulkan(const std::string& arguments) {
+  return run_program(VSGL_BENCH_EXE, arguments, kNoVulkanDriver);
+}
 
 }  // namespace vsgl::test

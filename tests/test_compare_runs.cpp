@@ -291,7 +291,7 @@ TEST(CompareCli, ExitCodesMakeACiGate) {
   EXPECT_EQ(lenient.exit_code, 0) << lenient.output;
 }
 
-TEST(CompareCli, BadInputsExitWithTwoAndSayWhy) {
+TEST(CompareCli, BadInputsExitWithThreeBadCommandLinesWithTwoAndSayWhy) {
   const TempDir dir("bad");
   const std::string good_text = synthetic_table(1, noisy(1.0, 0.01)).dump(2);
   const fs::path good = dir.write("good.json", good_text);
@@ -303,22 +303,24 @@ TEST(CompareCli, BadInputsExitWithTwoAndSayWhy) {
   const fs::path other = dir.write("other.json", synthetic_table(1, noisy(1.0, 0.01), "Test GPU", "fnv1a64:ff").dump());
   struct Case {
     std::string args, expect;
+    int exit_code;
   };
-  for (const Case& c : {Case{good.string() + " " + truncated.string(), "not valid JSON"},
-                        Case{garbage.string() + " " + good.string(), "not valid JSON"},
-                        Case{good.string() + " " + missing.string(), "/capture: missing field"},
-                        Case{good.string() + " " + other.string(), "different captures"},
-                        Case{good.string() + " " + (dir.path / "absent.json").string(), "cannot read"},
-                        Case{good.string(), "two runs"},
-                        Case{good.string() + " " + good.string() + " --alpha 2", "--alpha"}}) {
+  for (const Case& c : {Case{good.string() + " " + truncated.string(), "not valid JSON", 3},
+                        Case{garbage.string() + " " + good.string(), "not valid JSON", 3},
+                        Case{good.string() + " " + missing.string(), "/capture: missing field", 3},
+                        Case{good.string() + " " + other.string(), "different captures", 3},
+                        Case{good.string() + " " + (dir.path / "absent.json").string(), "cannot read", 3},
+                        Case{good.string(), "NEW is required", 2},
+                        Case{good.string() + " " + good.string() + " --alpha 2", "--alpha", 2},
+                        Case{good.string() + " " + good.string() + " --min-samples 1", "--min-samples", 2}}) {
     SCOPED_TRACE(c.args);
     const auto r = run_cli("compare " + c.args + " --fail-on slower");
-    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_EQ(r.exit_code, c.exit_code) << r.output;
     EXPECT_NE(r.output.find(c.expect), std::string::npos) << r.output;
   }
   const auto bad_gate = run_cli("compare " + good.string() + " " + good.string() + " --fail-on everything");
   EXPECT_EQ(bad_gate.exit_code, 2) << bad_gate.output;
-  EXPECT_NE(bad_gate.output.find("--fail-on takes"), std::string::npos) << bad_gate.output;
+  EXPECT_NE(bad_gate.output.find("--fail-on: takes"), std::string::npos) << bad_gate.output;
   const auto allowed = run_cli("compare " + good.string() + " " + other.string() + " --allow-mismatch --fail-on slower");
   EXPECT_EQ(allowed.exit_code, 0) << allowed.output;
   EXPECT_NE(allowed.output.find("Mismatch allowed"), std::string::npos);

@@ -85,7 +85,7 @@ TEST(ExportCli, WritesBothFormatsAndRefusesBadOnes) {
   EXPECT_TRUE(read_json(dir / "bmf.json").contains("table1/fis_modified/light_view/filtered_sampling"));
   const auto bad_format = run_cli("export --format csv " + kRun.string() + " --out " + (dir / "x").string());
   EXPECT_EQ(bad_format.exit_code, 2);
-  EXPECT_NE(bad_format.output.find("--format takes gab"), std::string::npos) << bad_format.output;
+  EXPECT_NE(bad_format.output.find("--format: takes gab"), std::string::npos) << bad_format.output;
   std::ofstream(dir / "broken.json") << "{\"schema_version\": 1, \"gener";
   const auto broken = run_cli("export --format gab " + (dir / "broken.json").string() + " --out " + (dir / "y").string());
   EXPECT_NE(broken.exit_code, 0);

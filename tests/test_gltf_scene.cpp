@@ -505,7 +505,7 @@ TEST(GltfRecordCli, RecordsTheRoomWithItsSourceInTheSidecar) {
   EXPECT_EQ(shade.exit_code, 0) << shade.output;
   EXPECT_TRUE(fs::exists(dir / "shade" / "shade_room_fis_modified.png")) << shade.output;
   const auto compare = test::run_cli("compare " + (dir / "t" / "room.json").string() + " " + (dir / "t" / "room.json").string());
-  EXPECT_EQ(compare.exit_code, 2) << compare.output;  // compare: bad input or incomparable runs
+  EXPECT_EQ(compare.exit_code, 3) << compare.output;  // compare: bad input or incomparable runs
   EXPECT_NE(compare.output.find("is null"), std::string::npos) << compare.output;
 
   // A light or a camera outside the room, looking away from it: refused, nothing written.

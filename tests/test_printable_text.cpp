@@ -96,7 +96,7 @@ TEST(PrintableTextInLoaders, PaperTablesKeyIsEscaped) {
 TEST(PrintableTextInLoaders, CompareCommandPrintsNoRawBytes) {
   const TempFile file("table1.json", kHostileTable);
   const auto r = test::run_cli("compare " + file.path().string() + " " + file.path().string());
-  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_EQ(r.exit_code, 3) << r.output;  // bad input
   EXPECT_NE(r.output.find("fis\\x1b[2J\\xc3\\xa9"), std::string::npos) << r.output;
   EXPECT_TRUE(all_printable_ascii(r.output)) << r.output;
 }

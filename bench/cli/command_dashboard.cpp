@@ -3,6 +3,9 @@
 // beside the paper's numbers (harness/compare/dashboard_page.hpp).
 #include <cstdio>
 #include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
 
 #include "bench/cli/commands.hpp"
 #include "harness/core/atomic_file.hpp"
@@ -13,22 +16,31 @@
 
 namespace vsgl::cli {
 
-int run_dashboard(std::vector<std::string> tokens) {
-  const std::vector<std::string> dirs = take_positionals(tokens, {"--out", "--paper"});
-  Args args(tokens);
-  const auto out = args.value("--out");
-  const std::filesystem::path paper_path =
-      args.string("--paper", (std::filesystem::path(VSGL_SOURCE_DIR) / "results/paper/paper_tables.json").string());
-  args.finish();
-  if (dirs.size() != 1) throw UsageError("dashboard takes one RESULTS_DIR");
-  if (!out) throw UsageError("dashboard needs --out DIR");
-  const std::vector<BenchRun> runs = find_table_runs(dirs[0]);
-  const nlohmann::json paper = load_paper_tables(paper_path);
-  std::filesystem::create_directories(*out);
-  const std::filesystem::path page = std::filesystem::path(*out) / "index.html";
-  write_text_atomic(page, dashboard_html(runs, paper, dirs[0], dashboard_generators()));
-  std::fprintf(stderr, "wrote %s (%zu table runs)\n", page.string().c_str(), runs.size());
-  return 0;
+Command add_dashboard_command(CLI::App& parent) {
+  CLI::App* app = parent.add_subcommand(
+      "dashboard",
+      "OUT/index.html: one self-contained page of inline SVG charts (no script, nothing fetched) of every table "
+      "JSON under RESULTS_DIR: phases per generator per run beside the paper, totals across runs");
+  struct Options {
+    std::string results;
+    std::string out;
+    std::string paper = (std::filesystem::path(VSGL_SOURCE_DIR) / "results/paper/paper_tables.json").string();
+  };
+  auto o = std::make_shared<Options>();
+  app->add_option("RESULTS_DIR", o->results, "directory searched for table JSON")->required();
+  app->add_option("--out", o->out, "output directory")->required()->type_name("DIR");
+  app->add_option("--paper", o->paper, "the paper's tables")
+      ->check(CLI::ExistingFile)
+      ->default_str("results/paper/paper_tables.json");
+  return {app, [o] {
+            const std::vector<BenchRun> runs = find_table_runs(o->results);
+            const nlohmann::json paper = load_paper_tables(o->paper);
+            std::filesystem::create_directories(o->out);
+            const std::filesystem::path page = std::filesystem::path(o->out) / "index.html";
+            write_text_atomic(page, dashboard_html(runs, paper, o->results, dashboard_generators()));
+            std::fprintf(stderr, "wrote %s (%zu table runs)\n", page.string().c_str(), runs.size());
+            return 0;
+          }};
 }
 
 }  // namespace vsgl::cli

@@ -1,6 +1,7 @@
 // `vsgl-bench devices [--json]`: every Vulkan device, its driver, API version and timestamp
 // support, and which one a run would use by default.
 #include <cstdio>
+#include <memory>
 #include <nlohmann/json.hpp>
 
 #include "bench/cli/commands.hpp"
@@ -10,9 +11,9 @@
 
 namespace vsgl::cli {
 
-int run_devices(Args& args) {
-  const bool json = args.flag("--json");
-  args.finish();
+namespace {
+
+int run_devices(bool json) {
   Instance instance;
   const auto devices = enumerate_devices(instance.get());
   int default_index = -1;
@@ -35,6 +36,17 @@ int run_devices(Args& args) {
       std::printf("no usable device\n");
   }
   return default_index >= 0 ? 0 : static_cast<int>(ExitCode::kDevice);
+}
+
+}  // namespace
+
+Command add_devices_command(CLI::App& parent) {
+  CLI::App* app = parent.add_subcommand(
+      "devices", "every Vulkan device: type, driver, API version, timestamp valid bits and period, subgroup size, why "
+                 "a device is unusable; and the default (first discrete GPU, else integrated, virtual, CPU)");
+  auto json = std::make_shared<bool>(false);
+  app->add_flag("--json", *json, "print JSON instead of text");
+  return {app, [json] { return run_devices(*json); }};
 }
 
 }  // namespace vsgl::cli

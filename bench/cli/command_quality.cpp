@@ -3,7 +3,9 @@
 // VPL reference, written as OUT/<scene>/quality.json, quality.md and PNGs (harness/quality/quality_run.hpp).
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <string>
+#include <vector>
 
 #include "bench/cli/commands.hpp"
 #include "bench/cli/generator_options.hpp"
@@ -18,44 +20,25 @@
 
 namespace vsgl::cli {
 
-int run_quality(Args& args) {
-  const auto capture_arg = args.value("--capture");
+namespace {
+
+struct QualityOptions {
+  std::string capture;
   QualityConfig config;
-  config.generators = args.list("--generators", "fis_tok15,fis_modified,kmeans_2d,kmeans_3d");
-  config.frames = args.u32("--frames", config.frames, 2);
-  config.light_vsgls = args.u32("--light-vsgls", config.light_vsgls, 1);
-  config.camera_vsgls = args.u32("--camera-vsgls", config.camera_vsgls, 1);
-  config.K = args.positive_float("--K", config.K);
-  config.kmeans_iterations = args.u32("--kmeans-iterations", config.kmeans_iterations);
-  {
-    GeneratorConfig gc;
-    read_pyramid_options(args, gc);
-    config.pyramid = gc.pyramid;
-    config.mipmapping = gc.mipmapping;
-  }
-  config.error_stride = args.u32("--error-stride", config.error_stride, 1);
-  config.flicker_width = args.u32("--flicker-width", config.flicker_width, 1);
-  config.reference_rsm = args.u32("--reference-rsm", config.reference_rsm, 1);
-  config.sequence_reference_rsm = args.u32("--sequence-reference-rsm", config.sequence_reference_rsm, 1);
-  if (const auto seq = args.value("--sequence")) config.sequence = std::filesystem::path(*seq);
-  const auto k_items = args.list("--k-sweep", "1,2,4,8");
-  const std::filesystem::path out_root = args.string("--out", "results/quality");
+  std::vector<std::string> k_sweep{"1", "2", "4", "8"};
+  std::string out = "results/quality";
+  DeviceOptions device;
+};
+
+int run_quality_command(QualityOptions& o) {
+  const std::string* capture_arg = &o.capture;
+  QualityConfig& config = o.config;
+  const std::filesystem::path out_root = o.out;
   config.source_dir = VSGL_SOURCE_DIR;
-  GpuSession session = GpuSession::open(args);
-  args.finish();
-  if (!capture_arg) throw UsageError("quality needs --capture DIR (a capture written by `vsgl-bench record`)");
   config.k_sweep.clear();
-  for (const auto& item : k_items) {
-    float K = 0.0f;
-    try {
-      K = std::stof(item);
-    } catch (const std::exception&) {
-      throw UsageError("--k-sweep: '" + item + "' is not a number");
-    }
-    if (!(K > 0.0f)) throw UsageError("--k-sweep: K must be positive, got '" + item + "'");
-    config.k_sweep.push_back(K);
-  }
+  for (const auto& item : o.k_sweep) config.k_sweep.push_back(std::stof(item));
   if (config.sequence) (void)sequence_frames(*config.sequence, config.frames);  // fail before the long work
+  GpuSession session = GpuSession::open(o.device);
 
   const Capture capture = load_capture(*capture_arg);
   std::fprintf(stderr, "quality: %s on %s\n", capture.meta.scene.c_str(), session.device().info().name.c_str());
@@ -75,6 +58,53 @@ int run_quality(Args& args) {
   std::fputs(markdown.c_str(), stdout);
   std::printf("\nwrote %s (quality.json, quality.md, %zu PNGs)\n", out_dir.string().c_str(), result.pictures.size());
   return session.finish(0);
+}
+
+}  // namespace
+
+Command add_quality_command(CLI::App& parent) {
+  CLI::App* app = parent.add_subcommand(
+      "quality",
+      "the paper's quality claims as numbers (Fig. 1, 5, 6): kernel coverage (gap, overlap, count-weighted error "
+      "beside the lattice's own floor), PDF mass per kernel, how high-frequency each view's PDF is, too-bright "
+      "VSGLs, total power, flicker, a K sweep, error against a per-texel VPL reference; writes "
+      "OUT/<scene>/quality.json, quality.md and PNGs");
+  auto o = std::make_shared<QualityOptions>();
+  QualityConfig& c = o->config;
+  c.generators = {"fis_tok15", "fis_modified", "kmeans_2d", "kmeans_3d"};
+  app->add_option("--capture", o->capture, "capture directory (written by `vsgl-bench record`)")
+      ->required()
+      ->type_name("DIR");
+  app->add_option("--frames", c.frames, "static-scene frames (only the lattice offset changes)")
+      ->check(at_least(2))
+      ->capture_default_str();
+  app->add_option_function<std::string>(
+         "--sequence", [&c](const std::string& dir) { c.sequence = std::filesystem::path(dir); },
+         "also the flicker over a recorded sequence (record --frames F)")
+      ->type_name("DIR");
+  add_generators_option(*app, c.generators, "fis_tok15,fis_modified,kmeans_2d,kmeans_3d");
+  add_list_option(*app, "--k-sweep", o->k_sweep, "K values of the Fig. 6 sweep (FIS generators)", positive_number());
+  app->add_option("--error-stride", c.error_stride, "G-buffer stride of the reference comparison")
+      ->check(at_least(1))
+      ->capture_default_str();
+  app->add_option("--flicker-width", c.flicker_width, "width of the flicker images (G-buffer stride W_gbuf/W)")
+      ->check(at_least(1))
+      ->capture_default_str();
+  app->add_option("--reference-rsm", c.reference_rsm, "reference RSM side (every lit texel a VPL)")
+      ->check(at_least(1))
+      ->capture_default_str();
+  app->add_option("--sequence-reference-rsm", c.sequence_reference_rsm, "the same for each sequence frame")
+      ->check(at_least(1))
+      ->capture_default_str();
+  add_light_vsgls_option(*app, c.light_vsgls);
+  add_camera_vsgls_option(*app, c.camera_vsgls);
+  add_K_option(*app, c.K);
+  add_kmeans_iterations_option(*app, c.kmeans_iterations);
+  add_pyramid_option(*app, c.pyramid);
+  add_mipmapping_option(*app, c.mipmapping, "FIS texture path's mip chain: single-pass, blit or per-level");
+  app->add_option("--out", o->out, "output root")->type_name("DIR")->capture_default_str();
+  add_device_options(*app, o->device);
+  return {app, [o] { return run_quality_command(*o); }};
 }
 
 }  // namespace vsgl::cli

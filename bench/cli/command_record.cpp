@@ -5,6 +5,11 @@
 #include <cstdio>
 #include <filesystem>
 #include <optional>
+#include <algorithm>
+#include <memory>
+
+#include "bench/cli/option_types.hpp"
+#include "harness/scene/brsm_pdf.hpp"
 
 #include "bench/cli/commands.hpp"
 #include "bench/cli/gpu_session.hpp"
@@ -22,40 +27,54 @@ std::uintmax_t directory_bytes(const std::filesystem::path& dir) {
   return total;
 }
 
-float parse_float(const std::string& option, const std::string& text) {
-  std::size_t used = 0;
-  float f = 0.0f;
-  try {
-    f = std::stof(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != text.size() || !std::isfinite(f)) throw UsageError(option + " takes numbers, not '" + text + "'");
-  return f;
-}
-
 // "X,Y,Z" (or, where `scalar_ok`, one number for all three).
-std::optional<glm::vec3> vec3_option(Args& args, const std::string& name, bool scalar_ok = false) {
-  const auto v = args.value(name);
-  if (!v) return std::nullopt;
-  std::vector<std::string> parts;
-  std::size_t start = 0;
-  while (true) {
-    const std::size_t comma = v->find(',', start);
-    parts.push_back(v->substr(start, comma == std::string::npos ? std::string::npos : comma - start));
-    if (comma == std::string::npos) break;
-    start = comma + 1;
-  }
-  if (parts.size() == 1 && scalar_ok) return glm::vec3(parse_float(name, parts[0]));
-  if (parts.size() != 3) throw UsageError(name + " takes X,Y,Z" + (scalar_ok ? " or one number" : "") + ", not '" + *v + "'");
-  return glm::vec3(parse_float(name, parts[0]), parse_float(name, parts[1]), parse_float(name, parts[2]));
+CLI::Validator vec3_text(bool scalar_ok) {
+  return CLI::Validator(
+      [scalar_ok](std::string& text) -> std::string {
+        const auto parts = split_list(text);
+        const bool counted = parts.size() == 3 || (scalar_ok && parts.size() == 1);
+        bool numbers = counted && std::count(text.begin(), text.end(), ',') + 1 == static_cast<long>(parts.size());
+        for (const auto& p : parts) {
+          std::size_t used = 0;
+          float f = 0.0f;
+          try {
+            f = std::stof(p, &used);
+          } catch (const std::exception&) {
+            used = 0;
+          }
+          numbers = numbers && used == p.size() && std::isfinite(f);
+        }
+        if (!numbers) return std::string("takes X,Y,Z") + (scalar_ok ? " or one number" : "") + ", not '" + text + "'";
+        return {};
+      },
+      scalar_ok ? "X,Y,Z|V" : "X,Y,Z");
 }
 
-std::optional<float> float_option(Args& args, const std::string& name) {
-  const auto v = args.value(name);
-  if (!v) return std::nullopt;
-  return parse_float(name, *v);
+glm::vec3 parse_vec3(const std::string& text) {
+  const auto parts = split_list(text);
+  if (parts.size() == 1) return glm::vec3(std::stof(parts[0]));
+  return glm::vec3(std::stof(parts[0]), std::stof(parts[1]), std::stof(parts[2]));
 }
+
+CLI::Option* add_vec3_option(CLI::App& app, const std::string& name, std::optional<glm::vec3>& target,
+                             const std::string& description, bool scalar_ok = false) {
+  return app.add_option_function<std::string>(name, [&target](const std::string& t) { target = parse_vec3(t); },
+                                              description)
+      ->check(vec3_text(scalar_ok));
+}
+
+struct RecordOptions {
+  std::optional<std::string> gltf;
+  std::vector<std::string> scenes;
+  std::optional<std::string> out;
+  std::pair<uint32_t, uint32_t> gbuffer{1920, 1088};
+  uint32_t rsm = 512;
+  uint32_t frames = 1;
+  bool ground = false;
+  GltfCameraChoice camera;
+  GltfLightChoice light;
+  DeviceOptions device;
+};
 
 void print_recorded(const std::string& name, const std::filesystem::path& dir, uint32_t f, uint32_t frames,
                     const RecordSizes& sizes, const RecordedCapture& r) {
@@ -73,38 +92,16 @@ std::filesystem::path frame_dir(const std::filesystem::path& base, uint32_t f, u
   return base / name;
 }
 
-}  // namespace
 
-int run_record(Args& args) {
-  const auto gltf = args.value("--gltf");
-  const auto scene_list = args.list("--scene", "");
-  const auto out_arg = args.value("--out");
-  const auto gbuffer = args.size("--gbuffer", {1920, 1088});
-  const uint32_t rsm = args.u32("--rsm", 512, 1);
-  const uint32_t frames = args.u32("--frames", 1, 1);
-  const bool ground = args.flag("--ground");
-  GltfCameraChoice camera;
-  GltfLightChoice light;
-  camera.camera = args.value("--camera");
-  camera.eye = vec3_option(args, "--eye");
-  camera.look_at = vec3_option(args, "--look-at");
-  camera.fov_y_deg = float_option(args, "--fov");
-  light.position = vec3_option(args, "--light-pos");
-  light.direction = vec3_option(args, "--light-dir");
-  light.cone_half_angle_deg = float_option(args, "--cone");
-  light.intensity = vec3_option(args, "--intensity", /*scalar_ok=*/true);
-  if (camera.fov_y_deg && !(*camera.fov_y_deg > 0.0f && *camera.fov_y_deg < 179.0f))
-    throw UsageError("--fov must lie in (0, 179) degrees");
-  if (light.intensity && (light.intensity->r < 0.0f || light.intensity->g < 0.0f || light.intensity->b < 0.0f))
-    throw UsageError("--intensity must not be negative");
-  const bool view_options = camera.camera || camera.eye || camera.look_at || camera.fov_y_deg || light.position ||
-                            light.direction || light.cone_half_angle_deg || light.intensity;
-  if (gltf && !scene_list.empty()) throw UsageError("--gltf and --scene both name a scene: give one");
-  if (!gltf && (view_options || ground))
-    throw UsageError("--camera, --eye, --look-at, --fov, --ground and the --light options apply to --gltf files only");
-  GpuSession session = GpuSession::open(args);
-  args.finish();
-  const RecordSizes sizes{gbuffer.first, gbuffer.second, rsm};
+int run_record(RecordOptions& o) {
+  const auto& gltf = o.gltf;
+  const auto& out_arg = o.out;
+  const auto& camera = o.camera;
+  const auto& light = o.light;
+  const bool ground = o.ground;
+  const uint32_t frames = o.frames;
+  GpuSession session = GpuSession::open(o.device);
+  const RecordSizes sizes{o.gbuffer.first, o.gbuffer.second, o.rsm};
 
   if (gltf) {
     const auto t0 = std::chrono::steady_clock::now();
@@ -136,10 +133,7 @@ int run_record(Args& args) {
     return session.finish(0);
   }
 
-  const auto scenes = scene_list.empty() ? std::vector<std::string>{"atrium"} : scene_list;
-  if (scenes.size() > 1 && out_arg)
-    throw UsageError("--out names one capture directory, and several scenes were given: leave --out out (each "
-                     "scene goes to captures/NAME) or record the scenes one at a time");
+  const auto scenes = o.scenes.empty() ? std::vector<std::string>{"atrium"} : o.scenes;
   for (const auto& name : scenes) {
     const std::filesystem::path base = out_arg ? std::filesystem::path(*out_arg) : std::filesystem::path("captures") / name;
     for (uint32_t f = 0; f < frames; ++f) {
@@ -150,6 +144,71 @@ int run_record(Args& args) {
     }
   }
   return session.finish(0);
+}
+
+}  // namespace
+
+Command add_record_command(CLI::App& parent) {
+  CLI::App* app = parent.add_subcommand(
+      "record",
+      "rasterize a procedural scene or a glTF 2.0 file into a capture (real graphics pipeline, 5 render targets): "
+      "G-buffer and RSM as OpenEXR + a JSON sidecar with the camera, the light and a hash of every channel; "
+      "builds the BRSM PDF of the RSM from " + std::to_string(kBrsmCameraVsgls) + " camera-view VSGLs");
+  auto o = std::make_shared<RecordOptions>();
+  auto* scene = add_list_option(*app, "--scene", o->scenes,
+                                "procedural scene(s): atrium (Table 1), conference (Table 2), tiny (tests)",
+                                CLI::Validator([](std::string&) { return std::string(); }, "NAME"))
+                    ->default_str("atrium");
+  auto* gltf = add_optional(*app, "--gltf", o->gltf,
+                               "a glTF 2.0 file (.gltf or .glb) instead: its default scene, materials, textures and "
+                               "normal maps (README \"Your own scenes\")")
+                   ->check(CLI::ExistingFile)
+                   ->excludes(scene);
+  add_optional(*app, "--out", o->out, "capture directory (one scene)")->default_str("captures/NAME; glTF: its scene name");
+  add_size_option(*app, "--gbuffer", o->gbuffer, "G-buffer size");
+  app->add_option("--rsm", o->rsm, "RSM size N x N")->check(at_least(1))->capture_default_str();
+  app->add_option("--frames", o->frames, "animated sequence of F frames (moving light and camera) in DIR/frame_NNNN")
+      ->check(at_least(1))
+      ->capture_default_str();
+  CLI::App* view = app->add_option_group("glTF view", "camera and light of a --gltf file");
+  std::vector<CLI::Option*> gltf_only{
+      add_optional(*view, "--camera", o->camera.camera, "the file's camera, by name or index")
+          ->default_str("the file's first, else an automatic framing"),
+      add_vec3_option(*view, "--eye", o->camera.eye, "a camera given here: its position"),
+      add_vec3_option(*view, "--look-at", o->camera.look_at, "... the point it looks at"),
+      add_optional(*view, "--fov", o->camera.fov_y_deg, "... its vertical field of view in degrees")
+          ->check(CLI::Validator(
+              [](std::string& t) {
+                float f = -1.0f;
+                if (!CLI::detail::lexical_cast(t, f)) f = -1.0f;
+                return f > 0.0f && f < 179.0f ? std::string() : "must lie in (0, 179) degrees, not " + t;
+              },
+              "(0, 179)")),
+      add_vec3_option(*view, "--light-pos", o->light.position,
+                      "the spot light's position (replaces that of the file's first KHR_lights_punctual spot, else "
+                      "of a spot placed above the bounds)"),
+      add_vec3_option(*view, "--light-dir", o->light.direction, "... its direction"),
+      add_optional(*view, "--cone", o->light.cone_half_angle_deg, "... its cone half-angle in degrees")
+          ->check(positive_number()),
+      add_vec3_option(*view, "--intensity", o->light.intensity, "... its intensity in W/sr (one value or R,G,B)",
+                      /*scalar_ok=*/true)
+          ->check(CLI::Validator([](std::string& t) {
+                    for (const auto& p : split_list(t))
+                      if (std::stof(p) < 0.0f) return std::string("must not be negative");
+                    return std::string();
+                  }, "")),
+      view->add_flag("--ground", o->ground,
+                     "add a grey floor under the model (a lone convex model has no indirect light: its BRSM PDF is "
+                     "zero)"),
+  };
+  for (CLI::Option* option : gltf_only) option->needs(gltf);
+  add_device_options(*app, o->device);
+  return {app, [o] {
+            if (o->scenes.size() > 1 && o->out)
+              throw UsageError("--out names one capture directory, and several scenes were given: leave --out out "
+                               "(each scene goes to captures/NAME) or record the scenes one at a time");
+            return run_record(*o);
+          }};
 }
 
 }  // namespace vsgl::cli

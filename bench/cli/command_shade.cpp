@@ -24,8 +24,6 @@
 namespace vsgl::cli {
 namespace {
 
-constexpr uint32_t kLightViewVsgls = 1024;  // the paper's N for the light view (DESIGN.md §2)
-
 // Every registered generator can light the view (generators/generator_registry.hpp).
 const GeneratorDescriptor& find_generator(const std::string& name) {
   try {
@@ -35,23 +33,29 @@ const GeneratorDescriptor& find_generator(const std::string& name) {
   }
 }
 
-}  // namespace
 
-int run_shade(Args& args) {
-  const auto capture_arg = args.value("--capture");
-  const auto names = args.list("--generators", "fis_tok15,fis_modified");
-  const uint32_t stride = args.u32("--stride", 1, 1);
-  const uint32_t vsgl_count = args.u32("--vsgls", kLightViewVsgls, 1);
-  const std::filesystem::path out_dir = args.string("--out", ".");
-  float exposure = args.positive_float("--exposure", 0.0f);  // 0: not given, expose automatically
+struct ShadeOptions {
+  std::string capture;
+  std::vector<std::string> generators{"fis_tok15", "fis_modified"};
+  uint32_t stride = 1;
+  uint32_t vsgls = kPaperLightVsgls;
+  std::string out = ".";
+  float exposure = 0.0f;  // 0: not given, expose automatically
   GeneratorConfig config;
-  read_pyramid_options(args, config);
-  GpuSession session = GpuSession::open(args);
-  args.finish();
-  if (!capture_arg) throw UsageError("shade needs --capture DIR (a capture written by `vsgl-bench record`)");
-  if (names.empty()) throw UsageError("--generators needs at least one generator name");
+  DeviceOptions device;
+};
+
+int run_shade(ShadeOptions& o) {
+  const std::string* capture_arg = &o.capture;
+  const auto& names = o.generators;
+  const uint32_t stride = o.stride;
+  const uint32_t vsgl_count = o.vsgls;
+  const std::filesystem::path out_dir = o.out;
+  float exposure = o.exposure;
+  GeneratorConfig& config = o.config;
   std::vector<const GeneratorDescriptor*> generators;
   for (const auto& name : names) generators.push_back(&find_generator(name));
+  GpuSession session = GpuSession::open(o.device);
 
   const Capture capture = load_capture(*capture_arg);
   Device& device = session.device();
@@ -86,6 +90,32 @@ int run_shade(Args& args) {
     std::printf("wrote %s\n", path.string().c_str());
   }
   return session.finish(0);
+}
+
+}  // namespace
+
+Command add_shade_command(CLI::App& parent) {
+  CLI::App* app = parent.add_subcommand(
+      "shade",
+      "the camera view lit by each generator's light-view VSGLs (indirect light only, no visibility) as "
+      "OUT/shade_<scene>_<generator>.png, like the paper's Fig. 5");
+  auto o = std::make_shared<ShadeOptions>();
+  app->add_option("--capture", o->capture, "capture directory (written by `vsgl-bench record`)")
+      ->required()
+      ->type_name("DIR");
+  add_generators_option(*app, o->generators, "fis_tok15,fis_modified");
+  app->add_option("--vsgls", o->vsgls, "light-view VSGLs per generator")->check(at_least(1))->capture_default_str();
+  app->add_option("--stride", o->stride, "shade every K-th G-buffer pixel (K > 1: a quick preview)")
+      ->check(at_least(1))
+      ->capture_default_str();
+  app->add_option("--exposure", o->exposure, "linear scale before the sRGB curve")
+      ->check(positive_number())
+      ->default_str("auto: 99th-percentile luminance -> 0.8");
+  add_pyramid_option(*app, o->config.pyramid);
+  add_mipmapping_option(*app, o->config.mipmapping, "FIS texture path's mip chain: single-pass, blit or per-level");
+  app->add_option("--out", o->out, "output directory")->type_name("DIR")->capture_default_str();
+  add_device_options(*app, o->device);
+  return {app, [o] { return run_shade(*o); }};
 }
 
 }  // namespace vsgl::cli

@@ -3,7 +3,8 @@
 #include <unistd.h>
 
 #include <cstdio>
-#include <sstream>
+#include <memory>
+#include <optional>
 
 #include "bench/cli/commands.hpp"
 #include "bench/cli/generator_options.hpp"
@@ -17,63 +18,54 @@
 namespace vsgl::cli {
 namespace {
 
-std::vector<int> parse_tables(const std::string& s) {
-  std::vector<int> out;
-  for (const auto& item : Args(std::vector<std::string>{"--tables", s}).list("--tables", "")) {
-    if (item == "1") out.push_back(1);
-    else if (item == "2") out.push_back(2);
-    else throw UsageError("--tables takes 1, 2 or 1,2, not '" + s + "'");
-  }
-  if (out.empty()) throw UsageError("--tables needs at least one table");
-  return out;
-}
+struct TablesCommandOptions {
+  bool quick = false;
+  std::optional<std::string> out;
+  std::string captures = "captures";
+  std::pair<uint32_t, uint32_t> gbuffer{1920, 1088};  // only for captures recorded now
+  uint32_t rsm = 512;
+  std::vector<std::string> tables{"1", "2"};
+  std::vector<std::string> capture_dirs;
+  GeneratorOptions gen;
+  std::optional<uint32_t> warmup, repetitions, max_repetitions;
+  std::optional<double> noise_target, time_cap;
+  bool cold = false;
+  uint32_t copy_mib = 256;
+  bool json_only = false;
+  bool clocks_locked = false;
+  std::vector<std::string> debug_slow;
+  std::optional<std::string> paper, schema;
+  bool no_progress = false;
+  DeviceOptions device;
+};
 
-// Options whose defaults depend on the device are read as text first and parsed afterwards.
-uint32_t parse_u32(const std::string& name, const std::string& v, uint32_t min) {
-  Args a(std::vector<std::string>{name, v});
-  return a.u32(name, 0, min);
-}
-double parse_positive(const std::string& name, const std::string& v) {
-  Args a(std::vector<std::string>{name, v});
-  return static_cast<double>(a.positive_float(name, 1.0f));
-}
 
-}  // namespace
-
-int run_tables(Args& args) {
+int run_tables_command(const TablesCommandOptions& c) {
   TablesOptions o;
-  const bool quick = args.flag("--quick");
-  const auto out = args.value("--out");
-  o.captures_dir = args.string("--captures", "captures");
-  const auto gbuffer = args.size("--gbuffer", {1920, 1088});  // only for captures recorded now
-  o.record_sizes = RecordSizes{gbuffer.first, gbuffer.second, args.u32("--rsm", 512, 1)};
-  const auto tables_arg = args.value("--tables");
-  for (const auto& c : args.values("--capture")) o.captures.emplace_back(c);
-  if (!o.captures.empty() && tables_arg)
-    throw UsageError("--capture times the given captures; --tables picks the paper's: give one of them");
-  o.tables = o.captures.empty() ? parse_tables(tables_arg.value_or("1,2")) : std::vector<int>{};
-  const GeneratorOptions gen = read_generator_options(args);
+  const bool quick = c.quick;
+  o.captures_dir = c.captures;
+  o.record_sizes = RecordSizes{c.gbuffer.first, c.gbuffer.second, c.rsm};
+  for (const auto& d : c.capture_dirs) o.captures.emplace_back(d);
+  o.tables.clear();
+  if (o.captures.empty())
+    for (const auto& t : c.tables) o.tables.push_back(std::stoi(t));
+  const GeneratorOptions& gen = c.gen;
   if (!gen.generators.empty()) o.generators = gen.generators;
   o.camera_vsgls = gen.camera_vsgls;
   o.light_vsgls = gen.light_vsgls;
   o.generator = gen.config;
-  const auto warmup = args.value("--warmup");
-  const auto reps = args.value("--repetitions");
-  const auto max_reps = args.value("--max-repetitions");
-  const auto noise = args.value("--noise-target");
-  const auto cap = args.value("--time-cap");
-  o.timing.cold = args.flag("--cold");
-  o.copy_bandwidth.bytes = uint64_t{args.u32("--copy-mib", 256, 1)} << 20;
-  o.json_only = args.flag("--json-only");
-  o.clocks_locked = args.flag("--clocks-locked");
-  o.debug_slow = args.list("--debug-slow", "");  // TEST-ONLY (harness/generators/testing/debug_slowdown.hpp)
+  o.timing.cold = c.cold;
+  o.copy_bandwidth.bytes = uint64_t{c.copy_mib} << 20;
+  o.json_only = c.json_only;
+  o.clocks_locked = c.clocks_locked;
+  o.debug_slow = c.debug_slow;  // TEST-ONLY (harness/generators/testing/debug_slowdown.hpp)
   if (!o.debug_slow.empty()) o.wrap_generator = debug_slowdown_of(o.debug_slow);
-  if (const auto p = args.value("--paper")) o.paper_tables = *p;
-  if (const auto s = args.value("--schema")) o.schema = *s;
-  const bool progress_flag = !args.flag("--no-progress");
-  GpuSession session = GpuSession::open(args);
+  if (c.paper) o.paper_tables = *c.paper;
+  if (c.schema) o.schema = *c.schema;
+  const bool progress_flag = !c.no_progress;
+  const auto& out = c.out;
+  GpuSession session = GpuSession::open(c.device);
   o.validation = session.context->instance().validation_enabled();
-  args.finish();
 
   // Defaults by device class (timing_runner.hpp), then the presets, then explicit options.
   const DeviceInfo& info = session.device().info();
@@ -97,14 +89,14 @@ int run_tables(Args& args) {
     o.timing.min_repetitions = 3;
     o.timing.max_repetitions = 3;
   }
-  if (warmup) o.timing.warmup = parse_u32("--warmup", *warmup, 2);
-  if (reps) {
-    o.timing.min_repetitions = parse_u32("--repetitions", *reps, 2);
+  if (c.warmup) o.timing.warmup = *c.warmup;
+  if (c.repetitions) {
+    o.timing.min_repetitions = *c.repetitions;
     o.timing.max_repetitions = std::max(o.timing.max_repetitions, o.timing.min_repetitions);
   }
-  if (max_reps) o.timing.max_repetitions = parse_u32("--max-repetitions", *max_reps, 2);
-  if (noise) o.timing.noise_target = parse_positive("--noise-target", *noise);
-  if (cap) o.timing.time_cap_s = *cap == "0" ? 0.0 : parse_positive("--time-cap", *cap);
+  if (c.max_repetitions) o.timing.max_repetitions = *c.max_repetitions;
+  if (c.noise_target) o.timing.noise_target = *c.noise_target;
+  if (c.time_cap) o.timing.time_cap_s = *c.time_cap;
   o.out_dir = out ? std::filesystem::path(*out) : std::filesystem::path("results") / device_slug(info.name);
 
   std::fprintf(stderr,
@@ -139,6 +131,74 @@ int run_tables(Args& args) {
   std::fflush(stdout);
   for (const auto& path : outcome.written) std::fprintf(stderr, "wrote %s\n", path.string().c_str());
   return session.finish(0);
+}
+
+}  // namespace
+
+Command add_tables_command(CLI::App& parent) {
+  CLI::App* app = parent.add_subcommand(
+      "tables",
+      "the paper's Tables 1 and 2 (+ the Table 3 analog) on this device: every generator on both views (camera N = " +
+          std::to_string(kPaperCameraVsgls) + ", light N = " + std::to_string(kPaperLightVsgls) +
+          "), each recorded once with a timestamp at every phase boundary and replayed: discarded warm-ups, then "
+          "interleaved repetitions until every total's IQR/median <= the noise target or a time cap. Writes "
+          "OUT/tableN.json (schema results/schema/table.schema.json: the statistics and raw samples, the paper's "
+          "value beside each, its ratios, the modified - Tok15 overhead paired by round with a 95 % Wilcoxon "
+          "interval, the copy bandwidth measured in the same run, the Table 3 analog, the paper's claims checked) "
+          "and OUT/tableN.md; records CAPTURES/atrium and CAPTURES/conference if missing. On a CPU device the "
+          "default generators are the paper's four");
+  auto o = std::make_shared<TablesCommandOptions>();
+  auto* tables = add_list_option(*app, "--tables", o->tables,
+                                 "which tables (1: CAPTURES/atrium, 2: CAPTURES/conference)", one_of({"1", "2"}));
+  app->add_option("--capture", o->capture_dirs,
+                  "time this capture instead (repeatable): a glTF scene's capture gives OUT/<scene>.json + .md "
+                  "(\"table\": null, no paper columns); a capture of atrium/conference gives that paper table")
+      ->allow_extra_args(false)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
+      ->type_name("DIR")
+      ->excludes(tables);
+  app->add_option("--captures", o->captures, "capture root; missing captures are recorded first")
+      ->type_name("DIR")
+      ->capture_default_str();
+  add_size_option(*app, "--gbuffer", o->gbuffer, "G-buffer size of captures recorded because missing");
+  app->add_option("--rsm", o->rsm, "RSM size N x N of captures recorded because missing")
+      ->check(at_least(1))
+      ->capture_default_str();
+  add_optional(*app, "--out", o->out, "output directory")->type_name("DIR")->default_str("results/<device slug>");
+  CLI::App* protocol = app->add_option_group("timing protocol", "warm-ups, repetitions and the stop rule");
+  add_optional(*protocol, "--warmup", o->warmup, "discarded warm-up runs")->check(at_least(2))->default_str("2");
+  add_optional(*protocol, "--repetitions", o->repetitions, "minimum repetitions")->check(at_least(2))->default_str("10");
+  add_optional(*protocol, "--noise-target", o->noise_target, "stop once every total has IQR/median <= X")
+      ->check(positive_number())
+      ->default_str("0.02");
+  add_optional(*protocol, "--time-cap", o->time_cap, "... or after S s of timing (0: no cap)")
+      ->check(CLI::NonNegativeNumber)
+      ->default_str("60; 20 on a CPU device such as lavapipe");
+  add_optional(*protocol, "--max-repetitions", o->max_repetitions, "... or after M repetitions")
+      ->check(at_least(2))
+      ->default_str("1000");
+  protocol->add_flag("--quick", o->quick, "3 repetitions, no noise target (CI smoke runs; marked in the JSON)");
+  protocol->add_flag("--cold", o->cold, "overwrite a 256 MiB buffer before every sample (cold caches)");
+  app->add_option("--copy-mib", o->copy_mib,
+                  "MiB of the copy-bandwidth measurement's buffers (vkCmdCopyBuffer; less only if memory is short)")
+      ->check(at_least(1))
+      ->capture_default_str();
+  CLI::App* generators = app->add_option_group("generators", "what is timed");
+  add_generator_options(*generators, o->gen);
+  app->add_flag("--json-only", o->json_only, "write no markdown file (the console still shows the tables)");
+  app->add_flag("--clocks-locked", o->clocks_locked, "record that you locked the GPU clocks (Vulkan cannot)");
+  add_optional(*app, "--paper", o->paper, "the paper's tables")
+      ->check(CLI::ExistingFile)
+      ->default_str("results/paper/paper_tables.json");
+  add_optional(*app, "--schema", o->schema, "the table JSON schema")
+      ->check(CLI::ExistingFile)
+      ->default_str("results/schema/table.schema.json");
+  app->add_flag("--no-progress", o->no_progress, "no progress line (it is off anyway when stderr is not a terminal)");
+  add_list_option(*app, "--debug-slow", o->debug_slow,
+                  "TEST-ONLY: extra work in these generators' last phase (to test `compare`; marked in the JSON)",
+                  CLI::Validator([](std::string&) { return std::string(); }, "NAME"));
+  add_device_options(*app, o->device);
+  return {app, [o] { return run_tables_command(*o); }};
 }
 
 }  // namespace vsgl::cli

@@ -2,6 +2,10 @@
 // the FIS generators pass by pass, then the k-means generators step by step.
 // One line per check with its measured error and tolerance; exit 1 if any check fails.
 #include <cstdio>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
 #include <nlohmann/json.hpp>
 
 #include "bench/cli/commands.hpp"
@@ -15,22 +19,23 @@
 
 namespace vsgl::cli {
 
-int run_verify(Args& args) {
-  const auto capture_dir = args.value("--capture");
-  const auto json_path = args.value("--json");
+namespace {
+
+struct VerifyOptions {
+  std::string capture;
+  std::optional<std::string> json;
   VerifyConfig config;
-  config.camera_vsgls = args.u32("--camera-vsgls", config.camera_vsgls, 1);
-  config.light_vsgls = args.u32("--light-vsgls", config.light_vsgls, 1);
-  config.K = args.positive_float("--K", config.K);
+  std::vector<std::string> pyramids{"texture", "buffer"};
+  DeviceOptions device;
+};
+
+int run_verify(VerifyOptions& o) {
+  const std::string* capture_dir = &o.capture;
+  const auto& json_path = o.json;
+  VerifyConfig& config = o.config;
   config.pyramids.clear();
-  for (const auto& item : args.list("--pyramid", "texture,buffer")) config.pyramids.push_back(parse_pyramid_option(item));
-  if (const auto m = args.value("--mipmapping")) {
-    config.mipmapping = parse_mip_strategy(*m);
-    if (!config.mipmapping) throw UsageError("--mipmapping takes single-pass, blit or per-level, not '" + *m + "'");
-  }
-  GpuSession session = GpuSession::open(args);
-  args.finish();
-  if (!capture_dir) throw UsageError("verify needs --capture DIR (record one with `vsgl-bench record`)");
+  for (const auto& item : o.pyramids) config.pyramids.push_back(*parse_pyramid_path(item));
+  GpuSession session = GpuSession::open(o.device);
 
   const Capture capture = load_capture(*capture_dir);
   std::printf("verify %s (scene %s) on %s\n", capture_dir->c_str(), capture.meta.scene.c_str(),
@@ -51,6 +56,31 @@ int run_verify(Args& args) {
     write_text_atomic(*json_path, out.dump(2) + "\n");
   }
   return session.finish(failed == 0 ? 0 : static_cast<int>(ExitCode::kFailure));
+}
+
+}  // namespace
+
+Command add_verify_command(CLI::App& parent) {
+  CLI::App* app = parent.add_subcommand(
+      "verify",
+      "the correctness run to do on your own GPU (DESIGN.md §11): all four generators on both views against their "
+      "CPU references, FIS pass by pass (moments, pyramid, sampler, Eq. 1 / Eq. 3, VSGLs, power, sample histogram), "
+      "k-means step by step (assignment, sort and ranges, per-cluster sums, total power, membership); one line per "
+      "check with its error and tolerance, exit 1 if any fails");
+  auto o = std::make_shared<VerifyOptions>();
+  app->add_option("--capture", o->capture, "capture directory (written by `vsgl-bench record`)")
+      ->required()
+      ->type_name("DIR");
+  add_optional(*app, "--json", o->json, "also write the checks as JSON")->type_name("FILE");
+  add_camera_vsgls_option(*app, o->config.camera_vsgls);
+  add_light_vsgls_option(*app, o->config.light_vsgls);
+  add_K_option(*app, o->config.K);
+  add_list_option(*app, "--pyramid", o->pyramids, "FIS pyramid paths to check: texture, buffer", pyramid_name());
+  add_mipmapping_option(*app, o->config.mipmapping,
+                        "texture path's mip strategy for the generator checks (the pyramid check covers all three): "
+                        "single-pass, blit or per-level");
+  add_device_options(*app, o->device);
+  return {app, [o] { return run_verify(*o); }};
 }
 
 }  // namespace vsgl::cli

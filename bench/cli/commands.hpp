@@ -1,24 +1,26 @@
 #pragma once
-// The vsgl-bench subcommands. Each returns the process exit code (see harness/core/error.hpp).
-#include <string>
-#include <vector>
+// The vsgl-bench subcommands. Each add_*_command declares its subcommand, its description and its
+// options on `parent` (CLI11) and returns the run that uses them once the whole command line has
+// been parsed; a run returns the process exit code (bench/cli/exit_codes.hpp).
+#include <functional>
 
-#include "bench/cli/args.hpp"
+#include <CLI/CLI.hpp>
 
 namespace vsgl::cli {
 
-int run_devices(Args& args);
-int run_record(Args& args);
-int run_tables(Args& args);
-int run_verify(Args& args);
-int run_shade(Args& args);
-int run_quality(Args& args);
-// Commands with positional arguments take the raw tokens after the command name.
-int run_compare(std::vector<std::string> tokens);
-int run_export(std::vector<std::string> tokens);
-int run_dashboard(std::vector<std::string> tokens);
-// Removes the positional arguments from `tokens` and returns them; `value_options` are the
-// options whose next token is their value (command_compare.cpp).
-std::vector<std::string> take_positionals(std::vector<std::string>& tokens, const std::vector<std::string>& value_options);
+struct Command {
+  CLI::App* app = nullptr;
+  std::function<int()> run;
+};
+
+Command add_devices_command(CLI::App& parent);
+Command add_record_command(CLI::App& parent);
+Command add_tables_command(CLI::App& parent);
+Command add_verify_command(CLI::App& parent);
+Command add_shade_command(CLI::App& parent);
+Command add_quality_command(CLI::App& parent);
+Command add_compare_command(CLI::App& parent);
+Command add_export_command(CLI::App& parent);
+Command add_dashboard_command(CLI::App& parent);
 
 }  // namespace vsgl::cli

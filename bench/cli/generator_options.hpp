@@ -1,31 +1,44 @@
 #pragma once
-// The generator options every timing front end reads the same way (`tables`, `vsgl-gbench`):
-// --generators, --camera-vsgls, --light-vsgls, --K, --iterations, --kmeans-iterations,
-// --pyramid texture|buffer, --mipmapping single-pass|blit|per-level.
+// The generator options, each declared once and added to the commands that take it (`tables`,
+// `verify`, `shade`, `quality`, `vsgl-gbench`): --generators, --camera-vsgls, --light-vsgls, --K,
+// --iterations, --kmeans-iterations, --pyramid texture|buffer, --mipmapping STRATEGY.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
-#include "bench/cli/args.hpp"
+#include <CLI/CLI.hpp>
+
+#include "bench/cli/option_types.hpp"
 #include "harness/generators/generator_descriptor.hpp"
 
 namespace vsgl::cli {
 
 struct GeneratorOptions {
-  std::vector<std::string> generators;  // empty: the caller's default set
-  uint32_t camera_vsgls = 2048;         // N on the G-buffer (the paper's)
-  uint32_t light_vsgls = 1024;          // N on the RSM (the paper's)
-  GeneratorConfig config;               // K and iterations; vsgl_count is set per view
+  std::vector<std::string> generators;           // empty: the caller's default set
+  uint32_t camera_vsgls = kPaperCameraVsgls;    // N on the G-buffer (the paper's)
+  uint32_t light_vsgls = kPaperLightVsgls;      // N on the RSM (the paper's)
+  GeneratorConfig config;                        // K and iterations; vsgl_count is set per view
 };
 
-// Throws UsageError for a malformed value (generator names are checked by the caller's run).
-GeneratorOptions read_generator_options(Args& args);
+// --generators G[,G] (names are checked by the run: the registry's message lists them).
+CLI::Option* add_generators_option(CLI::App& app, std::vector<std::string>& generators, const std::string& shown_default,
+                                   const OptionNames& names = {});
+CLI::Option* add_camera_vsgls_option(CLI::App& app, uint32_t& n, const OptionNames& names = {});
+CLI::Option* add_light_vsgls_option(CLI::App& app, uint32_t& n, const OptionNames& names = {});
+CLI::Option* add_K_option(CLI::App& app, float& K, const OptionNames& names = {});
+CLI::Option* add_bisection_iterations_option(CLI::App& app, uint32_t& iterations, const OptionNames& names = {});
+CLI::Option* add_kmeans_iterations_option(CLI::App& app, uint32_t& iterations, const OptionNames& names = {});
+// --pyramid texture|buffer (DESIGN.md §6.1a).
+CLI::Option* add_pyramid_option(CLI::App& app, PyramidPath& pyramid, const OptionNames& names = {});
+// --mipmapping single-pass|blit|per-level (unset: the device kind's default).
+CLI::Option* add_mipmapping_option(CLI::App& app, std::optional<MipStrategy>& mipmapping, const std::string& description,
+                                   const OptionNames& names = {});
+// Every option above, into `o`: the timing front ends' set (`tables`, `vsgl-gbench`).
+void add_generator_options(CLI::App& app, GeneratorOptions& o, const OptionNames& names = {});
 
-// --pyramid texture|buffer (default texture, DESIGN.md §6.1a) and --mipmapping STRATEGY (default: the
-// device kind's, left unset here) into `config`; `shade`, `quality` and `verify` read them too.
-// Throws UsageError naming the accepted values.
-void read_pyramid_options(Args& args, GeneratorConfig& config);
-// The same for one value of --pyramid (e.g. one item of verify's list).
-PyramidPath parse_pyramid_option(const std::string& value);
+// The check of one --pyramid item and of --mipmapping.
+CLI::Validator pyramid_name();
+CLI::Validator mipmapping_name();
 
 }  // namespace vsgl::cli

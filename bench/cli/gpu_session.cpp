@@ -3,13 +3,24 @@
 #include <cstdio>
 
 #include "harness/core/error.hpp"
+#include "harness/core/program_name.hpp"
 
 namespace vsgl::cli {
 
-GpuSession GpuSession::open(Args& args) {
+void add_device_options(CLI::App& app, DeviceOptions& options, const OptionNames& names) {
+  CLI::App* group = app.add_option_group("device", "device selection");
+  group->add_option(names("device"), options.device,
+                    "device index or case-insensitive name substring (see `vsgl-bench devices`)")
+      ->default_str("first discrete GPU, else integrated, virtual, CPU");
+  group->add_flag(names("validate"), options.validate,
+                  "Khronos validation layer with synchronization validation; any validation error fails the run "
+                  "(exit 5)");
+}
+
+GpuSession GpuSession::open(const DeviceOptions& device_options) {
   GpuContextOptions options;
-  options.device = args.string("--device", "");
-  options.instance.validation = args.flag("--validate");
+  options.device = device_options.device;
+  options.instance.validation = device_options.validate;
   GpuSession s;
   s.context = std::make_unique<GpuContext>(options);
   const auto& info = s.context->device().info();
@@ -21,8 +32,8 @@ GpuSession GpuSession::open(Args& args) {
 int GpuSession::finish(int code) const {
   const uint32_t errors = context->instance().validation_errors();
   if (errors > 0) {
-    std::fprintf(stderr, "vsgl-bench: the Khronos validation layer reported %u error(s); the run is invalid\n",
-                 errors);
+    std::fprintf(stderr, "%s: the Khronos validation layer reported %u error(s); the run is invalid\n",
+                 program_name().c_str(), errors);
     return static_cast<int>(ExitCode::kValidation);
   }
   return code;

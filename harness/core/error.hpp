@@ -8,11 +8,12 @@ namespace vsgl {
 
 enum class ExitCode : int {
   kOk = 0,
-  kFailure = 1,         // a check failed (verify), or validation reported errors
+  kFailure = 1,         // a check failed (verify, a compare --fail-on verdict)
   kUsage = 2,           // bad command line
   kBadInput = 3,        // missing / corrupt / inconsistent capture or parameter
   kDevice = 4,          // no usable device, no timestamps, device lost, out of memory
   kValidation = 5,      // the Khronos validation layer reported errors
+  kInternal = 70,       // an unexpected exception: a bug (EX_SOFTWARE of sysexits.h)
 };
 
 class InputError : public std::runtime_error {

@@ -37,6 +37,11 @@ inline std::optional<MipStrategy> parse_mip_strategy(std::string_view s) {
   return std::nullopt;
 }
 
+// The paper's VSGL counts N per view (its Sec. 5 and Tables 1-2): every default of N, in the
+// front ends' options and in the configs, is one of these.
+inline constexpr uint32_t kPaperCameraVsgls = 2048;
+inline constexpr uint32_t kPaperLightVsgls = 1024;
+
 struct FisParams {
   uint32_t vsgl_count = 0;            // N
   float K = 1.0f;                     // kernel size parameter (the paper's setting is 1)

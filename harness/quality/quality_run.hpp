@@ -32,8 +32,8 @@ inline constexpr int kQualitySchemaVersion = 3;
 
 struct QualityConfig {
   std::vector<std::string> generators = paper_generator_names();
-  uint32_t light_vsgls = 1024;   // the paper's N for the light view
-  uint32_t camera_vsgls = 2048;  // ... and the camera view
+  uint32_t light_vsgls = kPaperLightVsgls;   // the paper's N for the light view
+  uint32_t camera_vsgls = kPaperCameraVsgls;  // ... and the camera view
   float K = 1.0f;
   uint32_t bisection_iterations = 12;
   uint32_t kmeans_iterations = 4;

@@ -29,8 +29,8 @@ struct TablesOptions {
   std::vector<int> tables{1, 2};
   std::vector<std::filesystem::path> captures;     // --capture: time these instead (never recorded here)
   std::vector<std::string> generators = generator_names();
-  uint32_t camera_vsgls = 2048;  // N on the G-buffer (the paper's)
-  uint32_t light_vsgls = 1024;   // N on the RSM (the paper's)
+  uint32_t camera_vsgls = kPaperCameraVsgls;  // N on the G-buffer (the paper's)
+  uint32_t light_vsgls = kPaperLightVsgls;   // N on the RSM (the paper's)
   GeneratorConfig generator;     // K, iterations (vsgl_count is set per view)
   TimingOptions timing;
   CopyBandwidthOptions copy_bandwidth;  // the physical limit beside the passes (DESIGN.md §9), per table

@@ -8,13 +8,14 @@
 #include <glm/glm.hpp>
 
 #include "harness/capture/capture.hpp"
+#include "harness/math/fis_params.hpp"
 #include "harness/math/vsgl_math.hpp"
 
 namespace vsgl {
 
 class Device;
 
-inline constexpr uint32_t kBrsmCameraVsgls = 2048;  // the paper's N for the camera view
+inline constexpr uint32_t kBrsmCameraVsgls = kPaperCameraVsgls;  // the paper's N for the camera view
 
 struct BrsmBuild {
   double gpu_ms = 0;        // camera-view fis_modified + the BRSM pass, from timestamps

@@ -11,6 +11,7 @@
 #include "harness/generators/device_view.hpp"
 #include "harness/generators/generator_descriptor.hpp"
 #include "harness/core/error.hpp"
+#include "harness/core/program_name.hpp"
 #include "harness/math/vsgl_math.hpp"
 #include "kernels/include/interface/fis.h"
 
@@ -98,7 +99,7 @@ FisGenerator::FisGenerator(Device& device, const DeviceView& view, FisVariant va
   std::string fallback;
   path_ = effective_pyramid_path(device.info(), params.pyramid, &fallback);
   if (!fallback.empty())
-    std::cerr << "vsgl-bench: " << fallback << "; " << name() << " uses the storage-buffer pyramid instead\n";
+    std::cerr << program_name() << ": " << fallback << "; " << name() << " uses the storage-buffer pyramid instead\n";
   const VirtualSquare& sq = view.square;
   const std::vector<SpecializationConstant> sampling_constants{
       {0, kFisSamplingGroup}, {1, variant == FisVariant::kTok15 ? 0u : 1u}, {2, params.bisection_iterations}};
