@@ -12,6 +12,7 @@
 #include "harness/generators/generator_descriptor.hpp"
 #include "harness/math/vsgl_math.hpp"
 #include "harness/vk/compute_pipeline.hpp"
+#include "harness/vk/image.hpp"
 #include "harness/vk/device_limits.hpp"
 #include "harness/vk/spirv_reflection.hpp"
 #include "harness/vk/shader_registry.hpp"
@@ -166,6 +167,41 @@ TEST_F(DeviceLimitsTest, ForcedLimitRefusesThePipelineAndTheGeneratorFallsBack) 
   float power = 0.0f;
   for (const auto& v : got) power += v.power_sharpness.x;
   EXPECT_GT(power, 0.0f);
+}
+
+// Buffers and images are checked against maxMemoryAllocationSize, maxStorageBufferRange,
+// maxImageDimension2D and maxImageArrayLayers before they are created or bound.
+TEST_F(DeviceLimitsTest, ForcedSizeLimitsRefuseBuffersImagesAndBindings) {
+  DeviceInfo forced = device().info();
+  forced.limits.max_memory_allocation_size = 1024;
+  forced.limits.storage_buffer_range = 256;
+  forced.limits.image_dimension_2d = 64;
+  forced.limits.image_array_layers = 2;
+  Device limited(test::shared_context().instance(), forced);
+  const auto expect_device_error = [](const auto& make, const char* limit) {
+    try {
+      make();
+      ADD_FAILURE() << "no DeviceError for " << limit;
+    } catch (const DeviceError& e) {
+      EXPECT_NE(std::string(e.what()).find(limit), std::string::npos) << e.what();
+    }
+  };
+  expect_device_error([&] { Buffer b(limited, 2048, MemoryUsage::kDeviceLocal, "test.too_big"); },
+                      "maxMemoryAllocationSize");
+  expect_device_error(
+      [&] {
+        MipImage i(limited, 128, 1, 1, VK_FORMAT_R32G32B32A32_SFLOAT, VK_IMAGE_USAGE_STORAGE_BIT, "test.too_wide");
+      },
+      "maxImageDimension2D");
+  expect_device_error(
+      [&] { MipImage i(limited, 32, 1, 3, VK_FORMAT_R32G32B32A32_SFLOAT, VK_IMAGE_USAGE_STORAGE_BIT, "test.layers"); },
+      "maxImageArrayLayers");
+  Buffer in(limited, 512, MemoryUsage::kDeviceLocal, "test.range.in");
+  Buffer out(limited, 512, MemoryUsage::kDeviceLocal, "test.range.out");
+  ComputePipeline pipeline(limited, {"test_division.comp", 2, sizeof(gpu::TestCountPush),
+                                     work_group_size_1d(gpu::kTestGroupSize)});
+  expect_device_error([&] { BindingSet set(limited, pipeline, {in, out}, "test.range.set"); }, "maxStorageBufferRange");
+  BindingSet fits(limited, pipeline, {BufferBinding(in, 0, 256), BufferBinding(out, 0, 256)}, "test.range.fits");
 }
 
 }  // namespace

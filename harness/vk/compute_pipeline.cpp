@@ -171,7 +171,13 @@ BindingSet::BindingSet(Device& device, const ComputePipeline& pipeline, const st
 
   std::vector<VkDescriptorBufferInfo> infos(n);
   std::vector<VkWriteDescriptorSet> writes(n);
+  const uint32_t max_range = device.info().limits.storage_buffer_range;
   for (uint32_t i = 0; i < n; ++i) {
+    const VkDeviceSize range = buffers[i].range == VK_WHOLE_SIZE ? buffers[i].buffer->size() - buffers[i].offset
+                                                                  : buffers[i].range;
+    if (range > max_range)
+      throw DeviceError(device.info().name + " cannot bind " + std::to_string(range) + " bytes of a storage buffer to '" +
+                        name + "': the device allows " + std::to_string(max_range) + " (maxStorageBufferRange)");
     infos[i] = {buffers[i].buffer->get(), buffers[i].offset, buffers[i].range};
     writes[i] = VkWriteDescriptorSet{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
     writes[i].dstSet = set_;
