@@ -73,8 +73,9 @@ GeneratorConfig resolve_fis_config(const DeviceInfo& info, GeneratorConfig confi
 
 class FisGenerator : public VsglGenerator {
  public:
-  // Throws InputError for N = 0, N larger than the view's samplable texels, K <= 0, or the blit
-  // strategy on a device that cannot blit RGBA32F with a linear filter.
+  // Throws InputError for N = 0, N larger than the view's samplable texels or K <= 0. A path or
+  // mip strategy the device cannot run (limits, RGBA32F features) falls back, said on stderr
+  // (effective_pyramid_path, effective_mip_strategy); DeviceError when nothing fits.
   FisGenerator(Device& device, const DeviceView& view, FisVariant variant, const FisParams& params);
 
   std::string name() const override { return fis_variant_name(variant_); }
