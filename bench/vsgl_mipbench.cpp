@@ -1,7 +1,7 @@
 // vsgl-mipbench: the FIS texture path's three mipmapping strategies (DESIGN.md §6.1a) timed alone on
 // both views of the paper's captures, as Google Benchmark results with manual time = the GPU
-// timestamps around the `mipmapping` phase: single-pass (one dispatch, the last group finishes the
-// small levels), blit (the vkCmdBlitImage chain) and per-level (one dispatch per level). This is
+// timestamps around the `mipmapping` phase: single-pass (one dispatch to level 6, then one group
+// finishes the small levels), blit (the vkCmdBlitImage chain) and per-level (one dispatch per level). This is
 // the measurement behind each device kind's default strategy (fis_generator.cpp).
 //
 //   vsgl-mipbench [google benchmark flags] [--vsgl_captures=DIR] [--vsgl_device=D]

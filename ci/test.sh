@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # The README's test command: install what is missing, build with warnings as errors, and run
-# every test on lavapipe with the Khronos validation layer (any validation error fails a test).
+# every test on lavapipe with the Khronos validation layer (any validation error fails a test),
+# then the device tests again on SwiftShader (a second Vulkan implementation with other limits:
+# 16 storage images per stage, subgroup size 4) when Debian's chromium provides its ICD.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash ci/install-deps.sh
@@ -12,4 +14,13 @@ cmake --build --preset ci
 built=$(date +%s)
 # Tests pick lavapipe (VSGL_TEST_DEVICE overrides) even when a GPU is present.
 ctest --preset ci -j "$(nproc)"
-echo "ci/test.sh: build $((built - start)) s, tests $(( $(date +%s) - built )) s"
+tested=$(date +%s)
+swiftshader_icd=/usr/lib/chromium/vk_swiftshader_icd.json
+if [ -f "$swiftshader_icd" ]; then
+  VK_ICD_FILENAMES="$swiftshader_icd" VSGL_TEST_DEVICE=SwiftShader ctest --preset ci -L gpu -j "$(nproc)"
+  swift="SwiftShader gpu tests $(( $(date +%s) - tested )) s"
+else
+  swift="SwiftShader gpu tests skipped: $swiftshader_icd not found (install Debian's chromium)"
+  echo "ci/test.sh: $swift"
+fi
+echo "ci/test.sh: build $((built - start)) s, tests $((tested - built)) s, $swift"

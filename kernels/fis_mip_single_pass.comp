@@ -1,29 +1,30 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// FIS "mipmapping" on the sampled-image pyramid in ONE dispatch (`--mipmapping single-pass`,
-// DESIGN.md §6.1a), in the manner of AMD FidelityFX SPD: each 16x16 group reduces a 64x64 tile of
-// level 0 to levels 1..6 (level 1-2 in registers, 3-6 in shared memory), writing every in-bounds
-// texel of those levels; the group that arrives last at a global atomic counter then builds
-// levels 7..L from the level-6 texels all groups left in a coherent buffer. Every texel is
-// mip_average() of its four children, so the chain is bit-exact with the CPU reference; texels
-// outside a level's in-bounds extent are neither read nor written (the padding stays zero).
+// FIS "mipmapping" on the sampled-image pyramid (`--mipmapping single-pass`, DESIGN.md §6.1a), in
+// the manner of AMD FidelityFX SPD, part 1 of 2: each 16x16 group reduces a 64x64 tile of level 0
+// to levels 1..6 (level 1-2 in registers, 3-6 in shared memory), writing every in-bounds texel of
+// those levels and its level-6 texel to a buffer; fis_mip_single_pass_tail.comp (one group, the
+// next dispatch) builds levels 7..L from that buffer. Two dispatches instead of one with a
+// last-group atomic hand-over keep each within 8 storage images per stage (7 here, 8 there; the
+// desktop baseline's maxPerStageDescriptorStorageImages, see harness/vk/portability_baselines.cpp)
+// with the same arithmetic. Every texel is mip_average() of its four children, so the chain is
+// bit-exact with the CPU reference; texels outside a level's in-bounds extent are neither read
+// nor written (the padding stays zero).
 #include "interface/fis.h"
 #include "pyramid_layout.glsl"
+#include "fis_spd_mid.glsl"
 layout(local_size_x_id = 0, local_size_y_id = 1) in;
 
 // Level-6 (and coarser) texels of the 3 layers, level after level (in-bounds extents only).
-layout(std430, binding = 0) coherent buffer Mid { vec4 mid[]; };
-// Groups that have finished the tile phase; the last one resets it to 0 for the next replay.
-layout(std430, binding = 1) coherent buffer Counter { uint finished_groups; };
-layout(binding = 2, rgba32f) uniform readonly image2DArray level0;
-// Levels 0..15 (entries above L repeat level L and are never written).
-layout(binding = 3, rgba32f) uniform writeonly image2DArray levels[16];
+layout(std430, binding = 0) writeonly buffer Mid { vec4 mid[]; };
+layout(binding = 1, rgba32f) uniform readonly image2DArray level0;
+// Levels 1..6 (entries above L repeat level L and are never written).
+layout(binding = 2, rgba32f) uniform writeonly image2DArray levels[kFisSpdTileLevels];
 layout(push_constant) uniform PushBlock { FisMipPush pc; };
 
 const uint TILE_LEVELS = kFisSpdTileLevels;  // 64 = 2^6 texels per tile side
 shared vec4 s_a[256];
 shared vec4 s_b[64];
-shared bool s_last;
 
 // Storage-image arrays may be indexed only by constants without an optional feature.
 void store(uint level, ivec2 p, uint layer, vec4 v) {
@@ -31,20 +32,12 @@ void store(uint level, ivec2 p, uint layer, vec4 v) {
     return;
   ivec3 q = ivec3(p, int(layer));
   switch (level) {
-    case 1u: imageStore(levels[1], q, v); break;
-    case 2u: imageStore(levels[2], q, v); break;
-    case 3u: imageStore(levels[3], q, v); break;
-    case 4u: imageStore(levels[4], q, v); break;
-    case 5u: imageStore(levels[5], q, v); break;
-    case 6u: imageStore(levels[6], q, v); break;
-    case 7u: imageStore(levels[7], q, v); break;
-    case 8u: imageStore(levels[8], q, v); break;
-    case 9u: imageStore(levels[9], q, v); break;
-    case 10u: imageStore(levels[10], q, v); break;
-    case 11u: imageStore(levels[11], q, v); break;
-    case 12u: imageStore(levels[12], q, v); break;
-    case 13u: imageStore(levels[13], q, v); break;
-    case 14u: imageStore(levels[14], q, v); break;
+    case 1u: imageStore(levels[0], q, v); break;
+    case 2u: imageStore(levels[1], q, v); break;
+    case 3u: imageStore(levels[2], q, v); break;
+    case 4u: imageStore(levels[3], q, v); break;
+    case 5u: imageStore(levels[4], q, v); break;
+    case 6u: imageStore(levels[5], q, v); break;
     default: break;
   }
 }
@@ -52,18 +45,6 @@ void store(uint level, ivec2 p, uint layer, vec4 v) {
 vec4 load0(ivec2 p, uint layer) {
   if (uint(p.x) >= pc.width || uint(p.y) >= pc.height) return vec4(0.0);
   return imageLoad(level0, ivec3(p, int(layer)));
-}
-
-// Offset of level k (>= 6) in one layer's part of `mid`, and that part's size.
-uint mid_offset(uint k) {
-  uint offset = 0u;
-  for (uint j = TILE_LEVELS; j < k; ++j) offset += pyramid_level_width(j) * pyramid_level_height(j);
-  return offset;
-}
-
-vec4 mid_texel(uint layer, uint k, ivec2 c, uint stride) {
-  if (uint(c.x) >= pyramid_level_width(k) || uint(c.y) >= pyramid_level_height(k)) return vec4(0.0);
-  return mid[layer * stride + mid_offset(k) + uint(c.y) * pyramid_level_width(k) + uint(c.x)];
 }
 
 // Four entries of a square shared array of side `side`, children of (x, y).
@@ -76,7 +57,7 @@ void main() {
   uint t = gl_LocalInvocationIndex;
   uvec2 tl = gl_LocalInvocationID.xy;
   uvec2 g = gl_WorkGroupID.xy;
-  uint stride = mid_offset(pyramid_levels + 1u);  // one layer's part of `mid`
+  uint stride = spd_mid_layer_texels();  // one layer's part of `mid`
 
   for (uint layer = 0u; layer < 3u; ++layer) {
     // Levels 1 and 2 in registers: this thread's 4x4 texels of level 0.
@@ -123,30 +104,4 @@ void main() {
     }
     barrier();
   }
-  if (pyramid_levels <= TILE_LEVELS) return;  // one group covered the whole square
-
-  // The last group to finish builds levels 7..L from every group's level-6 texel.
-  if (t == 0u) {
-    memoryBarrierBuffer();
-    s_last = atomicAdd(finished_groups, 1u) == pc.spd_groups - 1u;
-  }
-  barrier();
-  if (!s_last) return;
-  memoryBarrierBuffer();
-  for (uint k = TILE_LEVELS + 1u; k <= pyramid_levels; ++k) {
-    uint w = pyramid_level_width(k), h = pyramid_level_height(k);
-    for (uint layer = 0u; layer < 3u; ++layer)
-      for (uint idx = t; idx < w * h; idx += 256u) {
-        ivec2 p = ivec2(idx % w, idx / w);
-        ivec2 c = p * 2;
-        vec4 v = mip_average(mid_texel(layer, k - 1u, c, stride), mid_texel(layer, k - 1u, c + ivec2(1, 0), stride),
-                             mid_texel(layer, k - 1u, c + ivec2(0, 1), stride),
-                             mid_texel(layer, k - 1u, c + ivec2(1, 1), stride));
-        mid[layer * stride + mid_offset(k) + idx] = v;
-        store(k, p, layer, v);
-      }
-    memoryBarrierBuffer();
-    barrier();
-  }
-  if (t == 0u) finished_groups = 0u;
 }

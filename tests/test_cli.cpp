@@ -1,6 +1,8 @@
 // The CLI as a user meets it: device listing, recording, and the exit codes of bad invocations.
 #include <gtest/gtest.h>
 
+#include <cctype>
+#include <cstdlib>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
@@ -14,10 +16,18 @@ namespace {
 
 using test::run_cli;
 
-TEST(Cli, DevicesListsLavapipeWithTimestamps) {
+// The test device (lavapipe unless VSGL_TEST_DEVICE names another) is listed, with timestamps,
+// its limits and, for every generator and mip strategy, whether it runs there.
+TEST(Cli, DevicesListsTheTestDeviceWithTimestampsAndLimits) {
+  const char* env = std::getenv("VSGL_TEST_DEVICE");
+  const std::string wanted = env != nullptr ? env : "llvmpipe";
+  const auto lower = [](std::string s) {
+    for (auto& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+  };
   const auto text = run_cli("devices");
   EXPECT_EQ(text.exit_code, 0) << text.output;
-  EXPECT_NE(text.output.find("llvmpipe"), std::string::npos) << text.output;
+  EXPECT_NE(lower(text.output).find(lower(wanted)), std::string::npos) << text.output;
   EXPECT_NE(text.output.find("default device"), std::string::npos);
 
   const auto json = run_cli("devices --json");
@@ -25,12 +35,21 @@ TEST(Cli, DevicesListsLavapipeWithTimestamps) {
   const auto parsed = nlohmann::json::parse(json.output);
   bool found = false;
   for (const auto& d : parsed.at("devices"))
-    if (d.at("name").get<std::string>().find("llvmpipe") != std::string::npos) {
+    if (lower(d.at("name").get<std::string>()).find(lower(wanted)) != std::string::npos) {
       found = true;
-      EXPECT_EQ(d.at("type"), "cpu");
+      EXPECT_EQ(d.at("type"), "cpu");  // lavapipe and SwiftShader are both CPU devices
       EXPECT_TRUE(d.at("timestamps").get<bool>());
       EXPECT_GT(d.at("timestamp_valid_bits").get<int>(), 0);
       EXPECT_TRUE(d.at("usable").get<bool>());
+      EXPECT_GE(d.at("limits").at("maxPerStageDescriptorStorageImages").get<int>(), 4);
+      EXPECT_GT(d.at("limits").at("maxMemoryAllocationSize").get<uint64_t>(), 0u);
+      const auto& support = d.at("support");
+      for (const char* g : {"fis_tok15", "fis_modified", "kmeans_2d", "kmeans_3d"}) {
+        ASSERT_TRUE(support.at("generators").contains(g)) << support.dump(2);
+        EXPECT_TRUE(support.at("generators").at(g).at("runs").get<bool>()) << support.dump(2);
+      }
+      for (const char* m : {"single-pass", "blit", "per-level"})
+        EXPECT_TRUE(support.at("mipmapping").at(m).at("runs").get<bool>()) << support.dump(2);
     }
   EXPECT_TRUE(found) << json.output;
   EXPECT_GE(parsed.at("default").get<int>(), 0);

@@ -2,6 +2,8 @@
 // counted as an error, so "zero errors" in every other test means something.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+
 #include "gpu_test.hpp"
 #include "harness/vk/device.hpp"
 #include "harness/vk/vk_check.hpp"
@@ -13,7 +15,8 @@ TEST(ValidationLayer, CountsErrorsOfInvalidCalls) {
   GpuContextOptions options;
   options.instance.validation = true;
   options.instance.quiet_validation = true;
-  options.device = "llvmpipe";
+  const char* env = std::getenv("VSGL_TEST_DEVICE");
+  options.device = env != nullptr ? env : "llvmpipe";
   GpuContext ctx(options);
   ASSERT_TRUE(ctx.instance().validation_enabled());
   EXPECT_EQ(ctx.instance().validation_errors(), 0u);

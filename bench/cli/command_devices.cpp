@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bench/cli/commands.hpp"
+#include "harness/generators/device_support.hpp"
 #include "harness/vk/device_info.hpp"
 #include "harness/core/error.hpp"
 #include "harness/vk/instance.hpp"
@@ -24,7 +25,11 @@ int run_devices(bool json) {
   }
   if (json) {
     nlohmann::json out{{"default", default_index}, {"devices", nlohmann::json::array()}};
-    for (const auto& d : devices) out["devices"].push_back(to_json(d));
+    for (const auto& d : devices) {
+      nlohmann::json j = to_json(d);
+      j["support"] = device_support_json(d);  // per generator and mip strategy: runs, and why not
+      out["devices"].push_back(std::move(j));
+    }
     std::printf("%s\n", out.dump(2).c_str());
   } else {
     std::printf("%zu Vulkan device(s):\n%s", devices.size(), describe_devices_text(devices).c_str());

@@ -56,7 +56,10 @@ namespace {
 ojson pyramid_json(const TablesOptions& o, const DeviceInfo& device) {
   std::string fallback;
   const PyramidPath path = effective_pyramid_path(device, o.generator.pyramid, &fallback);
-  const MipStrategy strategy = o.generator.mipmapping.value_or(default_mip_strategy(device));
+  std::string mip_fallback;
+  const MipStrategy strategy = path == PyramidPath::kTexture
+                                   ? effective_mip_strategy(device, o.generator.mipmapping, &mip_fallback)
+                                   : o.generator.mipmapping.value_or(default_mip_strategy(device));
   ojson j{{"path", pyramid_path_name(path)}, {"requested_path", pyramid_path_name(o.generator.pyramid)}};
   if (!fallback.empty()) j["fallback_reason"] = fallback;
   if (path == PyramidPath::kTexture) {
@@ -68,6 +71,10 @@ ojson pyramid_json(const TablesOptions& o, const DeviceInfo& device) {
     j["mipmapping_reason"] = o.generator.mipmapping ? std::string("chosen with --mipmapping")
                                                     : default_mip_strategy_reason(device);
     j["mipmapping_default_measured"] = !o.generator.mipmapping && device.type == VK_PHYSICAL_DEVICE_TYPE_CPU;
+    if (!mip_fallback.empty()) {
+      j["mipmapping_fallback_reason"] = mip_fallback;  // the device's limits refused the strategy asked for
+      j["mipmapping_default_measured"] = false;
+    }
   } else {
     j["image_format"] = "storage buffer of vec4 (RGBA32F), software trilinear filter";
     j["mipmapping"] = "per-level";

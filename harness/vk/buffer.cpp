@@ -23,6 +23,11 @@ Buffer::Buffer(Device& device, VkDeviceSize size, MemoryUsage usage, const std::
                VkBufferUsageFlags extra_usage)
     : device_(device.get()), size_(size), name_(name) {
   if (size == 0) throw InputError("buffer '" + name + "' would be empty");
+  // One buffer is one allocation (maintenance3's maxMemoryAllocationSize; 0: not reported).
+  const uint64_t max_allocation = device.info().limits.max_memory_allocation_size;
+  if (max_allocation > 0 && size > max_allocation)
+    throw DeviceError(device.info().name + " cannot allocate buffer '" + name + "': it needs " + std::to_string(size) +
+                      " bytes where the device allows " + std::to_string(max_allocation) + " (maxMemoryAllocationSize)");
   VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
   info.size = size;
   info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;

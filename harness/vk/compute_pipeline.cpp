@@ -1,11 +1,15 @@
 #include "harness/vk/compute_pipeline.hpp"
 
+#include <algorithm>
 #include <cstring>
+#include <map>
+#include <stdexcept>
 
 #include "harness/vk/buffer.hpp"
 #include "harness/vk/device.hpp"
 #include "harness/core/error.hpp"
 #include "harness/vk/shader_registry.hpp"
+#include "harness/vk/spirv_reflection.hpp"
 #include "harness/vk/vk_check.hpp"
 
 namespace vsgl {
@@ -16,7 +20,48 @@ uint32_t float_bits(float f) {
   return u;
 }
 
+PipelineNeeds pipeline_needs(const ComputePipelineDesc& desc) {
+  std::map<uint32_t, uint32_t> spec;
+  for (const auto& c : desc.constants) spec[c.id] = c.value;
+  KernelInterface k;
+  try {
+    k = reflect_kernel(find_shader(desc.shader), spec);
+  } catch (const std::exception& e) {
+    throw std::runtime_error(desc.shader + ": " + e.what());
+  }
+  PipelineNeeds host, kernel;
+  const auto add = [](PipelineNeeds& n, VkDescriptorType type, uint32_t count) {
+    switch (type) {
+      case VK_DESCRIPTOR_TYPE_STORAGE_IMAGE: n.storage_images += count; break;
+      case VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE: n.sampled_images += count; break;
+      case VK_DESCRIPTOR_TYPE_SAMPLER: n.samplers += count; break;
+      case VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER:  // counts against both limits
+        n.sampled_images += count;
+        n.samplers += count;
+        break;
+      case VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER: n.uniform_buffers += count; break;
+      default: n.storage_buffers += count; break;
+    }
+  };
+  host.storage_buffers = desc.storage_buffers;
+  for (const auto& slot : desc.images) add(host, slot.type, slot.count);
+  for (const auto& d : k.descriptors) add(kernel, d.type, d.count);
+  PipelineNeeds n;
+  n.name = desc.shader;
+  n.storage_images = std::max(host.storage_images, kernel.storage_images);
+  n.sampled_images = std::max(host.sampled_images, kernel.sampled_images);
+  n.samplers = std::max(host.samplers, kernel.samplers);
+  n.storage_buffers = std::max(host.storage_buffers, kernel.storage_buffers);
+  n.uniform_buffers = std::max(host.uniform_buffers, kernel.uniform_buffers);
+  n.descriptor_sets = 1;
+  n.push_constant_bytes = std::max(desc.push_constant_bytes, k.push_constant_bytes);
+  n.shared_memory_bytes = k.shared_memory_bytes;
+  for (int i = 0; i < 3; ++i) n.workgroup_size[i] = k.workgroup_size[i];
+  return n;
+}
+
 ComputePipeline::ComputePipeline(Device& device, const ComputePipelineDesc& desc) : desc_(desc) {
+  require_fits(device.info().limits, pipeline_needs(desc), device.info().name);
   VkDevice dev = device.get();
   const auto spirv = find_shader(desc.shader);
 
@@ -126,7 +171,13 @@ BindingSet::BindingSet(Device& device, const ComputePipeline& pipeline, const st
 
   std::vector<VkDescriptorBufferInfo> infos(n);
   std::vector<VkWriteDescriptorSet> writes(n);
+  const uint32_t max_range = device.info().limits.storage_buffer_range;
   for (uint32_t i = 0; i < n; ++i) {
+    const VkDeviceSize range = buffers[i].range == VK_WHOLE_SIZE ? buffers[i].buffer->size() - buffers[i].offset
+                                                                  : buffers[i].range;
+    if (range > max_range)
+      throw DeviceError(device.info().name + " cannot bind " + std::to_string(range) + " bytes of a storage buffer to '" +
+                        name + "': the device allows " + std::to_string(max_range) + " (maxStorageBufferRange)");
     infos[i] = {buffers[i].buffer->get(), buffers[i].offset, buffers[i].range};
     writes[i] = VkWriteDescriptorSet{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
     writes[i].dstSet = set_;

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "harness/vk/device_limits.hpp"
 #include "harness/vk/unique_handle.hpp"
 
 namespace vsgl {
@@ -42,8 +43,15 @@ struct ComputePipelineDesc {
   std::vector<ImageSlot> images;  // bindings n, n+1, ...
 };
 
+// What the pipeline of `desc` needs: its set layout's descriptors (the larger of what the host
+// declares and what the kernel's SPIR-V declares, per type), push constants, and from the SPIR-V
+// with `desc.constants` applied its shared memory and work-group size. Needs no device.
+PipelineNeeds pipeline_needs(const ComputePipelineDesc& desc);
+
 class ComputePipeline {
  public:
+  // Checks pipeline_needs(desc) against the device's limits first: DeviceError (exit 4) naming the
+  // limit, its value and the need when it does not fit; nothing is created then.
   ComputePipeline(Device& device, const ComputePipelineDesc& desc);
   ComputePipeline(ComputePipeline&&) noexcept = default;
   ComputePipeline& operator=(ComputePipeline&&) noexcept = default;

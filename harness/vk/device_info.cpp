@@ -62,6 +62,7 @@ std::vector<DeviceInfo> enumerate_devices(VkInstance instance) {
     VkFormatProperties rgba32f{};
     vkGetPhysicalDeviceFormatProperties(handles[i], VK_FORMAT_R32G32B32A32_SFLOAT, &rgba32f);
     d.rgba32f_features = rgba32f.optimalTilingFeatures;
+    d.limits = read_device_limits(base, 0, 0, d.rgba32f_features);
 
     if (d.api_version < VK_API_VERSION_1_2) {
       d.unusable_reason = "supports Vulkan " + api_version_string(d.api_version) + ", vsgl-bench needs 1.2";
@@ -69,14 +70,17 @@ std::vector<DeviceInfo> enumerate_devices(VkInstance instance) {
       continue;
     }
     VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
+    VkPhysicalDeviceMaintenance3Properties maintenance3{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_3_PROPERTIES};
+    maintenance3.pNext = &driver;
     VkPhysicalDeviceSubgroupProperties subgroup{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
-    subgroup.pNext = &driver;
+    subgroup.pNext = &maintenance3;
     VkPhysicalDeviceProperties2 props2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
     props2.pNext = &subgroup;
     vkGetPhysicalDeviceProperties2(handles[i], &props2);
     d.driver_name = driver.driverName;
     d.driver_info = driver.driverInfo;
     d.subgroup_size = subgroup.subgroupSize;
+    d.limits = read_device_limits(base, maintenance3.maxMemoryAllocationSize, d.subgroup_size, d.rgba32f_features);
 
     VkPhysicalDeviceFeatures features{};
     vkGetPhysicalDeviceFeatures(handles[i], &features);
@@ -183,6 +187,7 @@ nlohmann::json to_json(const DeviceInfo& d) {
       {"subgroup_size", d.subgroup_size},
       {"max_compute_shared_memory", d.max_shared_memory},
       {"device_local_bytes", d.device_local_bytes},
+      {"limits", to_json(d.limits)},
       {"usable", d.usable()},
       {"unusable_reason", d.unusable_reason},
   };

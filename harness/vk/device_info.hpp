@@ -3,6 +3,8 @@
 // Selection is explicit about why: an unusable device carries the reason it was rejected.
 #include <vulkan/vulkan.h>
 
+#include "harness/vk/device_limits.hpp"
+
 #include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <string>
@@ -37,6 +39,7 @@ struct DeviceInfo {
   uint32_t sub_texel_precision_bits = 0;
   uint32_t mipmap_precision_bits = 0;
   VkFormatFeatureFlags rgba32f_features = 0;  // optimal tiling features of VK_FORMAT_R32G32B32A32_SFLOAT
+  DeviceLimits limits;  // every limit a kernel or capture depends on; checked before each pipeline
   std::string unusable_reason;  // empty = usable
 
   bool usable() const { return unusable_reason.empty(); }

@@ -1,6 +1,7 @@
 #include "harness/vk/image.hpp"
 
 #include "harness/vk/device.hpp"
+#include "harness/core/error.hpp"
 #include "harness/vk/vk_check.hpp"
 
 namespace vsgl {
@@ -60,6 +61,15 @@ namespace vsgl {
 MipImage::MipImage(Device& device, uint32_t size, uint32_t levels, uint32_t layers, VkFormat format,
                    VkImageUsageFlags usage, const std::string& name)
     : format_(format), size_(size), levels_(levels), layers_(layers) {
+  const DeviceLimits& limits = device.info().limits;
+  if (size > limits.image_dimension_2d)
+    throw DeviceError(device.info().name + " cannot create image '" + name + "': it needs " + std::to_string(size) +
+                      " texels per side where the device allows " + std::to_string(limits.image_dimension_2d) +
+                      " (maxImageDimension2D)");
+  if (layers > limits.image_array_layers)
+    throw DeviceError(device.info().name + " cannot create image '" + name + "': it needs " + std::to_string(layers) +
+                      " array layers where the device allows " + std::to_string(limits.image_array_layers) +
+                      " (maxImageArrayLayers)");
   VkDevice dev = device.get();
   VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
   info.format = format;

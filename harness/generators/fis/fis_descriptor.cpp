@@ -26,7 +26,10 @@ SourceSet fis_sources(const GeneratorConfig& config) {
   }
   s.kernels.push_back("kernels/fis_additional_texture.comp");
   switch (config.mipmapping.value_or(MipStrategy::kSinglePass)) {
-    case MipStrategy::kSinglePass: s.kernels.push_back("kernels/fis_mip_single_pass.comp"); break;
+    case MipStrategy::kSinglePass:
+      s.kernels.push_back("kernels/fis_mip_single_pass.comp");
+      s.kernels.push_back("kernels/fis_mip_single_pass_tail.comp");
+      break;
     case MipStrategy::kPerLevel: s.kernels.push_back("kernels/fis_mip_level_texture.comp"); break;
     case MipStrategy::kBlit: break;  // vkCmdBlitImage: no kernel of ours
   }

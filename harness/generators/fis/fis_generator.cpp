@@ -26,7 +26,7 @@ using gpu::kFisSpdTileLevels;
 using gpu::kFisTile;
 
 constexpr uint32_t kMomentLayers = 3;
-constexpr uint32_t kSpdLevelSlots = 16;  // levels[] of fis_mip_single_pass.comp
+using gpu::kFisSpdTailLevelSlots;
 
 FisParams checked(const FisParams& p, const DeviceView& view) {
   if (p.vsgl_count == 0) throw InputError("N = 0: at least one VSGL is needed");
@@ -48,7 +48,87 @@ VkDeviceSize spd_mid_texels(const VirtualSquare& sq) {
   return std::max<VkDeviceSize>(n, 1);
 }
 
+std::vector<SpecializationConstant> sampling_constants(FisVariant variant, uint32_t bisection_iterations) {
+  return {{0, kFisSamplingGroup}, {1, variant == FisVariant::kTok15 ? 0u : 1u}, {2, bisection_iterations}};
+}
+
+constexpr ImageSlot kStorageImage{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1};
+
+ComputePipelineDesc additional_pipeline(PyramidPath path) {
+  if (path == PyramidPath::kBuffer)
+    return {"fis_additional.comp", 2, sizeof(FisAdditionalPush), tile_constants()};
+  return {"fis_additional_texture.comp", 1, sizeof(FisAdditionalPush), tile_constants(), {kStorageImage}};
+}
+
+ComputePipelineDesc sampling_pipeline(PyramidPath path, const std::vector<SpecializationConstant>& constants) {
+  if (path == PyramidPath::kBuffer) return {"fis_filtered_sampling.comp", 2, sizeof(FisSamplingPush), constants};
+  return {"fis_filtered_sampling_texture.comp", 1, sizeof(FisSamplingPush), constants,
+          {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}}};
+}
+
+// The single pass's two dispatches: tiles to level 6, then levels 7..L (fis_mip_single_pass*.comp).
+std::vector<ComputePipelineDesc> single_pass_pipelines() {
+  return {{"fis_mip_single_pass.comp", 1, sizeof(FisMipPush), tile_constants(),
+           {kStorageImage, {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kFisSpdTileLevels}}},
+          {"fis_mip_single_pass_tail.comp", 1, sizeof(FisMipPush), tile_constants(),
+           {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kFisSpdTailLevelSlots}}}};
+}
+
+std::vector<ComputePipelineDesc> mip_pipelines(PyramidPath path, MipStrategy strategy) {
+  if (path == PyramidPath::kBuffer) return {{"fis_mip_level.comp", 1, sizeof(FisMipPush), tile_constants()}};
+  switch (strategy) {
+    case MipStrategy::kSinglePass: return single_pass_pipelines();
+    case MipStrategy::kPerLevel:
+      return {{"fis_mip_level_texture.comp", 0, sizeof(FisMipPush), tile_constants(), {kStorageImage, kStorageImage}}};
+    case MipStrategy::kBlit: break;
+  }
+  return {};
+}
+
+constexpr MipStrategy kMipFallbackOrder[] = {MipStrategy::kBlit, MipStrategy::kPerLevel, MipStrategy::kSinglePass};
+
 }  // namespace
+
+std::vector<ComputePipelineDesc> fis_pipelines(PyramidPath path, MipStrategy strategy) {
+  std::vector<ComputePipelineDesc> out{additional_pipeline(path)};
+  for (auto& d : mip_pipelines(path, strategy)) out.push_back(std::move(d));
+  out.push_back(sampling_pipeline(path, sampling_constants(FisVariant::kModified, FisParams{}.bisection_iterations)));
+  return out;
+}
+
+std::string fis_unfit_reason(const DeviceInfo& info, PyramidPath path, MipStrategy strategy) {
+  if (path == PyramidPath::kTexture) {
+    const std::string why = texture_path_unsupported_reason(info);
+    if (!why.empty()) return why;
+    const VkFormatFeatureFlags blit = VK_FORMAT_FEATURE_BLIT_SRC_BIT | VK_FORMAT_FEATURE_BLIT_DST_BIT;
+    if (strategy == MipStrategy::kBlit && (info.rgba32f_features & blit) != blit)
+      return "the device cannot blit RGBA32F images";
+  }
+  for (const auto& desc : fis_pipelines(path, strategy)) {
+    const std::string why = does_not_fit_reason(info.limits, pipeline_needs(desc));
+    if (!why.empty()) return why;
+  }
+  return {};
+}
+
+MipStrategy effective_mip_strategy(const DeviceInfo& info, std::optional<MipStrategy> requested, std::string* reason) {
+  const MipStrategy wanted = requested.value_or(default_mip_strategy(info));
+  const std::string why = fis_unfit_reason(info, PyramidPath::kTexture, wanted);
+  if (why.empty()) return wanted;
+  std::string all = std::string(mip_strategy_name(wanted)) + ": " + why;
+  for (MipStrategy s : kMipFallbackOrder) {
+    if (s == wanted) continue;
+    const std::string other = fis_unfit_reason(info, PyramidPath::kTexture, s);
+    if (other.empty()) {
+      if (reason != nullptr)
+        *reason = std::string("--mipmapping ") + mip_strategy_name(wanted) + " does not fit " + info.name + ": " + why +
+                  "; " + mip_strategy_name(s) + " is used instead";
+      return s;
+    }
+    all += "; " + std::string(mip_strategy_name(s)) + ": " + other;
+  }
+  throw DeviceError(info.name + " cannot build the texture pyramid's mip chain with any strategy (" + all + ")");
+}
 
 std::string texture_path_unsupported_reason(const DeviceInfo& info) {
   const VkFormatFeatureFlags f = info.rgba32f_features;
@@ -75,16 +155,28 @@ std::string default_mip_strategy_reason(const DeviceInfo& info) {
 }
 
 PyramidPath effective_pyramid_path(const DeviceInfo& info, PyramidPath requested, std::string* reason) {
-  if (requested == PyramidPath::kBuffer) return requested;
-  const std::string why = texture_path_unsupported_reason(info);
-  if (why.empty()) return requested;
+  const auto buffer = [&]() {
+    const std::string why = fis_unfit_reason(info, PyramidPath::kBuffer, MipStrategy::kPerLevel);
+    if (!why.empty()) throw DeviceError(info.name + " cannot run FIS on the storage-buffer pyramid: " + why);
+    return PyramidPath::kBuffer;
+  };
+  if (requested == PyramidPath::kBuffer) return buffer();
+  std::string why = texture_path_unsupported_reason(info);
+  if (why.empty()) {
+    bool any = false;
+    for (MipStrategy s : kMipFallbackOrder) any = any || fis_unfit_reason(info, PyramidPath::kTexture, s).empty();
+    if (any) return requested;
+    why = "no mip strategy of the texture path fits the device (" +
+          fis_unfit_reason(info, PyramidPath::kTexture, MipStrategy::kPerLevel) + ")";
+  }
   if (reason != nullptr) *reason = why;
-  return PyramidPath::kBuffer;
+  return buffer();
 }
 
 GeneratorConfig resolve_fis_config(const DeviceInfo& info, GeneratorConfig config) {
   config.pyramid = effective_pyramid_path(info, config.pyramid);
-  if (!config.mipmapping) config.mipmapping = default_mip_strategy(info);
+  config.mipmapping = config.pyramid == PyramidPath::kTexture ? effective_mip_strategy(info, config.mipmapping)
+                                                              : config.mipmapping.value_or(default_mip_strategy(info));
   return config;
 }
 
@@ -93,25 +185,27 @@ FisGenerator::FisGenerator(Device& device, const DeviceView& view, FisVariant va
       variant_(variant),
       params_(checked(params, view)),
       path_(PyramidPath::kBuffer),
-      strategy_(params.mipmapping.value_or(default_mip_strategy(device.info()))),
+      strategy_(MipStrategy::kBlit),
       vsgls_(device, VkDeviceSize{params.vsgl_count} * sizeof(VsglRecord), MemoryUsage::kDeviceLocal,
              name() + "." + view.label + ".vsgls") {
   std::string fallback;
   path_ = effective_pyramid_path(device.info(), params.pyramid, &fallback);
   if (!fallback.empty())
     std::cerr << program_name() << ": " << fallback << "; " << name() << " uses the storage-buffer pyramid instead\n";
+  std::string mip_fallback;
+  strategy_ = path_ == PyramidPath::kTexture ? effective_mip_strategy(device.info(), params.mipmapping, &mip_fallback)
+                                             : params.mipmapping.value_or(default_mip_strategy(device.info()));
+  if (!mip_fallback.empty()) std::cerr << program_name() << ": " << mip_fallback << " (" << name() << ")\n";
   const VirtualSquare& sq = view.square;
-  const std::vector<SpecializationConstant> sampling_constants{
-      {0, kFisSamplingGroup}, {1, variant == FisVariant::kTok15 ? 0u : 1u}, {2, params.bisection_iterations}};
+  const auto sampling = sampling_pipeline(path_, sampling_constants(variant, params.bisection_iterations));
   const std::string base = name() + "." + view.label;
 
   if (path_ == PyramidPath::kBuffer) {
     pyramid_ = Buffer(device, VkDeviceSize{kMomentLayers} * sq.total_texels() * sizeof(glm::vec4),
                       MemoryUsage::kDeviceLocal, base + ".pyramid");
-    additional_.emplace(device, ComputePipelineDesc{"fis_additional.comp", 2, sizeof(FisAdditionalPush), tile_constants()});
-    mip_.emplace(device, ComputePipelineDesc{"fis_mip_level.comp", 1, sizeof(FisMipPush), tile_constants()});
-    filtered_sampling_.emplace(
-        device, ComputePipelineDesc{"fis_filtered_sampling.comp", 2, sizeof(FisSamplingPush), sampling_constants});
+    additional_.emplace(device, additional_pipeline(path_));
+    mip_.emplace(device, mip_pipelines(path_, strategy_).front());
+    filtered_sampling_.emplace(device, sampling);
     additional_set_.emplace(device, *additional_, std::vector<BufferBinding>{view.texels, pyramid_}, base + ".additional");
     mip_sets_.emplace_back(device, *mip_, std::vector<BufferBinding>{pyramid_}, base + ".mipmapping");
     sampling_set_.emplace(device, *filtered_sampling_, std::vector<BufferBinding>{pyramid_, vsgls_},
@@ -119,11 +213,6 @@ FisGenerator::FisGenerator(Device& device, const DeviceView& view, FisVariant va
     return;
   }
 
-  if (strategy_ == MipStrategy::kBlit) {
-    const VkFormatFeatureFlags need = VK_FORMAT_FEATURE_BLIT_SRC_BIT | VK_FORMAT_FEATURE_BLIT_DST_BIT;
-    if ((device.info().rgba32f_features & need) != need)
-      throw InputError("--mipmapping blit: the device cannot blit RGBA32F images (use single-pass or per-level)");
-  }
   image_.emplace(device, sq.size, sq.levels + 1, kMomentLayers, VK_FORMAT_R32G32B32A32_SFLOAT,
                  VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
                      VK_IMAGE_USAGE_TRANSFER_DST_BIT,
@@ -139,32 +228,33 @@ FisGenerator::FisGenerator(Device& device, const DeviceView& view, FisVariant va
   si.unnormalizedCoordinates = VK_FALSE;
   sampler_.emplace(device, si, base + ".sampler");
 
-  const ImageSlot storage{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1};
-  additional_.emplace(device, ComputePipelineDesc{"fis_additional_texture.comp", 1, sizeof(FisAdditionalPush),
-                                                  tile_constants(), {storage}});
+  additional_.emplace(device, additional_pipeline(path_));
   additional_set_.emplace(device, *additional_, std::vector<BufferBinding>{view.texels},
                           std::vector<ImageBinding>{{{image_->level_view(0)}}}, base + ".additional");
-  filtered_sampling_.emplace(device,
-                             ComputePipelineDesc{"fis_filtered_sampling_texture.comp", 1, sizeof(FisSamplingPush),
-                                                 sampling_constants, {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}}});
+  filtered_sampling_.emplace(device, sampling);
   sampling_set_.emplace(device, *filtered_sampling_, std::vector<BufferBinding>{vsgls_},
                         std::vector<ImageBinding>{{{image_->view()}, sampler_->get()}}, base + ".filtered_sampling");
 
   if (strategy_ == MipStrategy::kSinglePass) {
-    if (sq.levels + 1 > kSpdLevelSlots) throw InputError("the single-pass downsampler supports at most 16 mip levels");
+    if (sq.levels > kFisSpdTileLevels + kFisSpdTailLevelSlots)
+      throw InputError("the single-pass downsampler supports squares of at most 2^" +
+                       std::to_string(kFisSpdTileLevels + kFisSpdTailLevelSlots) + " texels");
     spd_mid_ = Buffer(device, VkDeviceSize{kMomentLayers} * spd_mid_texels(sq) * sizeof(glm::vec4),
                       MemoryUsage::kDeviceLocal, base + ".spd_mid");
-    spd_counter_ = Buffer(device, sizeof(uint32_t), MemoryUsage::kDeviceLocal, base + ".spd_counter");
-    fill_zero(device, spd_counter_);  // untimed; the last group of every run resets it to zero
-    mip_.emplace(device, ComputePipelineDesc{"fis_mip_single_pass.comp", 2, sizeof(FisMipPush), tile_constants(),
-                                             {storage, {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kSpdLevelSlots}}});
-    ImageBinding levels;
-    for (uint32_t l = 0; l < kSpdLevelSlots; ++l) levels.views.push_back(image_->level_view(std::min(l, sq.levels)));
-    mip_sets_.emplace_back(device, *mip_, std::vector<BufferBinding>{spd_mid_, spd_counter_},
-                           std::vector<ImageBinding>{{{image_->level_view(0)}}, levels}, base + ".mipmapping");
+    const auto descs = single_pass_pipelines();
+    mip_.emplace(device, descs[0]);
+    spd_tail_.emplace(device, descs[1]);
+    // Entries above L repeat level L; they are never written.
+    ImageBinding tile_levels, tail_levels;
+    for (uint32_t l = 1; l <= kFisSpdTileLevels; ++l) tile_levels.views.push_back(image_->level_view(std::min(l, sq.levels)));
+    for (uint32_t l = kFisSpdTileLevels + 1; l <= kFisSpdTileLevels + kFisSpdTailLevelSlots; ++l)
+      tail_levels.views.push_back(image_->level_view(std::min(l, sq.levels)));
+    mip_sets_.emplace_back(device, *mip_, std::vector<BufferBinding>{spd_mid_},
+                           std::vector<ImageBinding>{{{image_->level_view(0)}}, tile_levels}, base + ".mipmapping");
+    mip_sets_.emplace_back(device, *spd_tail_, std::vector<BufferBinding>{spd_mid_},
+                           std::vector<ImageBinding>{tail_levels}, base + ".mipmapping.tail");
   } else if (strategy_ == MipStrategy::kPerLevel) {
-    mip_.emplace(device, ComputePipelineDesc{"fis_mip_level_texture.comp", 0, sizeof(FisMipPush), tile_constants(),
-                                             {storage, storage}});
+    mip_.emplace(device, mip_pipelines(path_, strategy_).front());
     for (uint32_t l = 0; l < sq.levels; ++l)
       mip_sets_.emplace_back(device, *mip_, std::vector<BufferBinding>{},
                              std::vector<ImageBinding>{{{image_->level_view(l)}}, {{image_->level_view(l + 1)}}},
@@ -213,12 +303,17 @@ void FisGenerator::record_mipmapping(CommandStream& stream) {
     return;
   }
   if (strategy_ == MipStrategy::kSinglePass) {
-    // One group per 64x64 tile of level 0 (= one per in-bounds level-6 texel); one group covers a
-    // square of at most 64 texels.
-    const uint32_t gx = sq.levels > kFisSpdTileLevels ? sq.level_width(kFisSpdTileLevels) : 1;
-    const uint32_t gy = sq.levels > kFisSpdTileLevels ? sq.level_height(kFisSpdTileLevels) : 1;
-    const FisMipPush push{sq.width, sq.height, 0, gx * gy};
-    stream.dispatch(*mip_, mip_sets_.front(), push, gx, gy);
+    // One group per 64x64 tile of level 0 (= one per in-bounds level-6 texel) builds levels 1..6;
+    // then one group builds levels 7..L from the level-6 texels.
+    const bool tail = sq.levels > kFisSpdTileLevels;
+    const uint32_t gx = tail ? sq.level_width(kFisSpdTileLevels) : 1;
+    const uint32_t gy = tail ? sq.level_height(kFisSpdTileLevels) : 1;
+    const FisMipPush push{sq.width, sq.height, 0, 0};
+    stream.dispatch(*mip_, mip_sets_[0], push, gx, gy);
+    if (tail) {
+      stream.compute_barrier();
+      stream.dispatch(*spd_tail_, mip_sets_[1], push, 1, 1);
+    }
     return;
   }
   // vkCmdBlitImage chain. A linear 2:1 blit samples each destination texel exactly between its

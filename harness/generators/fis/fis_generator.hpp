@@ -49,8 +49,22 @@ std::string texture_path_unsupported_reason(const DeviceInfo& info);
 MipStrategy default_mip_strategy(const DeviceInfo& info);
 std::string default_mip_strategy_reason(const DeviceInfo& info);
 // The pyramid path a run takes for `requested` on this device: the texture path falls back to
-// the buffer path (with `reason` set) when the device cannot filter RGBA32F.
+// the buffer path (with `reason` set) when the device cannot filter RGBA32F or no mip strategy
+// of it fits the device's limits. Throws DeviceError when the buffer path does not fit either.
 PyramidPath effective_pyramid_path(const DeviceInfo& info, PyramidPath requested, std::string* reason = nullptr);
+
+// The compute pipelines a FIS generator creates for `path` and (texture path) `strategy`, in
+// creation order, for the variant with the paper's parameters: what fis_unfit_reason checks
+// against a device before anything is created (DESIGN.md §9).
+std::vector<ComputePipelineDesc> fis_pipelines(PyramidPath path, MipStrategy strategy);
+// Why the device cannot run FIS on `path` with `strategy` (empty: it can): a pipeline over a
+// limit (named, with its value and the need), or a format feature missing.
+std::string fis_unfit_reason(const DeviceInfo& info, PyramidPath path, MipStrategy strategy);
+// The mip strategy a run on the texture path uses: `requested` (else the device kind's default)
+// when it fits the device, otherwise the first of blit, per-level, single-pass that does, with
+// `reason` saying why. Throws DeviceError naming the limits when none fits.
+MipStrategy effective_mip_strategy(const DeviceInfo& info, std::optional<MipStrategy> requested,
+                                   std::string* reason = nullptr);
 
 struct GeneratorConfig;
 // `config` with the FIS pyramid path this device takes and its mipmapping strategy filled in
@@ -59,8 +73,9 @@ GeneratorConfig resolve_fis_config(const DeviceInfo& info, GeneratorConfig confi
 
 class FisGenerator : public VsglGenerator {
  public:
-  // Throws InputError for N = 0, N larger than the view's samplable texels, K <= 0, or the blit
-  // strategy on a device that cannot blit RGBA32F with a linear filter.
+  // Throws InputError for N = 0, N larger than the view's samplable texels or K <= 0. A path or
+  // mip strategy the device cannot run (limits, RGBA32F features) falls back, said on stderr
+  // (effective_pyramid_path, effective_mip_strategy); DeviceError when nothing fits.
   FisGenerator(Device& device, const DeviceView& view, FisVariant variant, const FisParams& params);
 
   std::string name() const override { return fis_variant_name(variant_); }
@@ -93,14 +108,14 @@ class FisGenerator : public VsglGenerator {
   // Texture path.
   std::optional<MipImage> image_;
   std::optional<Sampler> sampler_;
-  Buffer spd_mid_;      // single pass: level-6 and coarser texels
-  Buffer spd_counter_;  // single pass: groups finished (reset by the last)
+  Buffer spd_mid_;  // single pass: level-6 and coarser texels, handed from its first dispatch to its second
   // Pipelines and sets of the chosen path.
   std::optional<ComputePipeline> additional_;
   std::optional<ComputePipeline> mip_;
+  std::optional<ComputePipeline> spd_tail_;  // single pass: levels 7..L
   std::optional<ComputePipeline> filtered_sampling_;
   std::optional<BindingSet> additional_set_;
-  std::vector<BindingSet> mip_sets_;  // one (single pass / buffer) or one per level (per-level)
+  std::vector<BindingSet> mip_sets_;  // buffer: one; single pass: tiles, tail; per-level: one per level
   std::optional<BindingSet> sampling_set_;
 };
 

@@ -11,6 +11,9 @@ VSGL_CONST uint kFisTile = 16u;          // 16x16 threads per group in the per-t
 VSGL_CONST uint kFisSamplingGroup = 64u; // threads per group in filtered sampling
 // Single-pass downsampler: a 16x16 group reduces a 64x64 tile of level 0 to one level-6 texel.
 VSGL_CONST uint kFisSpdTileLevels = 6u;
+// Its second dispatch writes levels 7..14 (8 storage images, the desktop baseline's per-stage
+// limit), so it takes squares of up to 2^14 texels.
+VSGL_CONST uint kFisSpdTailLevelSlots = 8u;
 
 // fis_additional*.comp
 struct FisAdditionalPush {
@@ -23,12 +26,12 @@ struct FisAdditionalPush {
 VSGL_LAYOUT(FisAdditionalPush, 32);
 VSGL_VEC4_AT(FisAdditionalPush, source_position, 0);
 
-// fis_mip_level*.comp (one dispatch per level) and fis_mip_single_pass.comp
+// fis_mip_level*.comp (one dispatch per level) and fis_mip_single_pass*.comp
 struct FisMipPush {
   uint width;
   uint height;
   uint source_level;     // per-level kernels: level l, writing l + 1
-  uint spd_groups;       // single pass: work groups of the dispatch (the last one finishes)
+  uint reserved;         // 0 (keeps the block 16 bytes)
 };
 VSGL_LAYOUT(FisMipPush, 16);
 
