@@ -85,6 +85,7 @@ class FisGenerator : public VsglGenerator {
   uint32_t vsgl_count() const override { return params_.vsgl_count; }
 
   PyramidPath pyramid_path() const { return path_; }
+  MipStrategy mip_strategy() const { return strategy_; }  // after any fallback to what fits
   // The 3 moment layers' pyramids (layer-major, VirtualSquare layout), read back from either
   // path's storage, for verify. Submits and waits.
   std::vector<glm::vec4> download_pyramid(Device& device) const;
