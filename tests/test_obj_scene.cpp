@@ -253,6 +253,16 @@ TEST(ObjImport, BadFilesNameTheFileAndLine) {
   e = input_error([&] { import_obj(write_text(dir / "g.obj", "mtllib g.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\n")); });
   EXPECT_NE(e.find("could not be decoded"), std::string::npos) << e;
 
+  // An mtllib naming a directory (found by fuzz_obj: its read threw through tinyobjloader) is a
+  // missing library; a directory given as the file is an error.
+  fs::create_directories(dir / "lib.mtl");
+  const GltfImport dir_lib = import_obj(write_text(dir / "d.obj", "mtllib lib.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
+  EXPECT_NE(dir_lib.notes.at(0).find("WARNING"), std::string::npos);
+  write_text(dir / "empty.mtl", "");
+  const GltfImport empty_lib = import_obj(write_text(dir / "e.obj", "mtllib empty.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
+  for (const std::string& n : empty_lib.notes) EXPECT_EQ(n.find("WARNING"), std::string::npos) << "an empty library is no missing one: " << n;
+  e = input_error([&] { import_obj(dir / "lib.mtl"); });
+  EXPECT_NE(e.find("directory"), std::string::npos) << e;
   e = input_error([&] { import_obj(dir / "absent.obj"); });
   EXPECT_NE(e.find("absent.obj"), std::string::npos) << e;
   GltfCameraChoice cam;

@@ -39,12 +39,20 @@ class MtlReader : public tinyobj::MaterialReader {
 
   bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
                   std::map<std::string, int>* material_map, std::string* warn, std::string* err) override {
-    std::ifstream in(dir_ / name, std::ios::binary);
-    if (!in) {
+    // Nothing may throw through tinyobjloader: a name that is no regular file (a directory, found
+    // by fuzz_obj: reading one threw std::ios_failure) or cannot be read counts as missing.
+    const fs::path p = dir_ / name;
+    std::error_code ec;
+    std::ifstream in;
+    if (fs::is_regular_file(p, ec)) in.open(p, std::ios::binary);
+    std::string bytes;
+    char chunk[1 << 14];
+    while (in.is_open() && (in.read(chunk, sizeof chunk) || in.gcount() > 0)) bytes.append(chunk, static_cast<std::size_t>(in.gcount()));
+    if (!in.is_open() || in.bad()) {
       missing.push_back(name);
       return false;
     }
-    Library lib{name, std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()), {}};
+    Library lib{name, std::move(bytes), {}};
     std::istringstream text(lib.text);
     const std::size_t first = materials->size();
     tinyobj::LoadMtl(material_map, materials, &text, warn, err);
@@ -279,8 +287,10 @@ class ObjConverter {
     const std::string key = p.lexically_normal().string();
     if (const auto it = images_.find(key); it != images_.end()) return it->second;
     const std::string what = where + ": " + keyword + " " + quote_name(name);
-    std::ifstream in(p, std::ios::binary);
-    if (!in || fs::is_directory(p)) r_.fail(what + " is missing (looked for " + quote_name(p.string()) + ")");
+    std::error_code ec;
+    std::ifstream in;
+    if (fs::is_regular_file(p, ec)) in.open(p, std::ios::binary);
+    if (!in.is_open()) r_.fail(what + " is missing (looked for " + quote_name(p.string()) + ")");
     const std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     if (bytes.empty() || bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
       r_.fail(what + " is empty or too large");
