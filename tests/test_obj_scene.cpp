@@ -9,9 +9,12 @@
 #include <fstream>
 #include <string>
 
+#include "gpu_test.hpp"
 #include "input_error.hpp"
+#include "harness/capture/capture_files.hpp"
 #include "harness/core/error.hpp"
 #include "harness/quality/png_image.hpp"
+#include "harness/scene/capture_provisioning.hpp"
 #include "harness/scene/model_scene.hpp"
 #include "harness/scene/obj_scene.hpp"
 
@@ -307,6 +310,39 @@ TEST(ObjImport, SampleFiles) {
   EXPECT_GT(spider.scene.textures.size(), 0u) << "spider.mtl's JPEG textures";
   const std::string e = input_error([&] { import_obj(kModels / "point_cloud.obj"); });
   EXPECT_NE(e.find("has no faces"), std::string::npos) << e;
+}
+
+// The hand-written room recorded through the library at a tiny size: the capture on disk loads
+// with every check of load_capture (finite values, unit normals, hashes) and both PDFs are nonzero.
+class ObjRecordTest : public test::GpuTest {};
+
+TEST_F(ObjRecordTest, RoomRecordsAValidCaptureWithABrsmPdf) {
+  const fs::path dir = temp_dir("record");
+  GltfCameraChoice cam;
+  cam.eye = glm::vec3(0.0f, 2.4f, 1.8f);
+  cam.look_at = glm::vec3(0.0f, 0.0f, -0.4f);
+  GltfLightChoice light;  // inside the closed room (the automatic spot would sit above its ceiling)
+  light.position = glm::vec3(0.3f, 2.9f, -0.2f);
+  light.direction = glm::vec3(0.0f, -1.0f, 0.0f);
+  light.cone_half_angle_deg = 40.0f;
+  light.intensity = glm::vec3(20.0f);
+  const GltfImport room = import_obj(write_room(dir), cam, light);
+  record_capture(device(), room.scene, RecordSizes{48, 32, 32}, 0, 1, dir / "capture");
+  const Capture cap = load_capture(dir / "capture");
+  ASSERT_TRUE(cap.rsm.has_pdf);
+  double gbuffer_pdf = 0.0, rsm_pdf = 0.0;
+  std::size_t valid = 0;
+  for (uint32_t y = 0; y < cap.gbuffer.height; ++y)
+    for (uint32_t x = 0; x < cap.gbuffer.width; ++x) {
+      valid += cap.gbuffer.at(kValid, x, y) == 1.0f;
+      gbuffer_pdf += static_cast<double>(cap.gbuffer.at(kPdf, x, y));
+    }
+  for (uint32_t y = 0; y < cap.rsm.height; ++y)
+    for (uint32_t x = 0; x < cap.rsm.width; ++x) rsm_pdf += static_cast<double>(cap.rsm.at(kPdf, x, y));
+  EXPECT_EQ(valid, std::size_t{48} * 32) << "the room is closed: every camera texel sees a surface";
+  EXPECT_GT(gbuffer_pdf, 0.0);
+  EXPECT_GT(rsm_pdf, 0.0) << "the floor lights the walls: the BRSM PDF is not zero";
+  fs::remove_all(dir);
 }
 
 }  // namespace
