@@ -317,7 +317,7 @@ class ObjConverter {
       t.height = alpha->height;
       t.rgba8.assign(static_cast<std::size_t>(t.width) * t.height * 4, 255);
     }
-    t.name += alpha != diffuse ? " + " + alpha->name : "";
+    if (diffuse != nullptr) t.name += " + " + alpha->name;
     // The alpha channel of map_d when its image has one (not all 255), else its first channel.
     bool has_alpha = false;
     for (std::size_t i = 3; i < alpha->rgba8.size() && !has_alpha; i += 4) has_alpha = alpha->rgba8[i] != 255;

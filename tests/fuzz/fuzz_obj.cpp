@@ -1,8 +1,8 @@
 // libFuzzer target: the Wavefront OBJ importer (harness/scene/obj_scene.cpp, on Debian's
 // tinyobjloader), and the animated frames it derives. The input is the .obj text; beside it lies
-// a fixed material library, fixed.mtl (plain, cut-out, textured and normal-mapped materials, and
-// one whose texture is missing), which the input may name with `mtllib fixed.mtl` or not, and the
-// 2x2 BMP texture it uses. Bad input must end in InputError; anything else (a crash, a sanitizer
+// a fixed material library, fixed.mtl (plain, cut-out, textured and normal-mapped materials),
+// which the input may name with `mtllib fixed.mtl` or not, the 2x2 BMP texture it uses, and
+// lost.mtl, whose material's texture is missing. Bad input must end in InputError; anything else (a crash, a sanitizer
 // report, another exception) is a bug.
 #include <cstdint>
 #include <string>
@@ -32,8 +32,9 @@ const vsgl::fuzz::ScratchDir& scratch() {
     d.write("fixed.mtl",
             "newmtl plain\nKd 0.8 0.2 0.2\nKs 0.5 0.5 0.5\nNs 50\n"
             "newmtl cut\nKd 0.2 0.8 0.2\nd 0.4\n"
-            "newmtl tex\nKd 1 1 1\nmap_Kd tex.bmp\nmap_d tex.bmp\nmap_bump tex.bmp\nNs 1000\nKs 4 4 4\n"
-            "newmtl lost\nmap_Kd missing.png\n");
+            "newmtl tex\nKd 1 1 1\nmap_Kd tex.bmp\nmap_d tex.bmp\nmap_bump tex.bmp\nNs 1000\nKs 4 4 4\n");
+    // Apart: every material of a library is converted, so this one fails every input naming it.
+    d.write("lost.mtl", "newmtl lost\nmap_Kd missing.png\n");
     return d;
   }();
   return dir;
