@@ -15,7 +15,8 @@ packages=(
   libstb-dev                              # PNG output of the shading pass
   clang                                   # libFuzzer targets (tests/fuzz; the suite's fuzz smoke test)
   libtinygltf-dev                         # glTF 2.0 import (record --gltf)
-  assimp-testmodels                       # Khronos sample glTF files the tests import
+  libtinyobjloader-dev                    # Wavefront OBJ + MTL import
+  assimp-testmodels                       # sample glTF and OBJ files the tests import
   python3-jsonschema                      # second validator of the committed results (tests/validate_results.py)
   clang-format                            # ci/check-format.sh: the changed lines follow .clang-format
 )

@@ -17,6 +17,7 @@
 #include "harness/scene/detail/gltf_conversion.hpp"
 #include "harness/scene/detail/gltf_materials.hpp"
 #include "harness/scene/detail/gltf_nodes.hpp"
+#include "harness/scene/detail/model_import.hpp"
 #include "harness/scene/scene_geometry.hpp"
 
 namespace vsgl {
@@ -69,54 +70,6 @@ std::string content_hash(const std::vector<unsigned char>& bytes, const tinygltf
   return hash.text();
 }
 
-gltf::SceneBounds triangle_bounds(const SceneMesh& mesh, const Reporter& r) {
-  glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
-  for (uint32_t i : mesh.indices) {
-    lo = glm::min(lo, mesh.vertices[i].position);
-    hi = glm::max(hi, mesh.vertices[i].position);
-  }
-  gltf::SceneBounds b;
-  b.lo = lo;
-  b.hi = hi;
-  b.centre = 0.5f * (lo + hi);
-  b.radius = std::max(0.5f * glm::length(hi - lo), 1e-3f);
-  if (!std::isfinite(b.radius)) r.fail("its bounds are not finite");
-  b.far_lo = lo;
-  b.far_hi = hi;
-  return b;
-}
-
-// The ground: a grey floor just under the bounds, 6 radii wide (kNoMaterial: constant albedos).
-// Camera framing and the automatic light use the file's bounds; the far planes include it.
-void add_ground(SceneMesh& mesh, gltf::SceneBounds& b, std::vector<std::string>& notes) {
-  const float y = b.lo.y - 1e-3f * b.radius;
-  const glm::vec3 g_lo(b.centre.x - 3.0f * b.radius, y, b.centre.z - 3.0f * b.radius);
-  const glm::vec3 g_hi(b.centre.x + 3.0f * b.radius, y, b.centre.z + 3.0f * b.radius);
-  const SurfaceMaterial grey{glm::vec3(0.5f), glm::vec3(0.04f), 0.5f, kNoMaterial};
-  const std::size_t before = mesh.indices.size();
-  add_axis_rect(mesh, g_lo, g_hi, {0.0f, 1.0f, 0.0f}, grey, b.radius);
-  char where[64];
-  std::snprintf(where, sizeof where, "%.4g", static_cast<double>(y));
-  notes.push_back("--ground: a grey floor of " + std::to_string((mesh.indices.size() - before) / 3) +
-                  " triangles added at y = " + where);
-  b.far_lo = glm::min(b.far_lo, g_lo);
-  b.far_hi = glm::max(b.far_hi, g_hi);
-}
-
-// What the conversion repaired or skipped, then what the file has that is not mapped.
-void conversion_notes(const gltf::Conversion& conv, std::vector<std::string>& notes) {
-  if (conv.skipped_non_triangle > 0)
-    notes.push_back(std::to_string(conv.skipped_non_triangle) + " point/line primitives skipped (no surface)");
-  if (conv.normals_normalized > 0)
-    notes.push_back(std::to_string(conv.normals_normalized) + " normals were not unit length and were normalized");
-  if (conv.normals_replaced > 0)
-    notes.push_back(std::to_string(conv.normals_replaced) +
-                    " normals were zero or not finite and were replaced by the surface's normal");
-  if (conv.tangents_computed > 0)
-    notes.push_back("tangents computed for " + std::to_string(conv.tangents_computed) + " normal-mapped vertices");
-  for (const std::string& u : conv.unmapped) notes.push_back("not mapped: " + u);
-}
-
 }  // namespace
 
 GltfImport import_gltf(const std::filesystem::path& path, const GltfCameraChoice& camera_choice,
@@ -149,13 +102,13 @@ GltfImport import_gltf(const std::filesystem::path& path, const GltfCameraChoice
                 : std::string()));
 
 
-  gltf::SceneBounds bounds = triangle_bounds(mesh, r);
+  gltf::SceneBounds bounds = gltf::triangle_bounds(mesh, r);
   out.bounds_lo = bounds.lo;
   out.bounds_hi = bounds.hi;
-  if (ground) add_ground(conv.scene.mesh, bounds, out.notes);
+  if (ground) gltf::add_ground(conv.scene.mesh, bounds, out.notes);
   conv.scene.camera = gltf::choose_camera(imp, contents.cameras, camera_choice, bounds, out.camera_source);
   conv.scene.light = gltf::choose_light(imp, contents.lights, light_choice, bounds, out.light_source);
-  conversion_notes(conv, out.notes);
+  gltf::conversion_notes(conv, out.notes);
 
   out.motion = SceneMotion{0.02f * bounds.radius, 1.5f, 0.03f * bounds.radius};
   out.scene = std::move(conv.scene);

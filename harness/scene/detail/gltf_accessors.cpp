@@ -65,6 +65,9 @@ double read_component(const unsigned char* p, int type, bool normalized) {
 }  // namespace
 
 std::vector<unsigned char> read_bytes(const std::filesystem::path& path, const Reporter& r) {
+  std::error_code ec;
+  // A directory opens as a stream whose reads throw (std::ios_failure): refused first.
+  if (std::filesystem::is_directory(path, ec)) r.fail("is a directory, not a file");
   std::ifstream in(path, std::ios::binary);
   if (!in) r.fail("cannot be opened (missing or unreadable)");
   std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

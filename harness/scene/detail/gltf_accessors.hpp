@@ -37,17 +37,18 @@ struct Fnv1a {
 
 inline std::string quote_name(const std::string& name) { return "'" + escape_name(name) + "'"; }
 
-// Builds messages "glTF file F: <where>: <problem>" and throws them.
+// Builds messages "glTF file F: <where>: <problem>" (or "OBJ file F: ...") and throws them.
 class Reporter {
  public:
-  explicit Reporter(std::string file) : file_(std::move(file)) {}
+  explicit Reporter(std::string file, std::string kind = "glTF file") : file_(std::move(file)), kind_(std::move(kind)) {}
   [[noreturn]] void fail(const std::string& problem) const {
-    throw InputError("glTF file " + file_ + ": " + problem);
+    throw InputError(kind_ + " " + file_ + ": " + problem);
   }
   const std::string& file() const { return file_; }
 
  private:
   std::string file_;
+  std::string kind_;
 };
 
 std::vector<unsigned char> read_bytes(const std::filesystem::path& path, const Reporter& r);

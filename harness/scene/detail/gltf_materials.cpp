@@ -6,6 +6,8 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "harness/scene/detail/model_import.hpp"
+
 namespace vsgl::gltf {
 namespace {
 
@@ -33,34 +35,7 @@ int32_t scene_texture(Conversion& conv, const Importer& imp, int texture, bool s
   const tinygltf::Image& img = m.images[static_cast<std::size_t>(t.source)];
   const std::string image_name = "image " + std::to_string(t.source) +
                                  (img.uri.empty() || img.uri.rfind("data:", 0) == 0 ? "" : " (" + quote_name(img.uri) + ")");
-  if (img.image.empty() || img.width <= 0 || img.height <= 0)
-    r.fail(what + ": texture " + std::to_string(texture) + ": " + image_name +
-           " is missing or could not be decoded");
-  const int comps = img.component;
-  const int bytes_per = img.bits == 16 ? 2 : 1;
-  const std::size_t texels = static_cast<std::size_t>(img.width) * static_cast<std::size_t>(img.height);
-  if (comps < 1 || comps > 4 || (img.bits != 8 && img.bits != 16) ||
-      img.image.size() != texels * static_cast<std::size_t>(comps * bytes_per))
-    r.fail(what + ": " + image_name + " has an unsupported pixel layout (" + std::to_string(comps) + " channels of " +
-           std::to_string(img.bits) + " bits)");
-  TextureImage out;
-  out.name = escape_name(img.name.empty() ? img.uri.rfind("data:", 0) == 0 ? "embedded" : img.uri : img.name);
-  out.width = static_cast<uint32_t>(img.width);
-  out.height = static_cast<uint32_t>(img.height);
-  out.srgb = srgb;
-  out.rgba8.resize(texels * 4);
-  for (std::size_t i = 0; i < texels; ++i) {
-    uint8_t v[4] = {0, 0, 0, 255};
-    for (int c = 0; c < comps; ++c) {
-      const std::size_t at = (i * static_cast<std::size_t>(comps) + static_cast<std::size_t>(c)) * static_cast<std::size_t>(bytes_per);
-      v[c] = bytes_per == 2 ? img.image[at + 1] : img.image[at];  // 16-bit: little-endian, keep the high byte
-    }
-    if (comps == 1 || comps == 2) {  // grey (+ alpha)
-      v[3] = comps == 2 ? v[1] : 255;
-      v[1] = v[2] = v[0];
-    }
-    std::memcpy(&out.rgba8[i * 4], v, 4);
-  }
+  TextureImage out = rgba8_texture(img, srgb, what + ": texture " + std::to_string(texture), image_name, r);
   if (t.sampler >= 0 && static_cast<std::size_t>(t.sampler) < m.samplers.size()) {
     out.wrap_u = wrap_of(m.samplers[static_cast<std::size_t>(t.sampler)].wrapS);
     out.wrap_v = wrap_of(m.samplers[static_cast<std::size_t>(t.sampler)].wrapT);
