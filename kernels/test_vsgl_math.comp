@@ -1,7 +1,7 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // Test-only kernel: evaluates the VSGL maths of kernels/include/ for a batch of cases so that
-// tests/test_vsgl_math_gpu.cpp can compare the GLSL with its C++ twin (harness/math/vsgl_math.hpp).
+// tests/test_vsgl_math_glsl.cpp can compare the GLSL with its C++ twin (harness/math/vsgl_math.hpp).
 #include "sg_eval.glsl"
 #include "interface/testing.h"
 

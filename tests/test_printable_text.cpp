@@ -1,7 +1,7 @@
 // Error messages never echo raw bytes of a file (DESIGN.md §12): harness/core/printable_text.hpp,
 // and the loaders that put file-derived text (JSON keys and values, names, parser messages) into their
 // messages, on corrupted files. CPU only. (The capture loader on a corrupted EXR channel name:
-// tests/test_capture_io.cpp CaptureIo.CorruptChannelNameIsEscapedInTheMessage.)
+// tests/test_capture_files.cpp CaptureIo.CorruptChannelNameIsEscapedInTheMessage.)
 #include <gtest/gtest.h>
 
 #include <unistd.h>

@@ -1,7 +1,7 @@
 #pragma once
 // C++ twins of kernels/include/vsgl_math.glsl and kernels/include/sg_eval.glsl: the maths of a
 // VSGL (DESIGN.md §4, §7, §8) in float32, with the GLSL's formulas, branches and operation order, so
-// the CPU reference and the GPU kernels agree to float rounding (tests/test_vsgl_math_gpu.cpp).
+// the CPU reference and the GPU kernels agree to float rounding (tests/test_vsgl_math_glsl.cpp).
 // Formulas and constants: kernels/CONVENTIONS.md (DESIGN.md §4-§8).
 #include <type_traits>
 

@@ -15,7 +15,7 @@ struct InstanceOptions {
   bool validation = false;   // VK_LAYER_KHRONOS_validation + synchronization validation
   bool quiet_validation = false;  // count but do not print messages (tests that provoke errors)
   // With validation: the layer's GPU-assisted mode (instrumented shaders report out-of-bounds
-  // descriptor accesses) instead of synchronization validation (tests/test_gpu_assisted_validation).
+  // descriptor accesses) instead of synchronization validation (tests/test_instance_gpu_assisted).
   bool gpu_assisted = false;
 };
 

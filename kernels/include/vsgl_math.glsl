@@ -2,7 +2,7 @@
 #define VSGL_MATH_GLSL
 // The maths of a VSGL (DESIGN.md §4, §7): per-texel moments (the "additional" pass), the lobe of a
 // texel as a mean direction vector, and a VSGL built from filtered or summed moments.
-// C++ twin: harness/math/vsgl_math.hpp (same formulas, same branches; tests/test_vsgl_math_gpu.cpp
+// C++ twin: harness/math/vsgl_math.hpp (same formulas, same branches; tests/test_vsgl_math_glsl.cpp
 // compares the two). Formulas and constants: kernels/CONVENTIONS.md, shared with the CPU reference.
 
 const float VSGL_PI = 3.14159265358979;
