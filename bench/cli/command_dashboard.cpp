@@ -30,7 +30,7 @@ Command add_dashboard_command(CLI::App& parent) {
   app->add_option("RESULTS_DIR", o->results, "directory searched for table JSON")->required();
   app->add_option("--out", o->out, "output directory")->required()->type_name("DIR");
   app->add_option("--paper", o->paper, "the paper's tables")
-      ->check(CLI::ExistingFile)
+      ->check(input_file("--paper"))
       ->default_str("results/paper/paper_tables.json");
   return {app, [o] {
             const std::vector<BenchRun> runs = find_table_runs(o->results);

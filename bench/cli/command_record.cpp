@@ -162,7 +162,7 @@ Command add_record_command(CLI::App& parent) {
   auto* gltf = add_optional(*app, "--gltf", o->gltf,
                                "a glTF 2.0 file (.gltf or .glb) instead: its default scene, materials, textures and "
                                "normal maps (README \"Your own scenes\")")
-                   ->check(CLI::ExistingFile)
+                   ->check(input_file("--gltf"))
                    ->excludes(scene);
   add_optional(*app, "--out", o->out, "capture directory (one scene)")->default_str("captures/NAME; glTF: its scene name");
   add_size_option(*app, "--gbuffer", o->gbuffer, "G-buffer size");

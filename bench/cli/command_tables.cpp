@@ -188,10 +188,10 @@ Command add_tables_command(CLI::App& parent) {
   app->add_flag("--json-only", o->json_only, "write no markdown file (the console still shows the tables)");
   app->add_flag("--clocks-locked", o->clocks_locked, "record that you locked the GPU clocks (Vulkan cannot)");
   add_optional(*app, "--paper", o->paper, "the paper's tables")
-      ->check(CLI::ExistingFile)
+      ->check(input_file("--paper"))
       ->default_str("results/paper/paper_tables.json");
   add_optional(*app, "--schema", o->schema, "the table JSON schema")
-      ->check(CLI::ExistingFile)
+      ->check(input_file("--schema"))
       ->default_str("results/schema/table.schema.json");
   app->add_flag("--no-progress", o->no_progress, "no progress line (it is off anyway when stderr is not a terminal)");
   add_list_option(*app, "--debug-slow", o->debug_slow,

@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 
 #include "harness/core/error.hpp"
@@ -65,6 +66,16 @@ CLI::Validator size_text() {
         return {};
       },
       "");  // the type name says WxH
+}
+
+CLI::Validator input_file(std::string what) {
+  return CLI::Validator(
+      [what](std::string& text) -> std::string {
+        std::error_code ec;
+        if (!std::filesystem::is_regular_file(text, ec)) throw InputError(what + " " + text + ": no such file");
+        return {};
+      },
+      "FILE");
 }
 
 CLI::Validator usage_checked(std::function<void(const std::string&)> parse, std::string description) {

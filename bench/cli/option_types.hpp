@@ -29,6 +29,9 @@ CLI::Validator positive_number();
 CLI::Validator size_text();
 // "a,b,c": every non-empty item passes `item` (and at least one item is given).
 CLI::Validator list_of(const CLI::Validator& item);
+// A file that must exist: a missing one is bad input (exit 3, like a file that fails to load), not a
+// typo of the command line, so the check throws InputError instead of returning a message.
+CLI::Validator input_file(std::string what);
 // One of `names` (the message lists them).
 CLI::Validator one_of(std::vector<std::string> names);
 
