@@ -95,6 +95,8 @@ const std::map<std::string, std::string>& without_schema() {
       {"results/lavapipe/verify_conference.json", "vsgl-bench verify --json output has no schema yet"},
       {"results/nvidia-h100-80gb-hbm3/verify_atrium.json", "vsgl-bench verify --json output has no schema yet"},
       {"results/nvidia-h100-80gb-hbm3/verify_conference.json", "vsgl-bench verify --json output has no schema yet"},
+      {"results/swiftshader/verify_atrium.json", "vsgl-bench verify --json output has no schema yet"},
+      {"results/swiftshader/verify_conference.json", "vsgl-bench verify --json output has no schema yet"},
       {"results/nvidia-h100-80gb-hbm3/devices.json", "vsgl-bench devices --json output has no schema yet"},
       {"results/nvidia-h100-80gb-hbm3/gbench.json", "Google Benchmark's own JSON format, not ours"},
       {"results/paper/paper_tables.json", "the paper's numbers, an input checked by the code that loads it"},

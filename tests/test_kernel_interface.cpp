@@ -138,6 +138,7 @@ const std::map<std::string, Expected>& kernels() {
       {"fis_mip_level.comp", {sizeof(gpu::FisMipPush), 2}},
       {"fis_mip_level_texture.comp", {sizeof(gpu::FisMipPush), 2}},
       {"fis_mip_single_pass.comp", {sizeof(gpu::FisMipPush), 2}},
+      {"fis_mip_single_pass_tail.comp", {sizeof(gpu::FisMipPush), 2}},
       {"fis_filtered_sampling.comp", {sizeof(gpu::FisSamplingPush), 1}},
       {"fis_filtered_sampling_texture.comp", {sizeof(gpu::FisSamplingPush), 1}},
       {"kmeans_fill.comp", {sizeof(gpu::KmeansFillPush), 1}},
