@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "bench/cli/commands.hpp"
+#include "bench/cli/option_types.hpp"
 #include "harness/core/atomic_file.hpp"
 #include "harness/compare/dashboard_page.hpp"
 #include "harness/core/error.hpp"

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "bench/cli/commands.hpp"
+#include "bench/cli/option_types.hpp"
 #include "bench/cli/generator_options.hpp"
 #include "harness/generators/testing/debug_slowdown.hpp"
 #include "bench/cli/gpu_session.hpp"
