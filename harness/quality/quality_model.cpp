@@ -13,6 +13,19 @@ class Reader : public JsonReader {
   double num(const json& o, const std::string& p, const char* key) const { return number(o, p, key); }
   const json& obj(const json& o, const std::string& p, const std::string& key) const { return object(o, p, key); }
   const json& any(const json& o, const std::string& p, const std::string& key) const { return member(o, p, key); }
+  uint64_t count(const json& o, const std::string& p, const char* key) const {
+    const json& v = member(o, p, key);
+    if (!v.is_number_unsigned()) wrong_type(v, child(p, key), "an unsigned integer");
+    return v.get<uint64_t>();
+  }
+  std::vector<double> numbers(const json& o, const std::string& p, const char* key) const {
+    const json& a = member(o, p, key);
+    const std::string ap = child(p, key);
+    if (!a.is_array()) wrong_type(a, ap, "an array");
+    std::vector<double> out;
+    for (std::size_t k = 0; k < a.size(); ++k) out.push_back(number(a[k], element(ap, k)));
+    return out;
+  }
   std::optional<double> optional_num(const json& o, const std::string& p, const char* key) const {
     if (!o.contains(key)) return std::nullopt;
     return number(o, p, key);
@@ -29,6 +42,9 @@ CoverageSummary read_coverage(const Reader& r, const json& c, const std::string&
   s.gap = r.num(c, p, "gap");
   s.overlap = r.num(c, p, "overlap");
   s.gap_plus_overlap = r.num(c, p, "gap_plus_overlap");
+  s.texels_with_pdf = r.count(c, p, "texels_with_pdf");
+  s.gap_texels = r.count(c, p, "gap_texels");
+  s.overlap_texels = r.count(c, p, "overlap_texels");
   const json& m = r.obj(c, p, "mass_over_target");
   const std::string mp = p + "/mass_over_target";
   s.mass_over_target = {r.num(m, mp, "mean"), r.num(m, mp, "stdev"), r.num(m, mp, "min"), r.num(m, mp, "max"), r.num(m, mp, "p99")};
@@ -44,7 +60,8 @@ CoverageSummary read_coverage(const Reader& r, const json& c, const std::string&
 }
 
 PowerSummary read_power(const Reader& r, const json& o, const std::string& p) {
-  return {r.num(o, p, "max_over_mean"), r.num(o, p, "p99_over_mean"), r.num(o, p, "power_ratio")};
+  return {r.num(o, p, "max_over_mean"), r.num(o, p, "p99_over_mean"), r.num(o, p, "power_ratio"),
+          r.num(o, p, "sum_vsgl_power"), r.num(o, p, "total_flux")};
 }
 
 ImageErrorSummary read_error(const Reader& r, const json& o, const std::string& p) {
@@ -60,9 +77,11 @@ ViewQuality read_view(const Reader& r, const json& v, const std::string& p) {
     const std::string fp = p + "/pdf_frequency";
     PdfFrequencySummary s;
     s.relative_variance = r.num(f, fp, "relative_variance");
-    const json& shares = r.any(f, fp, "fine_share");
-    if (!shares.is_array()) r.wrong_type(shares, fp + "/fine_share", "an array");
-    for (std::size_t k = 0; k < shares.size(); ++k) s.fine_share.push_back(r.number(shares[k], r.element(fp + "/fine_share", k)));
+    s.fine_share = r.numbers(f, fp, "fine_share");
+    s.detail_energy = r.numbers(f, fp, "detail_energy");
+    s.mean_square = r.num(f, fp, "mean_square");
+    s.share_below_8_texels = r.num(f, fp, "share_below_8_texels");
+    s.definition = r.string(f, fp, "definition");
     s.share_below_kernel = r.num(f, fp, "share_below_kernel");
     s.share_below_kernel_side_texels = r.num(f, fp, "share_below_kernel_side_texels");
     s.mean_kernel_side_texels = r.num(f, fp, "mean_kernel_side_texels");
@@ -79,20 +98,146 @@ ViewQuality read_view(const Reader& r, const json& v, const std::string& p) {
   return out;
 }
 
+json counts_json(const CoverageCountsSummary& c) {
+  json j{{"gap", c.gap}, {"surplus", c.surplus}, {"count_error", c.count_error}, {"mean_count", c.mean_count}};
+  if (c.overlap) j["overlap"] = *c.overlap;
+  return j;
+}
+
+json coverage_json(const CoverageSummary& s) {
+  const MassSummary& m = s.mass_over_target;
+  return json{{"gap", s.gap},
+              {"overlap", s.overlap},
+              {"gap_plus_overlap", s.gap_plus_overlap},
+              {"texels_with_pdf", s.texels_with_pdf},
+              {"gap_texels", s.gap_texels},
+              {"overlap_texels", s.overlap_texels},
+              {"mass_over_target", json{{"mean", m.mean}, {"stdev", m.stdev}, {"min", m.min}, {"max", m.max}, {"p99", m.p99}}},
+              {"box", counts_json(s.box)},
+              {"eq3", counts_json(s.eq3)},
+              {"lattice_floor", json{{"box", counts_json(s.floor_box)}, {"eq3", counts_json(s.floor_eq3)}}},
+              {"excess", json{{"box", counts_json(s.excess_box)}, {"eq3", counts_json(s.excess_eq3)}}}};
+}
+
+json power_json(const PowerSummary& p) {
+  return json{{"sum_vsgl_power", p.sum_vsgl_power}, {"total_flux", p.total_flux}, {"power_ratio", p.power_ratio},
+              {"max_over_mean", p.max_over_mean}, {"p99_over_mean", p.p99_over_mean}};
+}
+
+json error_json(const ImageErrorSummary& e) {
+  return json{{"relative_rmse", e.relative_rmse}, {"p99_pixel_error", e.p99_pixel_error}};
+}
+
+json view_json(const ViewQuality& v) {
+  json j{{"vsgls", v.vsgls}, {"total_flux", v.total_flux}, {"generators", json::object()}};
+  if (v.pdf_frequency) {
+    const PdfFrequencySummary& f = *v.pdf_frequency;
+    j["pdf_frequency"] = json{{"detail_energy", f.detail_energy},
+                              {"fine_share", f.fine_share},
+                              {"mean_square", f.mean_square},
+                              {"relative_variance", f.relative_variance},
+                              {"share_below_8_texels", f.share_below_8_texels},
+                              {"mean_kernel_side_texels", f.mean_kernel_side_texels},
+                              {"share_below_kernel_side_texels", f.share_below_kernel_side_texels},
+                              {"share_below_kernel", f.share_below_kernel},
+                              {"definition", f.definition}};
+  }
+  for (const auto& [name, g] : v.generators) {
+    json gj{{"power", power_json(g.power)}};
+    if (g.coverage) gj["coverage"] = coverage_json(*g.coverage);
+    j["generators"][name] = gj;
+  }
+  return j;
+}
+
 }  // namespace
+
+void to_json(json& j, const QualityModel& m) {
+  json build = m.build;
+  build["vsgl_bench_version"] = m.version;
+  build["git_commit"] = m.git_commit;
+  build["git_dirty"] = m.git_dirty;
+  json config = m.config_rest;
+  config["generators"] = m.generators;
+  config["light_vsgls"] = m.light_vsgls;
+  config["camera_vsgls"] = m.camera_vsgls;
+  config["K"] = m.K;
+  config["frames"] = m.frames;
+  j = json{{"schema", m.schema},
+           {"schema_version", m.schema_version},
+           {"scene", m.scene},
+           {"capture", json{{"path", m.capture_path}, {"gbuffer", m.gbuffer_size}, {"rsm", m.rsm_size}, {"hashes", m.capture_hashes}}},
+           {"device", json{{"name", m.device_name}, {"driver", m.device_driver}}},
+           {"build", build},
+           {"config", config},
+           {"views", json::object()},
+           {"reference", json{{"rsm_stride", m.reference_rsm_stride},
+                              {"reference_rsm_side", m.reference_rsm_side},
+                              {"vpls", m.reference_vpls},
+                              {"power_ratio", m.reference_power_ratio},
+                              {"image", m.reference_image},
+                              {"method", m.reference_method}}},
+           {"reference_error", json::object()}};
+  for (const auto& [name, v] : m.views) j["views"][name] = view_json(v);
+  for (const auto& [name, e] : m.reference_error) j["reference_error"][name] = error_json(e);
+  json fs = json::object();
+  for (const auto& [name, f] : m.flicker_static)
+    fs[name] = json{{"frames", f.frames}, {"weighted_cv", f.weighted_cv}, {"power_stdev", f.power_stdev},
+                    {"power_relative_stdev", f.power_relative_stdev}};
+  j["flicker_static"] = json{{"image", m.flicker_image}, {"gbuffer_stride", m.flicker_gbuffer_stride}, {"generators", fs}};
+  if (m.flicker_animated) {
+    const QualityModel::Animated& a = *m.flicker_animated;
+    json gens = json::object();
+    for (const auto& [name, f] : a.generators)
+      gens[name] = json{{"weighted_cv", f.weighted_cv}, {"error_cv", f.error_cv}, {"power_relative_stdev", f.power_relative_stdev}};
+    j["flicker_animated"] = json{{"sequence", a.sequence},
+                                 {"scene", a.scene},
+                                 {"frames", a.frames},
+                                 {"frame_content_hashes", a.frame_content_hashes},
+                                 {"gbuffer_stride", a.gbuffer_stride},
+                                 {"reference_rsm_stride", a.reference_rsm_stride},
+                                 {"reference_weighted_cv", a.reference_weighted_cv},
+                                 {"note", a.note},
+                                 {"generators", gens}};
+  }
+  json sweep = json::object();
+  for (const auto& [name, rows] : m.k_sweep) {
+    json out = json::array();
+    for (const KSweepRow& row : rows)
+      out.push_back(json{{"K", row.K},
+                         {"frames", row.frames},
+                         {"weighted_cv", row.weighted_cv},
+                         {"power_stdev", row.power_stdev},
+                         {"power_relative_stdev", row.power_relative_stdev},
+                         {"error", error_json(row.error)},
+                         {"coverage", coverage_json(row.coverage)},
+                         {"power", power_json(row.power)}});
+    sweep[name] = out;
+  }
+  j["k_sweep"] = sweep;
+  if (!m.claims_document.is_null()) j["claims"] = m.claims_document;
+  json timings = json::object();
+  for (const auto& [k, v] : m.timings_s) timings[k] = v;
+  j["timings_s"] = timings;
+}
 
 QualityModel quality_model_from_json(const json& doc, const std::string& what) {
   const Reader r(what);
   if (!doc.is_object()) r.fail("", "is not a JSON object");
   QualityModel m;
   m.schema_version = r.any(doc, "", "schema_version");
+  m.schema = r.string(doc, "", "schema");
   m.scene = r.string(doc, "", "scene");
   const json& capture = r.obj(doc, "", "capture");
   m.capture_path = r.string(capture, "/capture", "path");
   m.gbuffer_size = r.array(capture, "/capture", "gbuffer", 2);
   m.rsm_size = r.array(capture, "/capture", "rsm", 2);
-  m.device_name = r.string(r.obj(doc, "", "device"), "/device", "name");
+  m.capture_hashes = r.any(capture, "/capture", "hashes");
+  const json& device = r.obj(doc, "", "device");
+  m.device_name = r.string(device, "/device", "name");
+  m.device_driver = r.string(device, "/device", "driver");
   const json& build = r.obj(doc, "", "build");
+  m.build = build;
   m.version = r.string(build, "/build", "vsgl_bench_version");
   m.git_commit = r.string(build, "/build", "git_commit");
   m.git_dirty = r.boolean(build, "/build", "git_dirty");
@@ -107,6 +252,8 @@ QualityModel quality_model_from_json(const json& doc, const std::string& what) {
   m.camera_vsgls = r.any(config, "/config", "camera_vsgls");
   m.K = r.any(config, "/config", "K");
   m.frames = r.any(config, "/config", "frames");
+  m.config_rest = config;
+  for (const char* typed : {"generators", "light_vsgls", "camera_vsgls", "K", "frames"}) m.config_rest.erase(typed);
 
   const json& views = r.obj(doc, "", "views");
   for (const char* view : {"camera_view", "light_view"}) m.views[view] = read_view(r, r.obj(views, "/views", view), std::string("/views/") + view);
@@ -121,12 +268,14 @@ QualityModel quality_model_from_json(const json& doc, const std::string& what) {
   const json& errors = r.obj(doc, "", "reference_error");
   const json& fs = r.obj(doc, "", "flicker_static");
   m.flicker_image = r.array(fs, "/flicker_static", "image", 2);
+  m.flicker_gbuffer_stride = r.uint32(fs, "/flicker_static", "gbuffer_stride");
   const json& fsg = r.obj(fs, "/flicker_static", "generators");
   for (const std::string& g : m.generators) {
     m.reference_error[g] = read_error(r, r.obj(errors, "/reference_error", g), "/reference_error/" + g);
     const std::string p = "/flicker_static/generators/" + g;
     const json& f = r.obj(fsg, "/flicker_static/generators", g);
-    m.flicker_static[g] = {r.num(f, p, "weighted_cv"), r.num(f, p, "power_stdev"), r.num(f, p, "power_relative_stdev")};
+    m.flicker_static[g] = {r.num(f, p, "weighted_cv"), r.num(f, p, "power_stdev"), r.num(f, p, "power_relative_stdev"),
+                           r.uint32(f, p, "frames")};
   }
   if (doc.contains("flicker_animated")) {
     const json& fa = r.obj(doc, "", "flicker_animated");
@@ -134,6 +283,15 @@ QualityModel quality_model_from_json(const json& doc, const std::string& what) {
     a.frames = r.any(fa, "/flicker_animated", "frames");
     a.sequence = r.string(fa, "/flicker_animated", "sequence");
     a.note = r.string(fa, "/flicker_animated", "note");
+    a.scene = r.string(fa, "/flicker_animated", "scene");
+    a.gbuffer_stride = r.uint32(fa, "/flicker_animated", "gbuffer_stride");
+    a.reference_rsm_stride = r.uint32(fa, "/flicker_animated", "reference_rsm_stride");
+    const json& hashes = r.any(fa, "/flicker_animated", "frame_content_hashes");
+    if (!hashes.is_array()) r.wrong_type(hashes, "/flicker_animated/frame_content_hashes", "an array");
+    for (std::size_t i = 0; i < hashes.size(); ++i) {
+      if (!hashes[i].is_string()) r.wrong_type(hashes[i], r.element("/flicker_animated/frame_content_hashes", i), "a string");
+      a.frame_content_hashes.push_back(hashes[i].get<std::string>());
+    }
     a.reference_weighted_cv = r.num(fa, "/flicker_animated", "reference_weighted_cv");
     const json& ag = r.obj(fa, "/flicker_animated", "generators");
     for (const auto& [g, f] : ag.items()) {
@@ -152,7 +310,9 @@ QualityModel quality_model_from_json(const json& doc, const std::string& what) {
         const std::string p = r.element(gp, i);
         const json& row = rows[i];
         if (!row.is_object()) r.wrong_type(row, p, "an object");
-        out.push_back({r.num(row, p, "K"), r.num(row, p, "weighted_cv"), read_error(r, r.obj(row, p, "error"), p + "/error"),
+        out.push_back({r.num(row, p, "K"), r.num(row, p, "weighted_cv"), r.num(row, p, "power_stdev"),
+                       r.num(row, p, "power_relative_stdev"), r.uint32(row, p, "frames"),
+                       read_error(r, r.obj(row, p, "error"), p + "/error"),
                        read_coverage(r, r.obj(row, p, "coverage"), p + "/coverage"), read_power(r, r.obj(row, p, "power"), p + "/power")});
       }
       m.k_sweep.emplace_back(g, std::move(out));
@@ -160,6 +320,7 @@ QualityModel quality_model_from_json(const json& doc, const std::string& what) {
   if (doc.contains("claims")) {
     const json& claims = r.any(doc, "", "claims");
     if (!claims.is_array()) r.wrong_type(claims, "/claims", "an array");
+    m.claims_document = claims;
     for (std::size_t i = 0; i < claims.size(); ++i) {
       const std::string p = r.element("/claims", i);
       const json& c = claims[i];

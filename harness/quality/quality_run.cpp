@@ -17,6 +17,7 @@
 #include "harness/reference/fis_reference.hpp"
 #include "harness/generators/generator_registry.hpp"
 #include "harness/quality/quality_metrics.hpp"
+#include "harness/quality/quality_model.hpp"
 #include "harness/quality/quality_pictures.hpp"
 #include "harness/quality/quality_reference.hpp"
 #include "harness/timing/run_provenance.hpp"
@@ -78,67 +79,63 @@ double power_sum(const std::vector<VsglRecord>& vsgls) {
   return s;
 }
 
-json summary_json(const ValueSummary& s) {
-  return json{{"mean", s.mean}, {"stdev", s.stdev}, {"min", s.min}, {"max", s.max}, {"p99", s.p99}};
+MassSummary summary_of(const ValueSummary& s) { return {s.mean, s.stdev, s.min, s.max, s.p99}; }
+
+PowerSummary power_summary(const PowerMetrics& p) {
+  return {p.max_over_mean, p.p99_over_mean, p.power_ratio, p.total_vsgl_power, p.total_flux};
 }
 
-json power_json(const PowerMetrics& p) {
-  return json{{"sum_vsgl_power", p.total_vsgl_power}, {"total_flux", p.total_flux}, {"power_ratio", p.power_ratio},
-              {"max_over_mean", p.max_over_mean}, {"p99_over_mean", p.p99_over_mean}};
-}
-
-json counts_json(const CoverageCounts& c) {
-  return json{{"gap", c.gap}, {"surplus", c.surplus}, {"count_error", c.count_error}, {"mean_count", c.mean_count}};
+CoverageCountsSummary counts_summary(const CoverageCounts& c, std::optional<double> overlap = std::nullopt) {
+  return {c.gap, c.surplus, c.count_error, c.mean_count, overlap};
 }
 
 // A generator's coverage on the view, its lattice floor (the same generator on the view's uniform
 // copy) and the excess of the one over the other (DESIGN.md §11a).
-json coverage_json(const FootprintCoverage& f, const FootprintCoverage& floor) {
+CoverageSummary coverage_summary(const FootprintCoverage& f, const FootprintCoverage& floor) {
   const KernelCoverage& c = f.coverage;
   const CoverageExcess e = coverage_excess(f, floor);
-  json box_floor = counts_json(floor.box);
-  box_floor["overlap"] = floor.coverage.overlap;
-  json box_excess = counts_json(e.box);
-  box_excess["overlap"] = e.box_overlap;
-  return json{{"gap", c.gap},
-              {"overlap", c.overlap},
-              {"gap_plus_overlap", c.gap + c.overlap},
-              {"texels_with_pdf", c.texels_with_pdf},
-              {"gap_texels", c.gap_texels},
-              {"overlap_texels", c.overlap_texels},
-              {"mass_over_target", summary_json(c.mass)},
-              {"box", counts_json(f.box)},
-              {"eq3", counts_json(f.eq3)},
-              {"lattice_floor", json{{"box", box_floor}, {"eq3", counts_json(floor.eq3)}}},
-              {"excess", json{{"box", box_excess}, {"eq3", counts_json(e.eq3)}}}};
+  CoverageSummary s;
+  s.gap = c.gap;
+  s.overlap = c.overlap;
+  s.gap_plus_overlap = c.gap + c.overlap;
+  s.texels_with_pdf = c.texels_with_pdf;
+  s.gap_texels = c.gap_texels;
+  s.overlap_texels = c.overlap_texels;
+  s.mass_over_target = summary_of(c.mass);
+  s.box = counts_summary(f.box);
+  s.eq3 = counts_summary(f.eq3);
+  s.floor_box = counts_summary(floor.box, floor.coverage.overlap);
+  s.floor_eq3 = counts_summary(floor.eq3);
+  s.excess_box = counts_summary(e.box, e.box_overlap);
+  s.excess_eq3 = counts_summary(e.eq3);
+  return s;
 }
 
-json frequency_json(const PdfFrequency& f, uint32_t levels, uint32_t N, float K) {
+PdfFrequencySummary frequency_summary(const PdfFrequency& f, uint32_t levels, uint32_t N, float K) {
   // The mean kernel side of the view, sqrt(K M / N) = 2^l_bar texels: details at levels below
   // floor(l_bar) vary inside a kernel, which is what a kernel sized from p(x_i) alone misjudges.
   const double l_bar = 0.5 * std::log2(static_cast<double>(K) * std::exp2(2.0 * levels) / static_cast<double>(N));
   const int k_kernel = std::clamp(static_cast<int>(std::floor(l_bar)) - 1, 0, static_cast<int>(levels) - 1);
   const int k_8 = std::min(2, static_cast<int>(levels) - 1);
-  json j{{"detail_energy", f.detail_energy},
-         {"fine_share", f.fine_share},
-         {"mean_square", f.mean_square},
-         {"relative_variance", f.relative_variance},
-         {"share_below_8_texels", f.fine_share.empty() ? 0.0 : f.fine_share[static_cast<std::size_t>(k_8)]},
-         {"mean_kernel_side_texels", std::exp2(l_bar)},
-         {"share_below_kernel_side_texels", std::exp2(k_kernel + 1)},
-         {"share_below_kernel", f.fine_share.empty() ? 0.0 : f.fine_share[static_cast<std::size_t>(k_kernel)]},
-         {"definition",
-          "Haar wavelet spectrum on the PDF's mip levels: p = q / mean over the virtual square; "
-          "detail_energy[l] = mean over the square of (p_bar_l - p_bar_(l+1))^2 (wavelengths ~2^(l+1) texels); "
-          "mean_square = mean(p^2) = 1 + sum detail_energy; fine_share[k] = (detail_energy[0] + ... + "
-          "detail_energy[k]) / mean_square, the share of the PDF's energy at wavelengths below 2^(k+1) texels "
-          "(0: uniform, ~0.5: a texel checkerboard of 1 and 0)"}};
-  return j;
+  PdfFrequencySummary s;
+  s.relative_variance = f.relative_variance;
+  s.fine_share = f.fine_share;
+  s.share_below_kernel = f.fine_share.empty() ? 0.0 : f.fine_share[static_cast<std::size_t>(k_kernel)];
+  s.share_below_kernel_side_texels = std::exp2(k_kernel + 1);
+  s.mean_kernel_side_texels = std::exp2(l_bar);
+  s.detail_energy = f.detail_energy;
+  s.mean_square = f.mean_square;
+  s.share_below_8_texels = f.fine_share.empty() ? 0.0 : f.fine_share[static_cast<std::size_t>(k_8)];
+  s.definition =
+      "Haar wavelet spectrum on the PDF's mip levels: p = q / mean over the virtual square; "
+      "detail_energy[l] = mean over the square of (p_bar_l - p_bar_(l+1))^2 (wavelengths ~2^(l+1) texels); "
+      "mean_square = mean(p^2) = 1 + sum detail_energy; fine_share[k] = (detail_energy[0] + ... + "
+      "detail_energy[k]) / mean_square, the share of the PDF's energy at wavelengths below 2^(k+1) texels "
+      "(0: uniform, ~0.5: a texel checkerboard of 1 and 0)";
+  return s;
 }
 
-json error_json(const ImageError& e) {
-  return json{{"relative_rmse", e.relative_rmse}, {"p99_pixel_error", e.p99_pixel_error}};
-}
+ImageErrorSummary error_summary(const ImageError& e) { return {e.relative_rmse, e.p99_pixel_error}; }
 
 // 64-bit FNV-1a over text: one identifier for all channel hashes of a capture.
 std::string text_hash(const std::string& text) {
@@ -193,15 +190,14 @@ struct QualityRun {
   }
 
   // Coverage of a generator's kernels on a view beside the same generator's on the view's floor.
-  json coverage_with_floor(const std::vector<VsglRecord>& kernels, const MipPyramid& pdf, const DeviceView& floor_view,
+  CoverageSummary coverage_with_floor(const std::vector<VsglRecord>& kernels, const MipPyramid& pdf, const DeviceView& floor_view,
                            const MipPyramid& floor_pdf, const std::string& name, uint32_t n, float K) const {
     const GeneratorRun floor_run = run_generator(device, floor_view, name, config, n, K, 0);
-    return coverage_json(footprint_coverage(kernels, pdf, K), footprint_coverage(floor_run.vsgls, floor_pdf, K));
+    return coverage_summary(footprint_coverage(kernels, pdf, K), footprint_coverage(floor_run.vsgls, floor_pdf, K));
   }
 
   // 1-3: per view and generator: coverage (FIS), too-bright, power. Keeps the light view's PDF.
-  json view_metrics(QualityResult& result, MipPyramid& light_pdf) const {
-    json views = json::object();
+  void view_metrics(QualityModel& out, QualityResult& result, MipPyramid& light_pdf) const {
     for (ViewKind kind : {ViewKind::kLight, ViewKind::kCamera}) {
       const ViewData data = view_data(capture, kind);
       const DeviceView& view = kind == ViewKind::kLight ? light : camera;
@@ -209,16 +205,17 @@ struct QualityRun {
       const MipPyramid floor_pdf = kind == ViewKind::kLight ? floor_light_pdf : view_data(floor_capture, kind).pdf;
       const uint32_t n = kind == ViewKind::kLight ? config.light_vsgls : config.camera_vsgls;
       if (kind == ViewKind::kLight) light_pdf = data.pdf;
-      json v = json{{"vsgls", n},
-                    {"total_flux", data.flux},
-                    {"pdf_frequency", frequency_json(pdf_frequency(data.pdf), data.pdf.levels(), n, config.K)},
-                    {"generators", json::object()}};
+      ViewQuality v;
+      v.vsgls = n;
+      v.total_flux = data.flux;
+      v.pdf_frequency = frequency_summary(pdf_frequency(data.pdf), data.pdf.levels(), n, config.K);
       for (const auto& name : config.generators) {
         const auto tg = Clock::now();
         const GeneratorRun run = run_generator(device, view, name, config, n, config.K, 0);
-        json g = json{{"power", power_json(power_metrics(run.vsgls, data.flux))}};
+        GeneratorQuality g;
+        g.power = power_summary(power_metrics(run.vsgls, data.flux));
         if (is_fis(name)) {
-          g["coverage"] = coverage_with_floor(run.vsgls, data.pdf, floor_view, floor_pdf, name, n, config.K);
+          g.coverage = coverage_with_floor(run.vsgls, data.pdf, floor_view, floor_pdf, name, n, config.K);
           const std::string file = scene + "_coverage_" + view_name(kind) + "_" + name + ".png";
           result.pictures.push_back(
               {file,
@@ -226,48 +223,44 @@ struct QualityRun {
                    ": PDF in grey (sqrt scale), kernel centres red, footprints (side 2^l texels) orange",
                coverage_picture(data.pdf, run.vsgls, config.coverage_picture_side)});
         }
-        v["generators"][name] = g;
+        v.generators[name] = g;
         say(std::string(view_name(kind)) + " " + name + ": metrics in " + std::to_string(seconds_since(tg)) + " s");
       }
-      views[view_name(kind)] = v;
+      out.views[view_name(kind)] = v;
     }
-    return views;
   }
 
   // 6: reference and errors (light-view VSGLs shading the camera view).
-  ReferenceShading reference_and_errors(QualityResult& result, double light_flux) const {
-    json& out = result.json;
+  ReferenceShading reference_and_errors(QualityModel& out, QualityResult& result, double light_flux) const {
     const auto t0 = Clock::now();
     const uint32_t ref_stride = reference_stride(capture.rsm, config.reference_rsm);
     const std::vector<VsglRecord> vpls = reference_vpls(capture.rsm, capture.meta.light, ref_stride, VplExtent::kTexelFootprint);
     FixedVsglGenerator reference(device, vpls, "reference_vpls");
     const RadianceImage ref_image =
         shade_camera_view(device, camera, reference.vsgls(), reference.vsgl_count(), config.error_stride);
-    out["reference"] = json{{"rsm_stride", ref_stride},
-                            {"reference_rsm_side", (capture.rsm.width + ref_stride - 1) / ref_stride},
-                            {"vpls", vpls.size()},
-                            {"power_ratio", power_sum(vpls) / light_flux},
-                            {"image", {ref_image.width, ref_image.height}},
-                            {"method", "Every stride-th RSM texel with positive flux is a VSGL of its own moments "
+    out.reference_rsm_stride = ref_stride;
+    out.reference_rsm_side = (capture.rsm.width + ref_stride - 1) / ref_stride;
+    out.reference_vpls = vpls.size();
+    out.reference_power_ratio = power_sum(vpls) / light_flux;
+    out.reference_image = json::array({ref_image.width, ref_image.height});
+    out.reference_method = "Every stride-th RSM texel with positive flux is a VSGL of its own moments "
                                        "(level 0), flux scaled by stride^2, sigma^2 = A / 12 with A the world area the texel stands for "
                                        "(bounds the 1/d^2 spikes of point VPLs); shaded at the "
-                                       "generators' pixels (G-buffer stride) by the same shading pass"}};
+                                       "generators' pixels (G-buffer stride) by the same shading pass";
     say("reference: " + std::to_string(vpls.size()) + " VPLs, shaded in " + std::to_string(seconds_since(t0)) + " s");
     const float exposure = auto_exposure(downscale(ref_image, kTileFactor));
     std::vector<Rgb8Image> render_tiles{tone_map(downscale(ref_image, kTileFactor), exposure)};
     std::vector<Rgb8Image> error_tiles{error_map(downscale(ref_image, kTileFactor), downscale(ref_image, kTileFactor), 1.0f)};
-    json errors = json::object();
     std::map<std::string, RadianceImage> k1_images;
     for (const auto& name : config.generators) {
       const GeneratorRun run = run_generator(device, light, name, config, config.light_vsgls, config.K, 0);
       const RadianceImage img = shade_camera_view(device, camera, run.generator->vsgls(), run.generator->vsgl_count(),
                                                   config.error_stride);
-      errors[name] = error_json(image_error(img, ref_image));
+      out.reference_error[name] = error_summary(image_error(img, ref_image));
       render_tiles.push_back(tone_map(downscale(img, kTileFactor), exposure));
       error_tiles.push_back(error_map(downscale(img, kTileFactor), downscale(ref_image, kTileFactor), 1.0f));
       if (is_fis(name)) k1_images[name] = img;
     }
-    out["reference_error"] = errors;
     {
       std::vector<Rgb8Image> tiles = render_tiles;
       tiles.insert(tiles.end(), error_tiles.begin(), error_tiles.end());
@@ -283,9 +276,8 @@ struct QualityRun {
   }
 
   // 4 + 5: static flicker over offsets, with the K sweep for the FIS generators.
-  void flicker_and_k_sweep(QualityResult& result, const ReferenceShading& reference, const MipPyramid& light_pdf,
-                           double light_flux) const {
-    json& out = result.json;
+  void flicker_and_k_sweep(QualityModel& out, QualityResult& result, const ReferenceShading& reference,
+                           const MipPyramid& light_pdf, double light_flux) const {
     const uint32_t flicker_stride = stride_for_width(capture.gbuffer.width, config.flicker_width);
     const auto flicker_of = [&](const std::string& name, float K) {
       FlickerAccumulator acc;
@@ -294,46 +286,44 @@ struct QualityRun {
         acc.add_frame(shade_camera_view(device, camera, run.generator->vsgls(), run.generator->vsgl_count(), flicker_stride),
                       power_sum(run.vsgls));
       }
-      return json{{"frames", acc.frames()},
-                  {"weighted_cv", acc.weighted_cv()},
-                  {"power_stdev", acc.power_stdev()},
-                  {"power_relative_stdev", acc.power_relative_stdev()}};
+      return StaticFlicker{acc.weighted_cv(), acc.power_stdev(), acc.power_relative_stdev(), acc.frames()};
     };
-    json flicker = json::object();
     for (const auto& name : config.generators) {
       const auto tg = Clock::now();
-      flicker[name] = flicker_of(name, config.K);
+      out.flicker_static[name] = flicker_of(name, config.K);
       say("static flicker " + name + ": " + std::to_string(seconds_since(tg)) + " s");
     }
-    out["flicker_static"] = json{{"image", {shaded_extent(capture.gbuffer.width, flicker_stride),
-                                            shaded_extent(capture.gbuffer.height, flicker_stride)}},
-                                 {"gbuffer_stride", flicker_stride},
-                                 {"generators", flicker}};
+    out.flicker_image = json::array({shaded_extent(capture.gbuffer.width, flicker_stride),
+                                     shaded_extent(capture.gbuffer.height, flicker_stride)});
+    out.flicker_gbuffer_stride = flicker_stride;
 
-    json sweep = json::object();
     std::vector<Rgb8Image> k_tiles;
     for (const auto& name : config.generators) {
       if (!is_fis(name)) continue;
-      json rows = json::array();
+      std::vector<KSweepRow> rows;
       for (float K : config.k_sweep) {
         const auto tg = Clock::now();
-        json row = K == config.K ? flicker[name] : flicker_of(name, K);
+        const StaticFlicker flicker = K == config.K ? out.flicker_static.at(name) : flicker_of(name, K);
         const GeneratorRun run = run_generator(device, light, name, config, config.light_vsgls, K, 0);
         const RadianceImage img = K == config.K && reference.k1_images.count(name) > 0
                                       ? reference.k1_images.at(name)
                                       : shade_camera_view(device, camera, run.generator->vsgls(),
                                                           run.generator->vsgl_count(), config.error_stride);
-        row["K"] = K;
-        row["error"] = error_json(image_error(img, reference.image));
-        row["coverage"] = coverage_with_floor(run.vsgls, light_pdf, floor_light, floor_light_pdf, name, config.light_vsgls, K);
-        row["power"] = power_json(power_metrics(run.vsgls, light_flux));
+        KSweepRow row;
+        row.K = K;
+        row.weighted_cv = flicker.weighted_cv;
+        row.power_stdev = flicker.power_stdev;
+        row.power_relative_stdev = flicker.power_relative_stdev;
+        row.frames = flicker.frames;
+        row.error = error_summary(image_error(img, reference.image));
+        row.coverage = coverage_with_floor(run.vsgls, light_pdf, floor_light, floor_light_pdf, name, config.light_vsgls, K);
+        row.power = power_summary(power_metrics(run.vsgls, light_flux));
         rows.push_back(row);
         k_tiles.push_back(tone_map(downscale(img, kTileFactor), reference.exposure));
         say("K sweep " + name + " K=" + k_label(K) + ": " + std::to_string(seconds_since(tg)) + " s");
       }
-      sweep[name] = rows;
+      out.k_sweep.emplace_back(name, std::move(rows));
     }
-    out["k_sweep"] = sweep;
     if (!k_tiles.empty()) {
       std::string ks_text;
       for (float K : config.k_sweep) ks_text += (ks_text.empty() ? "" : ", ") + k_label(K);
@@ -345,12 +335,12 @@ struct QualityRun {
   }
 
   // 4b: the animated sequence (moving light and camera), reported separately.
-  json animated_sequence() const {
+  QualityModel::Animated animated_sequence() const {
     const auto t0 = Clock::now();
     const auto frames = sequence_frames(*config.sequence, config.frames);
     std::map<std::string, FlickerAccumulator> acc;
     FlickerAccumulator ref_acc;
-    json hashes = json::array();
+    std::vector<std::string> hashes;
     uint32_t seq_stride = 1, seq_ref_stride = 1;
     std::string seq_scene;
     for (const auto& dir : frames) {
@@ -370,22 +360,18 @@ struct QualityRun {
                             power_sum(run.vsgls), ref_img);
       }
     }
-    json gens = json::object();
+    QualityModel::Animated animated;
     for (const auto& name : config.generators)
-      gens[name] = json{{"weighted_cv", acc[name].weighted_cv()},
-                        {"error_cv", acc[name].error_cv()},
-                        {"power_relative_stdev", acc[name].power_relative_stdev()}};
-    const json animated =
-        json{{"sequence", config.sequence->string()},
-             {"scene", seq_scene},
-             {"frames", frames.size()},
-             {"frame_content_hashes", hashes},
-             {"gbuffer_stride", seq_stride},
-             {"reference_rsm_stride", seq_ref_stride},
-             {"reference_weighted_cv", ref_acc.weighted_cv()},
-             {"note", "light and camera move: weighted_cv includes the true change (compare with the reference's); "
-                      "error_cv = sum_p stdev_t(Y - Yref) / sum_p mean_t(Yref) is the change the reference does not have"},
-             {"generators", gens}};
+      animated.generators[name] = {acc[name].weighted_cv(), acc[name].error_cv(), acc[name].power_relative_stdev()};
+    animated.sequence = config.sequence->string();
+    animated.scene = seq_scene;
+    animated.frames = frames.size();
+    animated.frame_content_hashes = std::move(hashes);
+    animated.gbuffer_stride = seq_stride;
+    animated.reference_rsm_stride = seq_ref_stride;
+    animated.reference_weighted_cv = ref_acc.weighted_cv();
+    animated.note = "light and camera move: weighted_cv includes the true change (compare with the reference's); "
+                      "error_cv = sum_p stdev_t(Y - Yref) / sum_p mean_t(Yref) is the change the reference does not have";
     say("animated sequence: " + std::to_string(frames.size()) + " frames in " + std::to_string(seconds_since(t0)) + " s");
     return animated;
   }
@@ -402,33 +388,37 @@ void check_config(const QualityConfig& config) {
 }
 
 // What was measured: the schema, the capture with its hashes, the device, the build, the configuration.
-void write_header(json& out, Device& device, const Capture& capture, const std::filesystem::path& capture_dir,
+void write_header(QualityModel& out, Device& device, const Capture& capture, const std::filesystem::path& capture_dir,
                   const QualityConfig& config) {
-  out["schema"] = "vsgl-quality";
-  out["schema_version"] = kQualitySchemaVersion;
-  out["scene"] = capture.meta.scene;
-  out["capture"] = json{{"path", capture_dir.string()},
-                        {"gbuffer", {capture.gbuffer.width, capture.gbuffer.height}},
-                        {"rsm", {capture.rsm.width, capture.rsm.height}},
-                        {"hashes", capture_hashes_json(capture)}};
-  out["device"] = json{{"name", device.info().name}, {"driver", device.info().driver_name + " " + device.info().driver_info}};
-  out["build"] = build_json(config.source_dir);
+  out.schema = "vsgl-quality";
+  out.schema_version = kQualitySchemaVersion;
+  out.scene = capture.meta.scene;
+  out.capture_path = capture_dir.string();
+  out.gbuffer_size = json::array({capture.gbuffer.width, capture.gbuffer.height});
+  out.rsm_size = json::array({capture.rsm.width, capture.rsm.height});
+  out.capture_hashes = capture_hashes_json(capture);
+  out.device_name = device.info().name;
+  out.device_driver = device.info().driver_name + " " + device.info().driver_info;
+  out.build = build_json(config.source_dir);
+  out.version = out.build.at("vsgl_bench_version").get<std::string>();
+  out.git_commit = out.build.at("git_commit").get<std::string>();
+  out.git_dirty = out.build.at("git_dirty").get<bool>();
+  out.generators = config.generators;
+  out.light_vsgls = config.light_vsgls;
+  out.camera_vsgls = config.camera_vsgls;
+  out.K = config.K;
+  out.frames = config.frames;
   std::vector<double> ks(config.k_sweep.begin(), config.k_sweep.end());
-  out["config"] = json{{"generators", config.generators},
-                       {"light_vsgls", config.light_vsgls},
-                       {"camera_vsgls", config.camera_vsgls},
-                       {"K", config.K},
-                       {"bisection_iterations", config.bisection_iterations},
-                       {"kmeans_iterations", config.kmeans_iterations},
-                       {"frames", config.frames},
-                       {"frame_offsets", "offset_bits(f) = bit-reversed f (van der Corput), f = 0..F-1"},
-                       {"error_stride", config.error_stride},
-                       {"flicker_width", config.flicker_width},
-                       {"reference_rsm", config.reference_rsm},
-                       {"sequence_reference_rsm", config.sequence_reference_rsm},
-                       {"k_sweep", ks},
-                       {"power_of_a_vsgl", "Phi.r + Phi.g + Phi.b"},
-                       {"luminance", "Rec. 709"}};
+  out.config_rest = json{{"bisection_iterations", config.bisection_iterations},
+                         {"kmeans_iterations", config.kmeans_iterations},
+                         {"frame_offsets", "offset_bits(f) = bit-reversed f (van der Corput), f = 0..F-1"},
+                         {"error_stride", config.error_stride},
+                         {"flicker_width", config.flicker_width},
+                         {"reference_rsm", config.reference_rsm},
+                         {"sequence_reference_rsm", config.sequence_reference_rsm},
+                         {"k_sweep", ks},
+                         {"power_of_a_vsgl", "Phi.r + Phi.g + Phi.b"},
+                         {"luminance", "Rec. 709"}};
 }
 
 }  // namespace
@@ -453,8 +443,7 @@ QualityResult run_quality(Device& device, const Capture& capture, const std::fil
   check_config(config);
   const auto t_start = Clock::now();
   QualityResult result;
-  json& out = result.json;
-  json timings = json::object();
+  QualityModel out;
   write_header(out, device, capture, capture_dir, config);
 
   const DeviceView camera = upload_view(device, capture, ViewKind::kCamera);
@@ -469,25 +458,25 @@ QualityResult run_quality(Device& device, const Capture& capture, const std::fil
 
   MipPyramid light_pdf;
   auto t0 = Clock::now();
-  out["views"] = run.view_metrics(result, light_pdf);
-  timings["view_metrics"] = seconds_since(t0);
+  run.view_metrics(out, result, light_pdf);
+  out.timings_s.emplace_back("view_metrics", seconds_since(t0));
 
   t0 = Clock::now();
-  const double light_flux = out["views"]["light_view"]["total_flux"].get<double>();
-  const ReferenceShading reference = run.reference_and_errors(result, light_flux);
-  timings["reference_and_errors"] = seconds_since(t0);
+  const double light_flux = out.views.at("light_view").total_flux;
+  const ReferenceShading reference = run.reference_and_errors(out, result, light_flux);
+  out.timings_s.emplace_back("reference_and_errors", seconds_since(t0));
 
   t0 = Clock::now();
-  run.flicker_and_k_sweep(result, reference, light_pdf, light_flux);
-  timings["flicker_and_k_sweep"] = seconds_since(t0);
+  run.flicker_and_k_sweep(out, result, reference, light_pdf, light_flux);
+  out.timings_s.emplace_back("flicker_and_k_sweep", seconds_since(t0));
 
   if (config.sequence) {
     t0 = Clock::now();
-    out["flicker_animated"] = run.animated_sequence();
-    timings["animated_sequence"] = seconds_since(t0);
+    out.flicker_animated = run.animated_sequence();
+    out.timings_s.emplace_back("animated_sequence", seconds_since(t0));
   }
-  timings["total"] = seconds_since(t_start);
-  out["timings_s"] = timings;
+  out.timings_s.emplace_back("total", seconds_since(t_start));
+  result.json = out;
   return result;
 }
 
