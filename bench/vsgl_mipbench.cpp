@@ -20,6 +20,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "bench/benchmark_arguments.hpp"
 #include "bench/cli/command_line.hpp"
 #include "bench/cli/exit_codes.hpp"
 #include "bench/cli/option_types.hpp"
@@ -85,12 +86,7 @@ int run(int argc, char** argv) {
   cli::add_device_options(app, device_options, names);
   if (const auto exit_code = cli::parse_command_line(app, argc, argv)) return *exit_code;
   // What CLI11 left is Google Benchmark's, or a mistake: both are checked before any device work.
-  std::vector<std::string> extras = cli::benchmark_arguments(app);
-  std::vector<char*> gbench_argv{argv[0]};
-  for (std::string& a : extras) gbench_argv.push_back(a.data());
-  int gbench_argc = static_cast<int>(gbench_argv.size());
-  benchmark::Initialize(&gbench_argc, gbench_argv.data());
-  if (benchmark::ReportUnrecognizedArguments(gbench_argc, gbench_argv.data())) return static_cast<int>(ExitCode::kUsage);
+  if (const auto exit_code = cli::initialize_benchmark(app, argv[0])) return *exit_code;
   std::vector<int> tables;
   for (const auto& t : table_names) tables.push_back(t == "1" ? 1 : 2);
   cli::GpuSession session = cli::GpuSession::open(device_options);
