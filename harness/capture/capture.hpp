@@ -68,12 +68,16 @@ struct SpotLightDesc {
 // Where the scene of a capture came from when it is a user's file rather than a procedural scene
 // (sidecar key "source"; absent for the procedural scenes).
 struct SceneSource {
-  std::string format;        // "gltf"
+  std::string format;        // "gltf" (.gltf, .glb) or "obj" (.obj + .mtl)
   std::string file;          // the file as named on the command line (escaped)
   std::string content_hash;  // "fnv1a64:<16 hex>" over the file, its buffers and its decoded images
   uint32_t triangles = 0;
   std::string camera;        // which camera was used, in words
   std::string light;         // which light was used, in words
+  // A named scene preset (harness/scene/presets/NAME.json) the file was recorded through; empty
+  // for a file given directly (record --model / --gltf).
+  std::string preset;
+  uint32_t paper_table = 0;  // the paper table the preset reproduces (1, 2), 0 for none
 };
 
 struct CaptureMeta {

@@ -106,6 +106,10 @@ std::string sidecar_text(const CaptureMeta& meta, const Capture& capture) {
     source["triangles"] = meta.source->triangles;
     source["camera"] = meta.source->camera;
     source["light"] = meta.source->light;
+    if (!meta.source->preset.empty()) {
+      source["preset"] = meta.source->preset;
+      source["paper_table"] = meta.source->paper_table;
+    }
     doc["source"] = std::move(source);
   }
   doc["brsm_build_ms"] = meta.brsm_build_ms;
@@ -255,13 +259,20 @@ CaptureMeta read_meta(const JsonReader& reader, const json& doc) {
     const json& source = reader.object(doc, "", "source");
     SceneSource src;
     src.format = reader.string(source, "source", "format");
-    if (src.format != "gltf") reader.fail("", "key \"source.format\" is \"" + src.format + "\", expected \"gltf\"");
+    if (src.format != "gltf" && src.format != "obj")
+      reader.fail("", "key \"source.format\" is " + quoted_text(src.format) + ", expected \"gltf\" or \"obj\"");
     src.file = reader.string(source, "source", "file");
     src.content_hash = reader.string(source, "source", "content_hash");
     src.triangles = reader.uint32(source, "source", "triangles");
     if (src.triangles == 0) reader.fail("", "key \"source.triangles\" is 0");
     src.camera = reader.string(source, "source", "camera");
     src.light = reader.string(source, "source", "light");
+    if (source.contains("preset")) {
+      src.preset = reader.string(source, "source", "preset");
+      if (src.preset.empty()) reader.fail("", "key \"source.preset\" is empty");
+      src.paper_table = reader.uint32(source, "source", "paper_table");
+      if (src.paper_table > 2) reader.fail("", "key \"source.paper_table\" is " + std::to_string(src.paper_table) + ", expected 0, 1 or 2");
+    }
     meta.source = std::move(src);
   }
   meta.brsm_build_ms = reader.number(doc, "", "brsm_build_ms");

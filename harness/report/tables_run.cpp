@@ -52,7 +52,9 @@ void check_options(const TablesOptions& o) {
 }  // namespace
 
 int paper_table_of(const CaptureMeta& meta) {
-  if (meta.source) return 0;  // a user's file is never a paper scene, whatever its name
+  // A preset of the paper's scenes says which table it reproduces; a file given directly is never a
+  // paper table, whatever its name.
+  if (meta.source) return static_cast<int>(meta.source->paper_table);
   if (meta.scene == "atrium") return 1;
   if (meta.scene == "conference") return 2;
   return 0;

@@ -52,8 +52,9 @@ struct TablesOptions {
 // Scene and capture sub-directory of a paper table; throws UsageError for a table other than 1, 2.
 std::string table_scene(int table);
 
-// The paper table a capture is the input of: 1 or 2 for a procedural atrium or conference
-// capture, 0 for any other (a user's file, the tiny scene).
+// The paper table a capture is the input of: the paper_table of the preset it was recorded through
+// (sponza 1, conference-room 2), 1 or 2 for the procedural stand-ins atrium and conference, 0 for
+// any other (a user's file, the tiny scene).
 int paper_table_of(const CaptureMeta& meta);
 
 // One table to produce: a capture and, for the paper's tables, its number.
