@@ -21,6 +21,7 @@
 #include <benchmark/benchmark.h>
 
 #include <cstdio>
+#include <tuple>
 #include <memory>
 #include <set>
 #include <sstream>
@@ -46,6 +47,7 @@
 #include "harness/generators/fis/fis_generator.hpp"
 #include "harness/generators/generator_registry.hpp"
 #include "harness/timing/run_provenance.hpp"
+#include "harness/report/checkout_scenes.hpp"
 #include "harness/report/tables_run.hpp"
 #include "harness/timing/timing_runner.hpp"
 
@@ -57,6 +59,7 @@ struct Options {
   std::string captures = "captures";
   std::vector<int> tables;                // filled from --vsgl_tables unless captures are given
   std::vector<std::string> capture_dirs;  // --vsgl_capture: instead of the paper's tables
+  std::vector<std::string> assets;
   cli::GeneratorOptions generator;
   // Replays per benchmark. Fixed, because each iteration replays the whole case while reporting
   // one phase's manual time: letting Google Benchmark accumulate its min_time of a 20 us phase
@@ -72,8 +75,10 @@ void add_options(CLI::App& app, Options& o, std::vector<std::string>& tables, cl
       ->type_name("DIR")
       ->capture_default_str();
   auto* table_option = cli::add_list_option(app, names("tables"), tables,
-                                            "which tables (1: CAPTURES/atrium, 2: CAPTURES/conference)",
+                                            "which tables (1: sponza, else atrium; 2: conference-room, else "
+                                            "conference)",
                                             cli::one_of({"1", "2"}));
+  cli::add_assets_option(app, o.assets, names);
   app.add_option(names("capture"), o.capture_dirs,
                  "time this capture instead (repeatable): benchmarks <scene>/..., or tableN/... for a capture of a "
                  "paper table's scene")
@@ -139,14 +144,19 @@ int run(int argc, char** argv) {
 
   // The inputs: the paper's tables (recorded when missing), or the captures given (loaded).
   std::vector<std::unique_ptr<TableState>> tables;
-  std::vector<std::pair<int, std::filesystem::path>> inputs;
-  for (int number : o.tables) inputs.emplace_back(number, std::filesystem::path(o.captures) / table_scene(number));
-  for (const auto& dir : o.capture_dirs) inputs.emplace_back(-1, dir);
+  const SceneLibrary library = checkout_scene_library({o.assets.begin(), o.assets.end()});
+  std::vector<std::tuple<int, std::filesystem::path, TableScene>> inputs;
+  for (int number : o.tables) {
+    TableScene scene = table_scene(number, library);
+    inputs.emplace_back(number, std::filesystem::path(o.captures) / scene.scene, std::move(scene));
+  }
+  for (const auto& dir : o.capture_dirs) inputs.emplace_back(-1, dir, TableScene{});
   std::set<std::string> stems;
-  for (const auto& [given, dir] : inputs) {
+  for (const auto& [given, dir, scene] : inputs) {
     auto t = std::make_unique<TableState>();
     if (given > 0) {
-      t->capture = provide_capture(device, table_scene(given), RecordSizes{}, dir).capture;
+      const auto say = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
+      t->capture = provide_table_capture(device, scene, library, dir, RecordSizes{}, say).capture;
       t->number = given;
     } else {
       t->capture = load_capture(dir);

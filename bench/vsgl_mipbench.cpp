@@ -9,6 +9,7 @@
 //
 // Level 0 is built once (untimed) by a full run of the generator; each replay rebuilds levels
 // 1..L from it, which leaves the pyramid as it was, so replays are alike.
+#include <cstdio>
 #include <benchmark/benchmark.h>
 
 #include <filesystem>
@@ -29,6 +30,7 @@
 #include "harness/core/program_name.hpp"
 #include "harness/generators/device_view.hpp"
 #include "harness/generators/fis/fis_generator.hpp"
+#include "harness/report/checkout_scenes.hpp"
 #include "harness/report/tables_run.hpp"
 #include "harness/scene/capture_provisioning.hpp"
 #include "harness/timing/run_provenance.hpp"
@@ -80,8 +82,11 @@ int run(int argc, char** argv) {
   app.add_option(names("captures"), captures, "capture root; missing captures are recorded first")
       ->type_name("DIR")
       ->capture_default_str();
-  cli::add_list_option(app, names("tables"), table_names, "which tables (1: CAPTURES/atrium, 2: CAPTURES/conference)",
+  cli::add_list_option(app, names("tables"), table_names,
+                       "which tables (1: sponza, else atrium; 2: conference-room, else conference)",
                        cli::one_of({"1", "2"}));
+  std::vector<std::string> assets;
+  cli::add_assets_option(app, assets, names);
   app.add_option(names("replays"), replays, "replays per benchmark")->check(cli::at_least(1))->capture_default_str();
   cli::add_device_options(app, device_options, names);
   if (const auto exit_code = cli::parse_command_line(app, argc, argv)) return *exit_code;
@@ -102,12 +107,14 @@ int run(int argc, char** argv) {
   benchmark::AddCustomContext("vsgl_git_commit", build["git_commit"].get<std::string>());
   benchmark::AddCustomContext("vsgl_default_mipmapping", mip_strategy_name(default_mip_strategy(info)));
 
+  const SceneLibrary library = checkout_scene_library({assets.begin(), assets.end()});
   std::vector<std::unique_ptr<TableState>> states;
   for (int number : tables) {
     auto t = std::make_unique<TableState>();
-    const std::string scene = table_scene(number);
-    const std::filesystem::path dir = std::filesystem::path(captures) / scene;
-    t->capture = provide_capture(device, scene, RecordSizes{}, dir).capture;
+    const TableScene scene = table_scene(number, library);
+    const std::filesystem::path dir = std::filesystem::path(captures) / scene.scene;
+    const auto say = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
+    t->capture = provide_table_capture(device, scene, library, dir, RecordSizes{}, say).capture;
     benchmark::AddCustomContext("vsgl_table" + std::to_string(number) + "_capture", dir.string());
     benchmark::AddCustomContext("vsgl_table" + std::to_string(number) + "_capture_hashes",
                                 capture_hashes_json(t->capture).dump());

@@ -15,7 +15,10 @@
 #include "bench/cli/gpu_session.hpp"
 #include "harness/core/error.hpp"
 #include "harness/scene/capture_provisioning.hpp"
+#include "harness/report/checkout_scenes.hpp"
 #include "harness/scene/gltf_scene.hpp"
+#include "harness/scene/model_scene.hpp"
+#include "harness/scene/scene_preset.hpp"
 
 namespace vsgl::cli {
 namespace {
@@ -64,11 +67,13 @@ CLI::Option* add_vec3_option(CLI::App& app, const std::string& name, std::option
 }
 
 struct RecordOptions {
-  std::optional<std::string> gltf;
+  std::optional<std::string> gltf, model;
   std::vector<std::string> scenes;
+  std::vector<std::string> assets;
   std::optional<std::string> out;
   std::pair<uint32_t, uint32_t> gbuffer{1920, 1088};
   uint32_t rsm = 512;
+  bool sizes_given = false;  // --gbuffer or --rsm: else a preset's own sizes
   uint32_t frames = 1;
   bool ground = false;
   GltfCameraChoice camera;
@@ -92,55 +97,70 @@ std::filesystem::path frame_dir(const std::filesystem::path& base, uint32_t f, u
   return base / name;
 }
 
+void print_import(const GltfImport& import, double import_ms) {
+  std::printf("imported %s: %llu triangles, %zu materials, %zu textures in %.0f ms; content %s\n", import.file.c_str(),
+              static_cast<unsigned long long>(import.triangles), import.scene.materials.size(),
+              import.scene.textures.size(), import_ms, import.content_hash.c_str());
+  std::printf("  camera: %s\n  light: %s\n", import.camera_source.c_str(), import.light_source.c_str());
+  for (const std::string& note : import.notes) std::printf("  note: %s\n", note.c_str());
+}
+
+// A user's file (--model, --gltf): its frames recorded into OUT or captures/<its scene name>.
+int record_model_file(RecordOptions& o, GpuSession& session, const std::string& file, bool any_format) {
+  const RecordSizes sizes{o.gbuffer.first, o.gbuffer.second, o.rsm};
+  const auto t0 = std::chrono::steady_clock::now();
+  const GltfImport import =
+      any_format ? import_model(file, o.camera, o.light, o.ground) : import_gltf(file, o.camera, o.light, o.ground);
+  print_import(import, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+  std::string ext = std::filesystem::path(file).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const SceneSource source{ext == ".obj" ? "obj" : "gltf",          import.file,          import.content_hash,
+                           static_cast<uint32_t>(import.triangles), import.camera_source, import.light_source};
+  const std::filesystem::path base =
+      o.out ? std::filesystem::path(*o.out) : std::filesystem::path("captures") / import.scene.name;
+  for (uint32_t f = 0; f < o.frames; ++f) {
+    const auto dir = frame_dir(base, f, o.frames);
+    RecordedCapture r;
+    try {
+      r = record_capture(session.device(), gltf_frame(import, f, o.frames), sizes, f, o.frames, dir, source);
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      if (what.find("BRSM PDF") == std::string::npos || o.ground) throw;
+      // A lone convex model lights nothing of itself: say what helps.
+      throw InputError(what +
+                       " (a single convex object receives no indirect light from itself: add a floor with "
+                       "--ground, or move the light with --light-pos/--light-dir)");
+    }
+    print_recorded(import.scene.name, dir, f, o.frames, sizes, r);
+  }
+  return session.finish(0);
+}
 
 int run_record(RecordOptions& o) {
-  const auto& gltf = o.gltf;
-  const auto& out_arg = o.out;
-  const auto& camera = o.camera;
-  const auto& light = o.light;
-  const bool ground = o.ground;
-  const uint32_t frames = o.frames;
+  // Every named scene is resolved (presets read, models found) before the device is opened, so a
+  // missing model is an input error that writes nothing.
+  const SceneLibrary library = checkout_scene_library({o.assets.begin(), o.assets.end()});
+  const auto names = o.scenes.empty() ? std::vector<std::string>{"atrium"} : o.scenes;
+  if (!o.gltf && !o.model)
+    for (const auto& name : names)
+      if (!is_named_scene(name, library)) (void)load_named_scene(name, library);  // throws listing the scenes
   GpuSession session = GpuSession::open(o.device);
-  const RecordSizes sizes{o.gbuffer.first, o.gbuffer.second, o.rsm};
-
-  if (gltf) {
-    const auto t0 = std::chrono::steady_clock::now();
-    const GltfImport import = import_gltf(*gltf, camera, light, ground);
-    const double import_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    std::printf("imported %s: %llu triangles, %zu materials, %zu textures in %.0f ms; content %s\n", import.file.c_str(),
-                static_cast<unsigned long long>(import.triangles), import.scene.materials.size(),
-                import.scene.textures.size(), import_ms, import.content_hash.c_str());
-    std::printf("  camera: %s\n  light: %s\n", import.camera_source.c_str(), import.light_source.c_str());
-    for (const std::string& note : import.notes) std::printf("  note: %s\n", note.c_str());
-    const SceneSource source{"gltf", import.file, import.content_hash, static_cast<uint32_t>(import.triangles),
-                             import.camera_source, import.light_source};
-    const std::filesystem::path base = out_arg ? std::filesystem::path(*out_arg)
-                                               : std::filesystem::path("captures") / import.scene.name;
-    for (uint32_t f = 0; f < frames; ++f) {
-      const auto dir = frame_dir(base, f, frames);
-      RecordedCapture r;
-      try {
-        r = record_capture(session.device(), gltf_frame(import, f, frames), sizes, f, frames, dir, source);
-      } catch (const InputError& e) {
-        const std::string what = e.what();
-        if (what.find("BRSM PDF") == std::string::npos || ground) throw;
-        // A lone convex model lights nothing of itself: say what helps.
-        throw InputError(what + " (a single convex object receives no indirect light from itself: add a floor with "
-                                "--ground, or move the light with --light-pos/--light-dir)");
-      }
-      print_recorded(import.scene.name, dir, f, frames, sizes, r);
+  if (o.gltf) return record_model_file(o, session, *o.gltf, false);
+  if (o.model) return record_model_file(o, session, *o.model, true);
+  for (const auto& name : names) {
+    const NamedScene scene = load_named_scene(name, library);
+    if (scene.import) {
+      std::printf("scene %s: %s\n", name.c_str(), scene.preset->description.c_str());
+      print_import(*scene.import, scene.import_ms);
     }
-    return session.finish(0);
-  }
-
-  const auto scenes = o.scenes.empty() ? std::vector<std::string>{"atrium"} : o.scenes;
-  for (const auto& name : scenes) {
-    const std::filesystem::path base = out_arg ? std::filesystem::path(*out_arg) : std::filesystem::path("captures") / name;
-    for (uint32_t f = 0; f < frames; ++f) {
-      const auto dir = frame_dir(base, f, frames);
+    const RecordSizes sizes =
+        o.sizes_given || !scene.preset ? RecordSizes{o.gbuffer.first, o.gbuffer.second, o.rsm} : scene.default_sizes;
+    const std::filesystem::path base = o.out ? std::filesystem::path(*o.out) : std::filesystem::path("captures") / name;
+    for (uint32_t f = 0; f < o.frames; ++f) {
+      const auto dir = frame_dir(base, f, o.frames);
       // The one recording path, shared with `tables` (harness/scene/capture_provisioning.hpp).
-      const RecordedCapture r = record_scene_capture(session.device(), name, sizes, f, frames, dir);
-      print_recorded(name, dir, f, frames, sizes, r);
+      const RecordedCapture r = record_scene_capture(session.device(), scene, sizes, f, o.frames, dir);
+      print_recorded(name, dir, f, o.frames, sizes, r);
     }
   }
   return session.finish(0);
@@ -155,18 +175,31 @@ Command add_record_command(CLI::App& parent) {
       "G-buffer and RSM as OpenEXR + a JSON sidecar with the camera, the light and a hash of every channel; "
       "builds the BRSM PDF of the RSM from " + std::to_string(kBrsmCameraVsgls) + " camera-view VSGLs");
   auto o = std::make_shared<RecordOptions>();
+  std::string presets;
+  for (const auto& name : scene_preset_names(checkout_scene_library({}).preset_dir))
+    presets += (presets.empty() ? "" : ", ") + name;
   auto* scene = add_list_option(*app, "--scene", o->scenes,
-                                "procedural scene(s): atrium (Table 1), conference (Table 2), tiny (tests)",
+                                "scene(s): the paper's scenes as presets (" + presets +
+                                    "; models found through --assets) or the procedural stand-ins atrium (Table 1), "
+                                    "conference (Table 2), tiny (tests)",
                                 CLI::Validator([](std::string&) { return std::string(); }, "NAME"))
                     ->default_str("atrium");
+  auto* model = add_optional(*app, "--model", o->model,
+                             "a scene file instead: glTF 2.0 (.gltf, .glb) or Wavefront OBJ + MTL (.obj) "
+                             "(README \"Your own scenes\")")
+                    ->check(input_file("--model"))
+                    ->excludes(scene);
   auto* gltf = add_optional(*app, "--gltf", o->gltf,
-                               "a glTF 2.0 file (.gltf or .glb) instead: its default scene, materials, textures and "
-                               "normal maps (README \"Your own scenes\")")
+                            "a glTF 2.0 file (.gltf or .glb) instead: its default scene, materials, textures and "
+                            "normal maps (README \"Your own scenes\")")
                    ->check(input_file("--gltf"))
-                   ->excludes(scene);
+                   ->excludes(scene)
+                   ->excludes(model);
+  add_assets_option(*app, o->assets)->excludes(model)->excludes(gltf);
   add_optional(*app, "--out", o->out, "capture directory (one scene)")->default_str("captures/NAME; glTF: its scene name");
-  add_size_option(*app, "--gbuffer", o->gbuffer, "G-buffer size");
-  app->add_option("--rsm", o->rsm, "RSM size N x N")->check(at_least(1))->capture_default_str();
+  CLI::Option* gbuffer = add_size_option(*app, "--gbuffer", o->gbuffer, "G-buffer size (a preset: its own)");
+  CLI::Option* rsm =
+      app->add_option("--rsm", o->rsm, "RSM size N x N (a preset: its own)")->check(at_least(1))->capture_default_str();
   app->add_option("--frames", o->frames, "animated sequence of F frames (moving light and camera) in DIR/frame_NNNN")
       ->check(at_least(1))
       ->capture_default_str();
@@ -201,12 +234,19 @@ Command add_record_command(CLI::App& parent) {
                      "add a grey floor under the model (a lone convex model has no indirect light: its BRSM PDF is "
                      "zero)"),
   };
-  for (CLI::Option* option : gltf_only) option->needs(gltf);
+  for (CLI::Option* option : gltf_only) option->excludes(scene);
   add_device_options(*app, o->device);
-  return {app, [o] {
+  return {app, [o, gbuffer, rsm, gltf_only] {
             if (o->scenes.size() > 1 && o->out)
               throw UsageError("--out names one capture directory, and several scenes were given: leave --out out "
                                "(each scene goes to captures/NAME) or record the scenes one at a time");
+            o->sizes_given = gbuffer->count() > 0 || rsm->count() > 0;
+            if (!o->gltf && !o->model)
+              for (const CLI::Option* option : gltf_only)
+                if (option->count() > 0)
+                  throw UsageError(option->get_name() +
+                                   " sets the view of a scene file: it needs --model or --gltf (a "
+                                   "named scene's camera and light are its own)");
             return run_record(*o);
           }};
 }

@@ -14,6 +14,7 @@
 #include "harness/core/error.hpp"
 #include "harness/timing/run_provenance.hpp"
 #include "harness/generators/generator_registry.hpp"
+#include "harness/report/checkout_scenes.hpp"
 #include "harness/report/tables_run.hpp"
 
 namespace vsgl::cli {
@@ -27,6 +28,7 @@ struct TablesCommandOptions {
   uint32_t rsm = 512;
   std::vector<std::string> tables{"1", "2"};
   std::vector<std::string> capture_dirs;
+  std::vector<std::string> assets;
   GeneratorOptions gen;
   std::optional<uint32_t> warmup, repetitions, max_repetitions;
   std::optional<double> noise_target, time_cap;
@@ -45,6 +47,7 @@ int run_tables_command(const TablesCommandOptions& c) {
   TablesOptions o;
   const bool quick = c.quick;
   o.captures_dir = c.captures;
+  o.scenes = checkout_scene_library({c.assets.begin(), c.assets.end()});
   o.record_sizes = RecordSizes{c.gbuffer.first, c.gbuffer.second, c.rsm};
   for (const auto& d : c.capture_dirs) o.captures.emplace_back(d);
   o.tables.clear();
@@ -146,19 +149,27 @@ Command add_tables_command(CLI::App& parent) {
           "OUT/tableN.json (schema results/schema/table.schema.json: the statistics and raw samples, the paper's "
           "value beside each, its ratios, the modified - Tok15 overhead paired by round with a 95 % Wilcoxon "
           "interval, the copy bandwidth measured in the same run, the Table 3 analog, the paper's claims checked) "
-          "and OUT/tableN.md; records CAPTURES/atrium and CAPTURES/conference if missing. On a CPU device the "
-          "default generators are the paper's four");
+          "and OUT/tableN.md. Table 1 runs on the paper's Crytek Sponza (scene sponza) and Table 2 on its conference "
+          "room (conference-room) when their models are found (--assets), else on the procedural stand-ins atrium and "
+          "conference, which the JSON names. On a CPU device the default generators are the paper's four");
   auto o = std::make_shared<TablesCommandOptions>();
-  auto* tables = add_list_option(*app, "--tables", o->tables,
-                                 "which tables (1: CAPTURES/atrium, 2: CAPTURES/conference)", one_of({"1", "2"}));
-  app->add_option("--capture", o->capture_dirs,
-                  "time this capture instead (repeatable): a glTF scene's capture gives OUT/<scene>.json + .md "
-                  "(\"table\": null, no paper columns); a capture of atrium/conference gives that paper table")
-      ->allow_extra_args(false)
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
-      ->type_name("DIR")
-      ->excludes(tables);
-  app->add_option("--captures", o->captures, "capture root; missing captures are recorded first")
+  auto* tables =
+      add_list_option(*app, "--tables", o->tables,
+                      "which tables (1: sponza, else atrium; 2: conference-room, else conference)", one_of({"1", "2"}));
+  CLI::Option* capture =
+      app->add_option(
+             "--capture", o->capture_dirs,
+             "time this capture instead (repeatable): a glTF scene's capture gives OUT/<scene>.json + .md "
+             "(\"table\": null, no paper columns); a capture of a paper scene (sponza, conference-room) or of its "
+             "stand-in (atrium, conference) gives that paper table")
+          ->allow_extra_args(false)
+          ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
+          ->type_name("DIR")
+          ->excludes(tables);
+  add_assets_option(*app, o->assets)->excludes(capture);
+  app->add_option("--captures", o->captures,
+                  "capture root: Table N's capture is CAPTURES/<its scene>, recorded first when missing or stale "
+                  "(another scene, size, model or view)")
       ->type_name("DIR")
       ->capture_default_str();
   add_size_option(*app, "--gbuffer", o->gbuffer, "G-buffer size of captures recorded because missing");

@@ -51,6 +51,9 @@ CLI::Option* add_size_option(CLI::App& app, const std::string& name, std::pair<u
 CLI::Option* add_list_option(CLI::App& app, const std::string& name, std::vector<std::string>& target,
                              const std::string& description, const CLI::Validator& item);
 
+// --assets DIR (repeatable): where the paper scenes' models are looked for first (DESIGN.md §3.4).
+CLI::Option* add_assets_option(CLI::App& app, std::vector<std::string>& target, const OptionNames& names = {});
+
 // --name V into an optional (unset when not given).
 template <class T>
 CLI::Option* add_optional(CLI::App& app, const std::string& name, std::optional<T>& target,

@@ -1,5 +1,6 @@
 #include "harness/core/json_reader.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iterator>
@@ -122,6 +123,17 @@ const Json& BasicJsonReader<Json>::array(const json& object, const std::string& 
   if (value.size() != count)
     fail(path, "has " + std::to_string(value.size()) + " elements, expected " + expected);
   return value;
+}
+
+template <typename Json>
+void BasicJsonReader<Json>::only_keys(const json& object, const std::string& parent,
+                                      std::initializer_list<std::string_view> known) const {
+  for (auto it = object.begin(); it != object.end(); ++it) {
+    if (std::find(known.begin(), known.end(), std::string_view(it.key())) != known.end()) continue;
+    std::string names;
+    for (std::string_view k : known) names += (names.empty() ? "" : ", ") + std::string(k);
+    fail(child(parent, printable_text(it.key(), 80)), "is not a known key (known: " + names + ")");
+  }
 }
 
 template class BasicJsonReader<nlohmann::json>;

@@ -4,6 +4,7 @@
 // failure names the file and the place in the document, so a bad input is an InputError that
 // says what is wrong and where.
 #include <cstdint>
+#include <initializer_list>
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -45,6 +46,9 @@ class BasicJsonReader {
   double number(const json& value, const std::string& path) const;
   double number(const json& object, const std::string& parent, std::string_view key) const;
   float number32(const json& value, const std::string& path) const;
+  // Refuses a key of `object` (at `parent`) that is not one of `known`, naming it and the known
+  // ones: a misspelt key in a hand-written file is an error, never silently ignored.
+  void only_keys(const json& object, const std::string& parent, std::initializer_list<std::string_view> known) const;
   // An array of exactly `count` elements.
   const json& array(const json& object, const std::string& parent, std::string_view key, std::size_t count) const;
 

@@ -31,8 +31,7 @@ TableMeasurement measure_table(Device& device, const TablesOptions& o, const Tab
   t.capture_dir = dir.string();
   ProvidedCapture provided;
   if (input.record_if_missing) {
-    if (!std::filesystem::exists(dir / "capture.json")) say("recording the missing capture " + dir.string());
-    provided = provide_capture(device, table_scene(number), o.record_sizes, dir);
+    provided = provide_table_capture(device, input.scene, o.scenes, dir, o.record_sizes, say);
   } else {
     provided.capture = load_capture(dir);  // every hash checked
   }

@@ -13,6 +13,7 @@
 #include "harness/report/table_json.hpp"
 #include "harness/report/table_markdown.hpp"
 #include "harness/report/table_measurement.hpp"
+#include "harness/scene/capture_provisioning.hpp"
 #include "harness/vk/device.hpp"
 
 namespace vsgl {
@@ -31,7 +32,7 @@ void check_options(const TablesOptions& o) {
   if (o.tables.empty() && o.captures.empty()) throw UsageError("no table to produce");
   std::set<int> seen;
   for (int t : o.tables) {
-    table_scene(t);
+    if (t != 1 && t != 2) table_scene(t);  // throws naming the tables
     if (!seen.insert(t).second) throw UsageError("table " + std::to_string(t) + " is asked for twice");
   }
   if (o.generators.empty()) throw UsageError("no generator to time");
@@ -67,7 +68,11 @@ std::string table_file_stem(int paper_table, const std::string& scene) {
 std::vector<TableInput> table_inputs(const TablesOptions& o) {
   std::vector<TableInput> out;
   if (o.captures.empty()) {
-    for (int t : o.tables) out.push_back(TableInput{o.captures_dir / table_scene(t), t, true});
+    for (int t : o.tables) {
+      TableScene scene = table_scene(t, o.scenes);
+      const std::filesystem::path dir = o.captures_dir / scene.scene;
+      out.push_back(TableInput{dir, t, true, std::move(scene)});
+    }
     return out;
   }
   std::map<std::string, std::filesystem::path> stems;  // output stem -> the capture that takes it
@@ -87,10 +92,37 @@ std::vector<TableInput> table_inputs(const TablesOptions& o) {
   return out;
 }
 
-std::string table_scene(int table) {
-  if (table == 1) return "atrium";
-  if (table == 2) return "conference";
-  throw UsageError("there is no paper table " + std::to_string(table) + " with timings (tables are 1 and 2)");
+TableScene table_scene(int table, const SceneLibrary& library) {
+  if (table != 1 && table != 2)
+    throw UsageError("there is no paper table " + std::to_string(table) + " with timings (tables are 1 and 2)");
+  const std::string stand_in = table == 1 ? "atrium" : "conference";
+  for (const std::string& name : scene_preset_names(library.preset_dir)) {
+    const ScenePreset preset = read_scene_preset(library.preset_dir / (name + ".json"));
+    if (preset.paper_table != static_cast<uint32_t>(table)) continue;
+    try {
+      find_preset_model(preset, library.assets);
+    } catch (const InputError&) {
+      return TableScene{stand_in, false,
+                        "table " + std::to_string(table) + ": the paper's scene " + name +
+                            " is not here (its model was not found; see `vsgl-bench record --scene " + name +
+                            "`), so the procedural stand-in " + stand_in + " is used"};
+    }
+    return TableScene{name, true, {}};
+  }
+  return TableScene{stand_in, false,
+                    "table " + std::to_string(table) + ": no scene preset reproduces it, so the procedural stand-in " +
+                        stand_in + " is used"};
+}
+
+ProvidedCapture provide_table_capture(Device& device, const TableScene& scene, const SceneLibrary& library,
+                                      const std::filesystem::path& dir, const RecordSizes& sizes,
+                                      const std::function<void(const std::string&)>& say) {
+  if (!scene.note.empty()) say(scene.note);
+  ProvidedCapture provided = provide_capture(device, load_named_scene(scene.scene, library), sizes, dir);
+  if (!provided.stale_because.empty())
+    say("re-recorded the stale capture " + dir.string() + ": " + provided.stale_because);
+  else if (provided.recorded) say("recorded the missing capture " + dir.string());
+  return provided;
 }
 
 TablesOutcome run_tables(Device& device, const TablesOptions& o, const std::function<void(const TablesEvent&)>& on_event) {

@@ -15,6 +15,8 @@
 
 #include "harness/capture/capture.hpp"
 #include "harness/scene/capture_recorder.hpp"
+#include "harness/scene/capture_provisioning.hpp"
+#include "harness/scene/named_scene.hpp"
 #include "harness/generators/generator_registry.hpp"
 #include "harness/timing/copy_bandwidth.hpp"
 #include "harness/timing/timing_runner.hpp"
@@ -24,7 +26,10 @@ namespace vsgl {
 class Device;
 
 struct TablesOptions {
-  std::filesystem::path captures_dir = "captures";  // Table 1: DIR/atrium, Table 2: DIR/conference
+  // Table N's capture is DIR/<its scene>: the preset that reproduces it (sponza, conference-room)
+  // when `scenes` finds its model, else the procedural stand-in (atrium, conference).
+  std::filesystem::path captures_dir = "captures";
+  SceneLibrary scenes;  // none by default: the stand-ins; the CLI passes checkout_scene_library()
   std::filesystem::path out_dir;                     // required
   std::vector<int> tables{1, 2};
   std::vector<std::filesystem::path> captures;     // --capture: time these instead (never recorded here)
@@ -49,19 +54,33 @@ struct TablesOptions {
   std::vector<std::string> debug_slow;
 };
 
-// Scene and capture sub-directory of a paper table; throws UsageError for a table other than 1, 2.
-std::string table_scene(int table);
+// The scene of a paper table: the preset of `library` whose paper_table is `table`, when its model
+// is found; else the procedural stand-in, with a note saying why. Throws UsageError for a table
+// other than 1, 2, and InputError for a broken preset.
+struct TableScene {
+  std::string scene;
+  bool paper = false;
+  std::string note;  // one line for the log when the stand-in is used
+};
+TableScene table_scene(int table, const SceneLibrary& library = {});
 
 // The paper table a capture is the input of: the paper_table of the preset it was recorded through
 // (sponza 1, conference-room 2), 1 or 2 for the procedural stand-ins atrium and conference, 0 for
 // any other (a user's file, the tiny scene).
 int paper_table_of(const CaptureMeta& meta);
 
+// The capture of `scene` in `dir`, recorded there when missing or stale (provide_capture); `say`
+// hears the scene's note and what was recorded, and why.
+ProvidedCapture provide_table_capture(Device& device, const TableScene& scene, const SceneLibrary& library,
+                                      const std::filesystem::path& dir, const RecordSizes& sizes,
+                                      const std::function<void(const std::string&)>& say);
+
 // One table to produce: a capture and, for the paper's tables, its number.
 struct TableInput {
   std::filesystem::path capture_dir;
   int paper_table = 0;             // 1, 2, or 0: not a paper table
-  bool record_if_missing = false;  // the paper's captures under --captures only
+  bool record_if_missing = false;  // the paper's captures under --captures only (also when stale)
+  TableScene scene;                // the scene recorded when record_if_missing
 };
 
 // What run_tables() will measure, in order: the paper tables of `tables`, or one per `captures`

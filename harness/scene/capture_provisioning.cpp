@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "harness/capture/capture_files.hpp"
+#include "harness/capture/capture_sidecar.hpp"
 #include "harness/core/error.hpp"
 #include "harness/scene/brsm_pdf.hpp"
 #include "harness/scene/scene.hpp"
@@ -56,15 +57,25 @@ RecordedCapture record_capture(Device& device, const Scene& scene, const RecordS
   return out;
 }
 
+RecordedCapture record_scene_capture(Device& device, const NamedScene& scene, const RecordSizes& sizes, uint32_t frame,
+                                     uint32_t frames, const std::filesystem::path& dir) {
+  return record_capture(device, scene.frame(frame, frames), sizes, frame, frames, dir, scene.source);
+}
+
 RecordedCapture record_scene_capture(Device& device, const std::string& scene_name, const RecordSizes& sizes,
                                      uint32_t frame, uint32_t frames, const std::filesystem::path& dir) {
   return record_capture(device, make_scene(scene_name, frame, frames), sizes, frame, frames, dir);
 }
 
-ProvidedCapture provide_capture(Device& device, const std::string& scene, const RecordSizes& sizes,
+ProvidedCapture provide_capture(Device& device, const NamedScene& scene, const RecordSizes& sizes,
                                 const std::filesystem::path& dir) {
   ProvidedCapture out;
-  if (!std::filesystem::exists(dir / "capture.json")) {
+  if (std::filesystem::exists(dir / kSidecarName)) {
+    const SidecarContents on_disk = read_sidecar(dir / kSidecarName);  // a broken sidecar is an error
+    out.stale_because =
+        capture_staleness(on_disk.meta, on_disk.gbuffer.width, on_disk.gbuffer.height, on_disk.rsm.width, scene, sizes);
+  }
+  if (!std::filesystem::exists(dir / kSidecarName) || !out.stale_because.empty()) {
     std::filesystem::create_directories(dir);
     record_scene_capture(device, scene, sizes, 0, 1, dir);
     out.recorded = true;

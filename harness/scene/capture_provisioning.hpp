@@ -11,6 +11,7 @@
 #include "harness/capture/capture.hpp"
 #include "harness/capture/capture_files.hpp"
 #include "harness/scene/capture_recorder.hpp"
+#include "harness/scene/named_scene.hpp"
 #include "harness/scene/scene.hpp"
 
 namespace vsgl {
@@ -33,20 +34,25 @@ RecordedCapture record_capture(Device& device, const Scene& scene, const RecordS
                                uint32_t frames, const std::filesystem::path& dir,
                                const std::optional<SceneSource>& source = std::nullopt);
 
-// record_capture() of the procedural scene named `scene`. Throws InputError for an unknown scene,
-// and what write_capture() throws.
+// record_capture() of a named scene (a procedural scene or a preset's model); the sidecar names
+// the preset's model as its source.
+RecordedCapture record_scene_capture(Device& device, const NamedScene& scene, const RecordSizes& sizes, uint32_t frame,
+                                     uint32_t frames, const std::filesystem::path& dir);
+// ... of the procedural scene `scene`. Throws InputError for an unknown scene.
 RecordedCapture record_scene_capture(Device& device, const std::string& scene, const RecordSizes& sizes, uint32_t frame,
                                      uint32_t frames, const std::filesystem::path& dir);
 
 struct ProvidedCapture {
   Capture capture;
-  bool recorded = false;  // true when it was missing and recorded now
+  bool recorded = false;      // true when it was recorded now
+  std::string stale_because;  // why the capture found in the directory was re-recorded; empty if it was not
 };
 
-// Loads the capture in `dir` (load_capture: every hash checked against the sidecar). When `dir`
-// has no capture.json it records scene `scene` there first. A capture that exists but is broken
-// is an error (InputError), never silently re-recorded.
-ProvidedCapture provide_capture(Device& device, const std::string& scene, const RecordSizes& sizes,
+// The capture of `scene` at `sizes` in `dir`, a cache keyed by scene, sizes, model content, camera
+// and light: loaded when the sidecar there matches all of them (load_capture: every hash checked),
+// else recorded there first, replacing a stale one (capture_staleness says why). A capture that is
+// broken is an error (InputError), never silently re-recorded.
+ProvidedCapture provide_capture(Device& device, const NamedScene& scene, const RecordSizes& sizes,
                                 const std::filesystem::path& dir);
 
 // Every channel hash of both views, as the sidecar has them: {"gbuffer": {channel: hash}, "rsm": ...}.

@@ -1,0 +1,42 @@
+#include "harness/scene/asset_search.hpp"
+
+#include <string_view>
+
+#include "harness/core/error.hpp"
+#include "harness/core/printable_text.hpp"
+#include "harness/scene/scene_preset.hpp"
+
+namespace vsgl {
+
+AssetSearch make_asset_search(const std::vector<std::filesystem::path>& cli_dirs, const char* env_assets,
+                              const std::filesystem::path& checkout) {
+  AssetSearch out;
+  for (const auto& d : cli_dirs) out.dirs.push_back({d, "--assets"});
+  std::string_view env = env_assets == nullptr ? std::string_view() : std::string_view(env_assets);
+  while (!env.empty()) {
+    const std::size_t colon = env.find(':');
+    const std::string_view part = env.substr(0, colon);
+    if (!part.empty()) out.dirs.push_back({std::filesystem::path(part), "VSGL_ASSETS"});
+    env = colon == std::string_view::npos ? std::string_view() : env.substr(colon + 1);
+  }
+  out.dirs.push_back({checkout / "assets", "assets/ in the checkout"});
+  out.dirs.push_back(
+      {(checkout / ".." / "shared" / "scenes").lexically_normal(), "../shared/scenes beside the checkout"});
+  return out;
+}
+
+std::filesystem::path find_preset_model(const ScenePreset& preset, const AssetSearch& search) {
+  std::string looked;
+  for (const AssetDirectory& d : search.dirs)
+    for (const std::string& candidate : preset.model) {
+      const std::filesystem::path file = d.dir / candidate;
+      std::error_code ec;
+      if (std::filesystem::is_regular_file(file, ec)) return file;
+      looked += "\n  " + printable_text(file.string(), std::string_view::npos) + "  (" + d.origin + ")";
+    }
+  throw InputError("scene " + quoted_text(preset.name) + ": its model was not found; looked for" + looked +
+                   "\nget it: " + preset.where_to_get +
+                   "\nand put it in one of those places, or pass --assets DIR (or set VSGL_ASSETS) to where it is");
+}
+
+}  // namespace vsgl

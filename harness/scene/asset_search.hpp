@@ -1,0 +1,33 @@
+#pragma once
+// Where a scene preset's model file is looked for (DESIGN.md §3.4), in order: every --assets DIR
+// as given, then the directories of VSGL_ASSETS (separated by ':'), then assets/ inside the
+// checkout and ../shared/scenes/ beside it. Models are data: they are read from there and never
+// part of the repository.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace vsgl {
+
+struct ScenePreset;
+
+struct AssetDirectory {
+  std::filesystem::path dir;
+  std::string origin;  // why it is searched, for messages: "--assets", "VSGL_ASSETS", ...
+};
+
+struct AssetSearch {
+  std::vector<AssetDirectory> dirs;  // in search order
+};
+
+// The search path from the command line's directories, the value of VSGL_ASSETS (nullptr or empty:
+// none) and the source checkout.
+AssetSearch make_asset_search(const std::vector<std::filesystem::path>& cli_dirs, const char* env_assets,
+                              const std::filesystem::path& checkout);
+
+// The first of the preset's model candidates that exists as a regular file, over the directories in
+// order. Throws InputError (exit 3, nothing written) when none does: it lists every place looked and
+// says where to get the model.
+std::filesystem::path find_preset_model(const ScenePreset& preset, const AssetSearch& search);
+
+}  // namespace vsgl

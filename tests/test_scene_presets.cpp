@@ -1,0 +1,162 @@
+// Scene presets (harness/scene/scene_preset.hpp), the asset search path, and the capture cache of
+// named scenes: parsing and refusals without a device; the paper scenes recorded at reduced size
+// when their models are beside the checkout (../shared/scenes), else skipped by name.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "gpu_test.hpp"
+#include "harness/capture/capture_files.hpp"
+#include "harness/core/error.hpp"
+#include "harness/report/checkout_scenes.hpp"
+#include "harness/report/tables_run.hpp"
+#include "harness/scene/asset_search.hpp"
+#include "harness/scene/capture_provisioning.hpp"
+#include "harness/scene/scene_preset.hpp"
+#include "test_support.hpp"
+
+namespace vsgl {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kPresetDir = fs::path(VSGL_SOURCE_DIR) / "harness" / "scene" / "presets";
+
+std::string preset_text(const std::string& name, const std::string& extra = "") {
+  return "{\"name\": \"" + name +
+         "\", \"description\": \"d\", \"paper_table\": 0, \"model\": [\"m/room.obj\"], \"where_to_get\": "
+         "\"the test writes it\", \"camera\": {\"eye\": [0, 1, 3], \"look_at\": [0, 0, 0], \"fov_y_deg\": 60}, "
+         "\"light\": {\"position\": [0, 3, 0], \"direction\": [0, -1, 0], \"cone_half_angle_deg\": 40, "
+         "\"intensity_w_per_sr\": 10}, \"sizes\": {\"gbuffer\": [64, 32], \"rsm\": 32}, \"motion\": "
+         "{\"light_circle_m\": 0.1, \"aim_wobble_deg\": 1, \"camera_dolly_m\": 0.1}" +
+         extra + "}";
+}
+
+fs::path write_preset(const fs::path& dir, const std::string& name, const std::string& text) {
+  fs::create_directories(dir);
+  std::ofstream(dir / (name + ".json")) << text;
+  return dir / (name + ".json");
+}
+
+std::string input_error_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no InputError)";
+}
+
+TEST(ScenePresets, TheCommittedPresetsParseAndNameThePaperTables) {
+  EXPECT_EQ(scene_preset_names(kPresetDir), (std::vector<std::string>{"conference-room", "sponza"}));
+  const ScenePreset sponza = read_scene_preset(kPresetDir / "sponza.json");
+  EXPECT_EQ(sponza.paper_table, 1u);
+  EXPECT_EQ(sponza.sizes.gbuffer_width, 1920u);
+  EXPECT_FLOAT_EQ(*sponza.camera.fov_y_deg, 60.0f);
+  const ScenePreset room = read_scene_preset(kPresetDir / "conference-room.json");
+  EXPECT_EQ(room.paper_table, 2u);
+  EXPECT_FLOAT_EQ(*room.light.cone_half_angle_deg, 35.0f);
+}
+
+TEST(ScenePresets, UnknownKeysAndBadValuesAreRefusedNamingTheKey) {
+  test::TempDir tmp("presets");
+  const auto refused = [&](const std::string& extra, const std::string& key) {
+    const fs::path file = write_preset(tmp.path(), "x", preset_text("x", extra));
+    const std::string what = input_error_of([&] { read_scene_preset(file); });
+    EXPECT_NE(what.find(key), std::string::npos) << extra << " -> " << what;
+  };
+  refused(", \"colour\": 1", "colour");
+  const fs::path typo = write_preset(tmp.path(), "y", [] {
+    std::string t = preset_text("y");
+    t.replace(t.find("fov_y_deg"), 9, "fov");
+    return t;
+  }());
+  EXPECT_NE(input_error_of([&] { read_scene_preset(typo); }).find("camera.fov"), std::string::npos);
+  const fs::path misnamed = write_preset(tmp.path(), "z", preset_text("other"));
+  EXPECT_NE(input_error_of([&] { read_scene_preset(misnamed); }).find("stem"), std::string::npos);
+  const fs::path climbing = write_preset(tmp.path(), "w", [] {
+    std::string t = preset_text("w");
+    t.replace(t.find("m/room.obj"), 10, "../room.obj");
+    return t;
+  }());
+  EXPECT_NE(input_error_of([&] { read_scene_preset(climbing); }).find("model[0]"), std::string::npos);
+}
+
+TEST(ScenePresets, AMissingModelListsEveryPlaceLookedAndWhereToGetIt) {
+  test::TempDir tmp("assets");
+  const ScenePreset p = read_scene_preset(write_preset(tmp.path() / "presets", "x", preset_text("x")));
+  const AssetSearch search = make_asset_search({tmp.path() / "a"}, "/nowhere/b::/nowhere/c", tmp.path() / "checkout");
+  ASSERT_EQ(search.dirs.size(), 5u);
+  EXPECT_EQ(search.dirs[1].origin, "VSGL_ASSETS");
+  EXPECT_EQ(search.dirs[4].dir, (tmp.path() / "shared" / "scenes").lexically_normal());
+  const std::string what = input_error_of([&] { find_preset_model(p, search); });
+  for (const char* place : {"/a/m/room.obj", "/nowhere/b/m/room.obj", "/nowhere/c/m/room.obj", "checkout/assets/m",
+                            "shared/scenes/m/room.obj", "the test writes it"})
+    EXPECT_NE(what.find(place), std::string::npos) << place << " in: " << what;
+  // Found in the second directory once it is there.
+  fs::create_directories(tmp.path() / "a" / "m");
+  std::ofstream(tmp.path() / "a" / "m" / "room.obj") << "v 0 0 0\n";
+  EXPECT_EQ(find_preset_model(p, search), tmp.path() / "a" / "m" / "room.obj");
+}
+
+TEST(ScenePresets, UnknownSceneNamesListTheProceduralScenesAndThePresets) {
+  const std::string what = input_error_of([] { find_scene_preset(kPresetDir, "nosuch"); });
+  for (const char* name : {"atrium", "tiny", "sponza", "conference-room"})
+    EXPECT_NE(what.find(name), std::string::npos) << what;
+}
+
+TEST(ScenePresets, ATableUsesItsStandInWhenThePaperModelIsMissing) {
+  test::TempDir tmp("standin");
+  const SceneLibrary nowhere{kPresetDir, AssetSearch{{{tmp.path() / "empty", "--assets"}}}};
+  const TableScene t1 = table_scene(1, nowhere);
+  EXPECT_EQ(t1.scene, "atrium");
+  EXPECT_FALSE(t1.paper);
+  EXPECT_NE(t1.note.find("sponza"), std::string::npos) << t1.note;
+  EXPECT_EQ(table_scene(2, SceneLibrary{}).scene, "conference");
+}
+
+class ScenePresetsTest : public test::GpuTest {};
+
+TEST_F(ScenePresetsTest, AStaleCaptureIsReRecordedAndAFreshOneReused) {
+  test::TempDir tmp("cache");
+  const NamedScene tiny = load_named_scene("tiny", SceneLibrary{});
+  const fs::path dir = tmp.path() / "tiny";
+  const ProvidedCapture first = provide_capture(device(), tiny, RecordSizes{48, 32, 32}, dir);
+  EXPECT_TRUE(first.recorded);
+  EXPECT_TRUE(first.stale_because.empty());
+  const ProvidedCapture again = provide_capture(device(), tiny, RecordSizes{48, 32, 32}, dir);
+  EXPECT_FALSE(again.recorded);
+  const ProvidedCapture resized = provide_capture(device(), tiny, RecordSizes{64, 32, 32}, dir);
+  EXPECT_TRUE(resized.recorded);
+  EXPECT_NE(resized.stale_because.find("64x32"), std::string::npos) << resized.stale_because;
+  EXPECT_EQ(resized.capture.gbuffer.width, 64u);
+}
+
+TEST_F(ScenePresetsTest, BothPaperScenesRecordAtReducedSizeWhenTheirModelsAreHere) {
+  const SceneLibrary library = checkout_scene_library({});
+  for (const char* name : {"sponza", "conference-room"}) {
+    const ScenePreset preset = find_scene_preset(library.preset_dir, name);
+    try {
+      find_preset_model(preset, library.assets);
+    } catch (const InputError&) {
+      GTEST_SKIP() << "the paper scene " << name << " is not beside this checkout (../shared/scenes)";
+    }
+    test::TempDir tmp(name);
+    const NamedScene scene = load_named_scene(name, library);
+    ASSERT_TRUE(scene.source.has_value());
+    EXPECT_EQ(scene.source->preset, name);
+    const RecordedCapture r = record_scene_capture(device(), scene, RecordSizes{240, 136, 64}, 0, 1, tmp.path() / "c");
+    const Capture cap = load_capture(tmp.path() / "c");
+    ASSERT_TRUE(cap.meta.source.has_value());
+    EXPECT_EQ(cap.meta.source->paper_table, preset.paper_table);
+    EXPECT_EQ(paper_table_of(cap.meta), static_cast<int>(preset.paper_table));
+    EXPECT_GT(cap.meta.source->triangles, 200000u) << "the paper's scenes have 262k and 331k triangles";
+    EXPECT_TRUE(cap.rsm.has_pdf);
+    (void)r;
+  }
+}
+
+}  // namespace
+}  // namespace vsgl
