@@ -47,6 +47,7 @@
 #include "harness/generators/fis/fis_generator.hpp"
 #include "harness/generators/generator_registry.hpp"
 #include "harness/timing/run_provenance.hpp"
+#include "harness/report/capture_scene_identity.hpp"
 #include "harness/report/checkout_scenes.hpp"
 #include "harness/report/tables_run.hpp"
 #include "harness/timing/timing_runner.hpp"
@@ -167,6 +168,7 @@ int run(int argc, char** argv) {
       throw UsageError("two captures give the benchmarks " + t->stem + "/...: time captures of one scene separately");
     benchmark::AddCustomContext("vsgl_" + t->stem + "_capture", dir.string());
     benchmark::AddCustomContext("vsgl_" + t->stem + "_capture_hashes", capture_hashes_json(t->capture).dump());
+    benchmark::AddCustomContext("vsgl_" + t->stem + "_scene", to_json(capture_scene_identity(t->capture.meta)).dump());
     if (t->capture.meta.source)
       benchmark::AddCustomContext("vsgl_" + t->stem + "_source",
                                   t->capture.meta.source->file + " " + t->capture.meta.source->content_hash);

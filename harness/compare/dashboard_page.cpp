@@ -43,8 +43,14 @@ std::string short_commit(const std::string& commit) {
   return commit == "unknown" ? "(no commit)" : commit.substr(0, std::min<std::size_t>(commit.size(), 7));
 }
 
-std::string run_title(const BenchRun& r) {
-  std::string s = r.device + ", " + day(r.date);
+// A run's scene of a table: each chart and series says which scene it timed.
+std::string scene_of(const BenchRun& r, int table) {
+  const auto t = r.tables.find(table);
+  return t != r.tables.end() && t->second.scene ? scene_label(*t->second.scene) : "scene not recorded";
+}
+
+std::string run_title(const BenchRun& r, int table) {
+  std::string s = r.device + ", " + day(r.date) + ", " + scene_of(r, table);
   if (r.quick) s += " (quick)";
   if (!r.debug_slow.empty()) s += " (TEST-ONLY debug-slow)";
   return s;
@@ -83,7 +89,7 @@ std::string run_bars(const BenchRun& run, int table, const Generators& generator
         }
     bars.push_back(std::move(bar));
   }
-  return stacked_bar_chart_svg(run_title(run), "run", bars, legend, 460, 330);
+  return stacked_bar_chart_svg(run_title(run, table), "run", bars, legend, 460, 330);
 }
 
 // The paper's chart of one table (the generators the paper timed).
@@ -116,30 +122,34 @@ std::string paper_bars(const nlohmann::json& paper, int table, const Generators&
   return stacked_bar_chart_svg("Paper: " + paper.at("setup").at("gpu").get<std::string>(), "paper", bars, legend, 460, 330);
 }
 
+std::string series_key(const BenchRun& r, int table) { return r.device + " (" + scene_of(r, table) + ")"; }
+
 const char* const kPalette[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf"};
 
+// One series per device and scene: a stand-in's totals never share a line with the paper scene's.
 std::string total_series(const std::vector<const BenchRun*>& runs, int table, const std::string& generator,
-                         const std::map<std::string, std::string>& device_colors) {
+                         const std::map<std::string, std::string>& series_colors) {
   std::vector<std::string> labels;
   for (const BenchRun* r : runs) labels.push_back(day(r->date) + " " + short_commit(r->git_commit));
-  std::map<std::string, Series> by_device;
+  std::map<std::string, Series> by_key;
   std::vector<std::string> order;
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const RunSeries* s = runs[i]->find("table" + std::to_string(table) + "/" + generator + "/total");
     if (s == nullptr) continue;
-    auto [it, fresh] = by_device.try_emplace(runs[i]->device);
+    const std::string key = series_key(*runs[i], table);
+    auto [it, fresh] = by_key.try_emplace(key);
     if (fresh) {
-      it->second.name = runs[i]->device;
-      it->second.color = device_colors.at(runs[i]->device);
-      order.push_back(runs[i]->device);
+      it->second.name = key;
+      it->second.color = series_colors.at(key);
+      order.push_back(key);
     }
-    it->second.points.push_back(SeriesPoint{i, s->median_ms, std::min(s->q1_ms, s->median_ms), std::max(s->q3_ms, s->median_ms),
-                                            runs[i]->device + " " + runs[i]->date + " commit " + runs[i]->git_commit +
-                                                ": median " + fmt(s->median_ms) + " ms (q1 " + fmt(s->q1_ms) + ", q3 " +
-                                                fmt(s->q3_ms) + ")"});
+    it->second.points.push_back(
+        SeriesPoint{i, s->median_ms, std::min(s->q1_ms, s->median_ms), std::max(s->q3_ms, s->median_ms),
+                    key + " " + runs[i]->date + " commit " + runs[i]->git_commit + ": median " + fmt(s->median_ms) +
+                        " ms (q1 " + fmt(s->q1_ms) + ", q3 " + fmt(s->q3_ms) + ")"});
   }
   std::vector<Series> series;
-  for (const auto& d : order) series.push_back(by_device.at(d));
+  for (const auto& k : order) series.push_back(by_key.at(k));
   return time_series_svg(generator + " total", labels, series, 300, 200 + 14 * static_cast<int>(series.size()));
 }
 
@@ -165,10 +175,11 @@ std::vector<BenchRun> find_table_runs(const std::filesystem::path& results_dir) 
 
 std::string dashboard_html(const std::vector<BenchRun>& runs, const nlohmann::json& paper, const std::string& source,
                            const std::vector<DashboardGenerator>& generators) {
-  std::map<std::string, std::string> device_colors;
+  std::map<std::string, std::string> series_colors;
   for (const auto& r : runs)
-    if (!device_colors.contains(r.device))
-      device_colors[r.device] = kPalette[device_colors.size() % (sizeof kPalette / sizeof kPalette[0])];
+    for (const auto& [n, t] : r.tables)
+      if (const std::string key = series_key(r, n); !series_colors.contains(key))
+        series_colors[key] = kPalette[series_colors.size() % (sizeof kPalette / sizeof kPalette[0])];
 
   std::ostringstream os;
   os << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
@@ -193,8 +204,14 @@ std::string dashboard_html(const std::vector<BenchRun>& runs, const nlohmann::js
     std::vector<const BenchRun*> table_runs;
     for (const auto& r : runs)
       if (r.tables.contains(table)) table_runs.push_back(&r);
-    const std::string scene = table == 1 ? "atrium" : "conference";
-    os << "<section class=\"table\" id=\"table" << table << "\">\n<h2>Table " << table << " (" << scene << ")</h2>\n";
+    std::vector<std::string> scenes;
+    for (const BenchRun* r : table_runs)
+      if (const std::string sc = scene_of(*r, table); std::find(scenes.begin(), scenes.end(), sc) == scenes.end())
+        scenes.push_back(sc);
+    std::string scene_list;
+    for (const auto& sc : scenes) scene_list += (scene_list.empty() ? "" : "; ") + sc;
+    os << "<section class=\"table\" id=\"table" << table << "\">\n<h2>Table " << table << " (" << xml_escape(scene_list)
+       << ")</h2>\n";
     os << "<h3>Phases per generator: camera view (dark) then light view (light), median ms</h3>\n<div class=\"charts\">\n";
     if (paper.contains("tables") && paper["tables"].contains(std::to_string(table))) os << paper_bars(paper, table, generators) << "\n";
     for (const BenchRun* r : table_runs) os << run_bars(*r, table, generators) << "\n";
@@ -204,16 +221,18 @@ std::string dashboard_html(const std::vector<BenchRun>& runs, const nlohmann::js
       for (const RunSeries& s : r->series)
         if (s.is_total() && s.view.empty() && std::find(timed.begin(), timed.end(), s.generator) == timed.end())
           timed.push_back(s.generator);
-    for (const auto& g : timed) os << total_series(table_runs, table, g, device_colors) << "\n";
+    for (const auto& g : timed) os << total_series(table_runs, table, g, series_colors) << "\n";
     os << "</div>\n</section>\n";
   }
 
-  os << "<h2>Runs</h2>\n<table class=\"runs\"><tr><th>file</th><th>device</th><th>started (UTC)</th><th>commit</th><th>notes</th></tr>\n";
+  os << "<h2>Runs</h2>\n<table class=\"runs\"><tr><th>file</th><th>device</th><th>scene</th><th>started "
+        "(UTC)</th><th>commit</th><th>notes</th></tr>\n";
   for (const auto& r : runs) {
     std::string notes = r.quick ? "--quick" : "";
     if (!r.debug_slow.empty()) notes += " TEST-ONLY --debug-slow";
-    os << "<tr><td>" << xml_escape(r.path) << "</td><td>" << xml_escape(r.device) << "</td><td>" << xml_escape(r.date)
-       << "</td><td>" << xml_escape(r.git_commit) << (r.git_dirty ? " (dirty)" : "") << "</td><td>" << xml_escape(notes)
+    os << "<tr><td>" << xml_escape(r.path) << "</td><td>" << xml_escape(r.device) << "</td><td>"
+       << xml_escape(scene_of(r, r.tables.begin()->first)) << "</td><td>" << xml_escape(r.date) << "</td><td>"
+       << xml_escape(r.git_commit) << (r.git_dirty ? " (dirty)" : "") << "</td><td>" << xml_escape(notes)
        << "</td></tr>\n";
   }
   os << "</table>\n<p>Paper: " << xml_escape(paper.value("source", std::string("results/paper/paper_tables.json")))

@@ -17,13 +17,21 @@ std::string number_text(double v) {
   return buf;
 }
 
+// The stable name with the scene it was timed on, so a tracker never joins a stand-in's history to
+// the paper scene's: "table1/fis_modified/total [sponza, paper scene]".
+std::string export_name(const BenchRun& run, const RunSeries& s) {
+  const auto t = run.tables.find(s.table);
+  if (t == run.tables.end() || !t->second.scene) return s.name;
+  return s.name + " [" + scene_label(*t->second.scene) + "]";
+}
+
 ojson gab(const BenchRun& run) {
   ojson out = ojson::array();
   for (const RunSeries& s : run.series) {
     const std::string extra = "q1 " + number_text(s.q1_ms) + " ms .. q3 " + number_text(s.q3_ms) + " ms, " +
                               std::to_string(s.samples_ms.size()) + " samples; " + run.device + "; commit " +
                               run.git_commit + (run.debug_slow.empty() ? "" : "; TEST-ONLY --debug-slow run");
-    out.push_back(ojson{{"name", s.name},
+    out.push_back(ojson{{"name", export_name(run, s)},
                         {"unit", "ms"},
                         {"value", s.median_ms},
                         {"range", "± " + number_text(0.5 * (s.q3_ms - s.q1_ms))},
@@ -36,9 +44,9 @@ ojson bmf(const BenchRun& run) {
   constexpr double kNsPerMs = 1e6;
   ojson out = ojson::object();
   for (const RunSeries& s : run.series)
-    out[s.name] = ojson{{"latency", ojson{{"value", s.median_ms * kNsPerMs},
-                                          {"lower_value", s.q1_ms * kNsPerMs},
-                                          {"upper_value", s.q3_ms * kNsPerMs}}}};
+    out[export_name(run, s)] = ojson{{"latency", ojson{{"value", s.median_ms * kNsPerMs},
+                                                       {"lower_value", s.q1_ms * kNsPerMs},
+                                                       {"upper_value", s.q3_ms * kNsPerMs}}}};
   return out;
 }
 

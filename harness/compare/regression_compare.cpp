@@ -66,6 +66,15 @@ RunComparison compare_runs(const BenchRun& base, const BenchRun& fresh, const Co
     const auto it = fresh.tables.find(number);
     if (it == fresh.tables.end()) continue;  // its rows are listed as only in BASE
     const std::string table = "table " + std::to_string(number);
+    // A paper scene and its procedural stand-in are different inputs: no flag makes them one series.
+    if (bt.scene && it->second.scene) {
+      const std::string differs = scene_difference(*bt.scene, *it->second.scene);
+      if (!differs.empty())
+        throw InputError("refusing to compare " + base.path + " with " + fresh.path + ": " + table + ": " + differs +
+                         " (runs of different scenes time different inputs; --allow-mismatch does not apply)");
+    } else if (bt.scene.has_value() != it->second.scene.has_value()) {
+      out.mismatches.push_back(table + ": " + (bt.scene ? "NEW" : "BASE") + " does not say which scene it timed");
+    }
     if (bt.capture_hashes != it->second.capture_hashes)
       out.mismatches.push_back(table + ": the runs used different captures (capture hashes differ)");
     if (bt.workload != it->second.workload)

@@ -76,7 +76,7 @@ BenchRun parse_table_json(const json& doc, const Reader& r) {
   run.format = "table";
   if (!m.table)
     r.fail("/table", "is null: this is the table of a capture that is not one of the paper's (scene '" +
-                         (m.scene ? printable_text(*m.scene) : std::string("?")) +
+                         (m.scene ? printable_text(m.scene->name) : std::string("?")) +
                          "'); compare, export and dashboard key runs by paper table (1, 2) and do not read it yet");
   if (*m.table != 1 && *m.table != 2) r.fail("/table", "is " + std::to_string(*m.table) + ", not 1 or 2");
   const int table = *m.table;
@@ -102,6 +102,7 @@ BenchRun parse_table_json(const json& doc, const Reader& r) {
   json workload = m.config;
   for (const char* key : {"timing", "generators", "kmeans_sum", "sampler"}) workload.erase(key);
   t.workload = unordered(workload);
+  t.scene = m.scene;
   run.tables[table] = t;
 
   const std::string prefix = "table" + std::to_string(table) + "/";
@@ -186,6 +187,9 @@ BenchRun parse_gbench_json(const json& doc, const Reader& r) {
       t.table = s.table;
       t.capture_hashes = unordered(parse_embedded(r, context, "vsgl_table" + std::to_string(s.table) + "_capture_hashes"));
       t.workload = unordered(workload);
+      const std::string scene_key = "vsgl_table" + std::to_string(s.table) + "_scene";
+      if (context.contains(scene_key))
+        t.scene = scene_identity_from_json(parse_embedded(r, context, scene_key), r.where(), "/context/" + scene_key);
       run.tables[s.table] = t;
     }
   }

@@ -23,6 +23,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "harness/formats/scene_identity.hpp"
+
 namespace vsgl {
 
 struct RunSeries {
@@ -45,6 +47,9 @@ struct RunTable {
   int table = 0;
   nlohmann::json capture_hashes;  // {"gbuffer": {...}, "rsm": {...}}
   nlohmann::json workload;        // the config minus the timing protocol and the descriptions
+  // Which scene was timed: a paper scene and its stand-in are different inputs of one table, never
+  // compared, exported or charted as one series. None: a Google Benchmark file that predates it.
+  std::optional<SceneIdentity> scene;
 };
 
 struct BenchRun {

@@ -406,6 +406,29 @@ CaptureSummary read_capture(const Reader& r, const ojson& c) {
   return out;
 }
 
+// Schema 3's object; schema 1-2's plain name, its kind inferred from what else the file says.
+std::optional<SceneIdentity> read_scene(const Reader& r, const ojson& doc, const TableModel& m) {
+  const auto it = doc.find("scene");
+  if (it == doc.end()) return std::nullopt;
+  SceneIdentity s;
+  if (it->is_string()) {
+    if (m.schema_version >= 3) r.fail("/scene", "is a plain name; schema 3 gives an object {name, kind, ...}");
+    s.name = it->get<std::string>();
+    s.name_only = true;
+    if (m.capture.source) {
+      s.kind = SceneKind::kUser;
+      s.model_file = m.capture.source->file;
+      s.content_hash = m.capture.source->content_hash;
+      s.triangles = m.capture.source->triangles;
+    } else {
+      s.kind = m.table ? SceneKind::kStandIn : SceneKind::kProcedural;
+    }
+    return s;
+  }
+  if (!it->is_object()) r.wrong_type(*it, "/scene", "an object (schema 3) or a scene name (schema 1-2)");
+  return scene_identity_from_json(*it, r.where(), "/scene");
+}
+
 }  // namespace
 
 const GeneratorTiming* TableModel::find_generator(const std::string& name) const {
@@ -433,7 +456,7 @@ nlohmann::ordered_json to_json(const TableModel& m) {
   doc["schema_version"] = m.schema_version;
   doc["table"] = m.table ? ojson(*m.table) : ojson(nullptr);
   if (m.title) doc["title"] = *m.title;
-  if (m.scene) doc["scene"] = *m.scene;
+  if (m.scene) doc["scene"] = to_json(*m.scene);
   if (m.unit) doc["unit"] = *m.unit;
   doc["device"] = m.device.fields;
   if (m.driver) doc["driver"] = ojson{{"name", m.driver->name}, {"info", m.driver->info}, {"version", m.driver->version}};
@@ -481,7 +504,6 @@ TableModel table_model_from_json(const nlohmann::ordered_json& doc, const std::s
     m.table = table.get<int>();
   }
   m.title = r.optional_string(doc, "", "title");
-  m.scene = r.optional_string(doc, "", "scene");
   m.unit = r.optional_string(doc, "", "unit");
 
   if (const ojson* device = r.optional_section(doc, "device")) {
@@ -522,6 +544,7 @@ TableModel table_model_from_json(const nlohmann::ordered_json& doc, const std::s
   else m.config = nullptr;
   if (const ojson* capture = r.optional_section(doc, "capture")) m.capture = read_capture(r, *capture);
   else m.capture.fields = nullptr;
+  m.scene = read_scene(r, doc, m);
   if (const ojson* p = r.optional_object(doc, "", "paper"))
     m.paper = PaperSource{r.string(*p, "/paper", "source"), r.string(*p, "/paper", "file"), r.string(*p, "/paper", "gpu")};
   if (const ojson* t = r.optional_object(doc, "", "timing"))

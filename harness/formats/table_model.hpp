@@ -18,9 +18,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "harness/formats/scene_identity.hpp"
+
 namespace vsgl {
 
-inline constexpr int kTableSchemaVersion = 2;
+inline constexpr int kTableSchemaVersion = 3;  // 3: `scene` is an object (SceneIdentity)
 
 // DESIGN.md §9's statistics of one series (ms), with the paper's value beside it.
 struct TimingStats {
@@ -205,7 +207,8 @@ struct RunSummary {
 struct TableModel {
   int schema_version = kTableSchemaVersion;
   std::optional<int> table;  // 1, 2; none: a user's capture (no paper numbers)
-  std::optional<std::string> title, scene, unit;
+  std::optional<std::string> title, unit;
+  std::optional<SceneIdentity> scene;  // a writer always sets it; schema 1-2 files: name_only
   DeviceSummary device;
   std::optional<DriverSummary> driver;
   std::optional<std::string> api_version;

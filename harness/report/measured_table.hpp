@@ -26,6 +26,7 @@ struct ViewExtent {
 struct MeasuredTable {
   int number = 1;  // 0: not a paper table (no paper numbers beside it)
   std::string scene;
+  SceneIdentity identity;  // the scene's kind and model (formats/scene_identity.hpp)
   std::string capture_dir;
   bool recorded_now = false;
   nlohmann::ordered_json capture;  // {"hashes": ..., sizes, ...}

@@ -202,7 +202,7 @@ TableModel table_model(const MeasuredTable& t, const MeasuredTable* other, const
   } else {  // a user's capture: the paper has no numbers for it (every "paper" value is null)
     m.title = "Computation times of VSGL generation (ms) on scene " + t.scene + ", measured as for the tables of Tokuyoshi 2016";
   }
-  m.scene = t.scene;
+  m.scene = t.identity;
   m.unit = "ms";
   m.device.fields = to_json(d);
   m.device.name = d.name;

@@ -57,14 +57,26 @@ const char* view_title(const std::string& view) {
   return view == "camera_view" ? "PDF for BRSM (camera view)" : "PDF (light view)";
 }
 
+const char* scene_label_kind(const SceneIdentity& s) {
+  switch (s.kind) {
+    case SceneKind::kPaper: return "the paper's scene";
+    case SceneKind::kStandIn: return "procedural stand-in for the paper's scene";
+    case SceneKind::kProcedural: return "procedural";
+    case SceneKind::kUser: return "a user's model";
+  }
+  return "?";
+}
+
 // The heading and the line saying where and how the table was measured.
 void write_heading(std::ostringstream& os, const TableModel& t, bool paper) {
-  const std::string scene = t.capture.scene ? *t.capture.scene : t.scene.value_or("?");
+  const std::string scene = t.capture.scene ? *t.capture.scene : t.scene ? t.scene->name : "?";
   if (paper) os << "## Table " << *t.table << ": " << need(t.title, "title") << "\n\n";
   else os << "## Scene " << scene << ": " << need(t.title, "title") << "\n\n";
   const DriverSummary& driver = need(t.driver, "driver");
-  os << "Scene `" << scene << "` on **" << need(t.device.name, "device name") << "** (" << driver.name << " " << driver.version << ", Vulkan "
-     << need(t.api_version, "api_version") << ")";
+  // Schema 3 names the scene's kind: a stand-in's numbers are not the paper scene's.
+  const std::string kind = t.scene && !t.scene->name_only ? std::string(" (") + scene_label_kind(*t.scene) + ")" : "";
+  os << "Scene `" << scene << "`" << kind << " on **" << need(t.device.name, "device name") << "** (" << driver.name
+     << " " << driver.version << ", Vulkan " << need(t.api_version, "api_version") << ")";
   if (paper) os << "; paper: " << need(t.paper, "paper").gpu;
   if (const auto& src = t.capture.source)
     os << "; from " << src->format << " file `" << src->file << "` (" << src->triangles << " triangles, " << src->content_hash << ")";

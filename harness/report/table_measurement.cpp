@@ -9,6 +9,7 @@
 #include "harness/generators/generator_registry.hpp"
 #include "harness/report/run_context.hpp"
 #include "harness/capture/capture_files.hpp"
+#include "harness/report/capture_scene_identity.hpp"
 #include "harness/scene/capture_provisioning.hpp"
 #include "harness/timing/copy_bandwidth.hpp"
 #include "harness/timing/timing_runner.hpp"
@@ -38,6 +39,7 @@ TableMeasurement measure_table(Device& device, const TablesOptions& o, const Tab
   t.recorded_now = provided.recorded;
   const Capture& capture = provided.capture;
   t.scene = capture.meta.scene;
+  t.identity = capture_scene_identity(capture.meta);
   t.capture = ojson{{"hashes", capture_hashes_json(capture)},
                     {"frame", capture.meta.frame},
                     {"recorded_on", capture.meta.device},
