@@ -9,6 +9,7 @@
 #include <fstream>
 #include <string>
 
+#include "cli_runner.hpp"
 #include "gpu_test.hpp"
 #include "input_error.hpp"
 #include "harness/capture/capture_files.hpp"
@@ -342,6 +343,54 @@ TEST_F(ObjRecordTest, RoomRecordsAValidCaptureWithABrsmPdf) {
   EXPECT_EQ(valid, std::size_t{48} * 32) << "the room is closed: every camera texel sees a surface";
   EXPECT_GT(gbuffer_pdf, 0.0);
   EXPECT_GT(rsm_pdf, 0.0) << "the floor lights the walls: the BRSM PDF is not zero";
+  fs::remove_all(dir);
+}
+
+// The same room through the command line, as a user records one: `record --model room.obj` with a
+// camera and a spot inside it, then `verify` on the capture; each broken variant exits 3 naming
+// its file, and writes nothing.
+TEST(ObjRecordCli, HandWrittenRoomRecordsAndVerifiesAndBrokenVariantsWriteNothing) {
+  const fs::path dir = temp_dir("cli");
+  const fs::path room = write_room(dir);
+  const std::string view =
+      " --eye 0,2.4,1.8 --look-at 0,0,-0.4 --light-pos 0.3,2.9,-0.2 --light-dir 0,-1,0 --cone 40 "
+      "--intensity 20 --gbuffer 48x32 --rsm 32";
+  const auto rec = test::run_cli("record --model " + room.string() + view + " --out " + (dir / "cap").string());
+  ASSERT_EQ(rec.exit_code, 0) << rec.output;
+  const auto ver = test::run_cli("verify --capture " + (dir / "cap").string());
+  EXPECT_EQ(ver.exit_code, 0) << ver.output;
+  const Capture cap = load_capture(dir / "cap");
+  ASSERT_TRUE(cap.meta.source);
+  EXPECT_EQ(cap.meta.source->format, "obj");
+  EXPECT_EQ(cap.meta.source->triangles, 12u);
+
+  // A missing .mtl: a warning, grey faces, a capture all the same.
+  const fs::path lonely = write_text(dir / "lonely.obj", room_obj("gone.mtl"));
+  const auto grey = test::run_cli("record --model " + lonely.string() + view + " --out " + (dir / "grey").string());
+  EXPECT_EQ(grey.exit_code, 0) << grey.output;
+  EXPECT_NE(grey.output.find("gone.mtl"), std::string::npos) << grey.output;
+  EXPECT_NE(grey.output.find("WARNING"), std::string::npos) << grey.output;
+
+  write_text(dir / "notex.mtl", "newmtl floor\nmap_Kd nothere.png\n");
+  std::string notex = room_obj("notex.mtl");
+  const struct {
+    std::string file, text, says;
+  } broken[] = {
+      {"index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n", "out of range"},
+      {"nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n", "non-finite"},
+      {"texture.obj", notex, "nothere.png"},
+      {"faceless.obj", "v 0 0 0\nv 1 0 0\nl 1 2\n", "has no faces"},
+  };
+  for (const auto& b : broken) {
+    SCOPED_TRACE(b.file);
+    const fs::path file = write_text(dir / b.file, b.text);
+    const fs::path out = dir / ("out_" + b.file);
+    const auto r = test::run_cli("record --model " + file.string() + view + " --out " + out.string());
+    EXPECT_EQ(r.exit_code, 3) << r.output;
+    EXPECT_NE(r.output.find(b.file), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(b.says), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(out)) << "a refused model writes nothing";
+  }
   fs::remove_all(dir);
 }
 
