@@ -2,23 +2,41 @@
 # Regenerates every committed lavapipe result from freshly recorded captures, in the order of
 # their importance: captures, verify, Tables 1-2, quality (both scenes, with their sequences),
 # the shading pictures, the two compare reports, and the dashboard (+ screenshot when a headless
-# Chromium is there). Each step's wall time goes to OUT/regenerate.log. Long: about 1.5-2 hours
-# on lavapipe on a 2-core machine. Not part of .ci/run.
-# Usage: bash ci/lavapipe-results.sh [STEP...]   steps: record verify tables quality shade compare
-#        dashboard (default: all, in that order). VSGL_BENCH=path/to/vsgl-bench to pick a build.
+# Chromium is there). Each step's wall time goes to OUT/regenerate.log. Long: about 2 hours on
+# lavapipe on a 2-core machine. Not part of .ci/run.
+#
+# The scenes are the paper's own, Crytek Sponza (Table 1) and the Conference room (Table 2), from
+# their models on the asset search path (README "The paper's scenes"); the results go to
+# results/lavapipe. With --stand-ins the procedural stand-ins atrium and conference are used and the
+# results go to results/lavapipe/stand-ins, so both stay side by side.
+# Usage: bash ci/lavapipe-results.sh [--stand-ins] [STEP...]   steps: record verify tables quality
+#        shade compare dashboard (default: all, in that order). VSGL_BENCH=path/to/vsgl-bench to pick
+#        a build; --assets DIR is passed on to record (repeatable).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bench=${VSGL_BENCH:-build/release/bench/vsgl-bench}
 out=results/lavapipe
-caps=captures
-steps=("$@")
+caps=captures/paper
+scenes=(sponza conference-room)
+assets=()
+steps=()
+while [[ $# -gt 0 ]]; do
+  case "$1" in
+    --stand-ins) out=results/lavapipe/stand-ins; caps=captures/stand-ins; scenes=(atrium conference) ;;
+    --assets) assets+=(--assets "$2"); shift ;;
+    *) steps+=("$1") ;;
+  esac
+  shift
+done
 [[ ${#steps[@]} -gt 0 ]] || steps=(record verify tables quality shade compare dashboard)
 [[ -x "$bench" ]] || { echo "ci/lavapipe-results.sh: no $bench (build it: cmake --preset release && cmake --build --preset release)" >&2; exit 2; }
 # Only lavapipe: these are the lavapipe results (a GPU run goes to results/<its slug>).
 export VK_ICD_FILENAMES=${VK_ICD_FILENAMES:-/usr/share/vulkan/icd.d/lvp_icd.x86_64.json}
 mkdir -p "$out"
 log=$out/regenerate.log
-echo "# ci/lavapipe-results.sh at $(git rev-parse --short HEAD) on $(date -u +%FT%TZ): ${steps[*]}" >>"$log"
+echo "# ci/lavapipe-results.sh at $(git rev-parse --short HEAD) on $(date -u +%FT%TZ): ${scenes[*]}: ${steps[*]}" >>"$log"
+# The tables time exactly these captures (Table 1 from the first scene, Table 2 from the second).
+table_captures=(--capture "$caps/${scenes[0]}" --capture "$caps/${scenes[1]}")
 
 step() {  # step NAME COMMAND...: runs it, logs its wall time
   local name=$1 start
@@ -32,32 +50,34 @@ step() {  # step NAME COMMAND...: runs it, logs its wall time
 for s in "${steps[@]}"; do
   case "$s" in
     record)
-      for scene in atrium conference; do
-        step "record $scene" "$bench" record --scene "$scene" --out "$caps/$scene"
+      for scene in "${scenes[@]}"; do
+        step "record $scene" "$bench" record --scene "$scene" "${assets[@]}" --out "$caps/$scene"
       done ;;
     verify)
-      for scene in atrium conference; do
+      for scene in "${scenes[@]}"; do
         # The text report is the console output; exit 1 (a check failed) stops the script.
         step "verify $scene" bash -c "\"$bench\" verify --capture $caps/$scene --json $out/verify_$scene.json > $out/verify_$scene.txt"
       done ;;
     tables)
-      step tables "$bench" tables --captures "$caps" --out "$out" --no-progress ;;
+      step tables "$bench" tables "${table_captures[@]}" --out "$out" --no-progress ;;
     quality)
-      for scene in atrium conference; do
-        step "sequence $scene" "$bench" record --scene "$scene" --frames 32 --gbuffer 480x272 --rsm 256 \
+      for scene in "${scenes[@]}"; do
+        step "sequence $scene" "$bench" record --scene "$scene" "${assets[@]}" --frames 32 --gbuffer 480x272 --rsm 256 \
           --out "$caps/sequences/$scene"
         step "quality $scene" "$bench" quality --capture "$caps/$scene" --sequence "$caps/sequences/$scene" \
           --out "$out/quality"
       done ;;
     shade)
-      step shade "$bench" shade --capture "$caps/atrium" --stride 4 --validate --out "$out" ;;
+      for scene in "${scenes[@]}"; do
+        step "shade $scene" "$bench" shade --capture "$caps/$scene" --stride 4 --validate --out "$out"
+      done ;;
     compare)
       tmp=$(mktemp -d)
       for run in A B; do
-        step "compare run $run" "$bench" tables --captures "$caps" --generators fis_tok15,fis_modified \
+        step "compare run $run" "$bench" tables "${table_captures[@]}" --generators fis_tok15,fis_modified \
           --out "$tmp/$run" --json-only --no-progress
       done
-      step "compare run slowed" "$bench" tables --captures "$caps" --generators fis_tok15,fis_modified \
+      step "compare run slowed" "$bench" tables "${table_captures[@]}" --generators fis_tok15,fis_modified \
         --debug-slow fis_modified --out "$tmp/S" --json-only --no-progress
       step "compare same" "$bench" compare "$tmp/A" "$tmp/B" --out "$out/compare_same_commit.md"
       # The slowed run must come out SLOWER: exit 1 from --fail-on is the expected answer here.
