@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "harness/compare/dashboard_svg.hpp"
+#include "harness/compare/svg_markup.hpp"
 #include "harness/core/error.hpp"
 
 namespace vsgl {
@@ -116,8 +117,6 @@ std::string paper_bars(const nlohmann::json& paper, int table, const Generators&
   return stacked_bar_chart_svg("Paper: " + paper.at("setup").at("gpu").get<std::string>(), "paper", bars, legend, 460, 330);
 }
 
-const char* const kPalette[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf"};
-
 std::string total_series(const std::vector<const BenchRun*>& runs, int table, const std::string& generator,
                          const std::map<std::string, std::string>& device_colors) {
   std::vector<std::string> labels;
@@ -167,8 +166,7 @@ std::string dashboard_html(const std::vector<BenchRun>& runs, const nlohmann::js
                            const std::vector<DashboardGenerator>& generators) {
   std::map<std::string, std::string> device_colors;
   for (const auto& r : runs)
-    if (!device_colors.contains(r.device))
-      device_colors[r.device] = kPalette[device_colors.size() % (sizeof kPalette / sizeof kPalette[0])];
+    if (!device_colors.contains(r.device)) device_colors[r.device] = series_color(device_colors.size());
 
   std::ostringstream os;
   os << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
