@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "harness/compare/dashboard_svg.hpp"
+#include "harness/compare/svg_markup.hpp"
 #include "harness/core/error.hpp"
 
 namespace vsgl {
@@ -124,8 +125,6 @@ std::string paper_bars(const nlohmann::json& paper, int table, const Generators&
 
 std::string series_key(const BenchRun& r, int table) { return r.device + " (" + scene_of(r, table) + ")"; }
 
-const char* const kPalette[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf"};
-
 // One series per device and scene: a stand-in's totals never share a line with the paper scene's.
 std::string total_series(const std::vector<const BenchRun*>& runs, int table, const std::string& generator,
                          const std::map<std::string, std::string>& series_colors) {
@@ -179,7 +178,7 @@ std::string dashboard_html(const std::vector<BenchRun>& runs, const nlohmann::js
   for (const auto& r : runs)
     for (const auto& [n, t] : r.tables)
       if (const std::string key = series_key(r, n); !series_colors.contains(key))
-        series_colors[key] = kPalette[series_colors.size() % (sizeof kPalette / sizeof kPalette[0])];
+        series_colors[key] = series_color(series_colors.size());
 
   std::ostringstream os;
   os << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"

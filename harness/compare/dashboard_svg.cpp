@@ -2,28 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <map>
 #include <sstream>
 #include <stdexcept>
 
+#include "harness/compare/svg_markup.hpp"
+
 namespace vsgl {
 namespace {
-
-std::string num(double v) {  // coordinates
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.1f", v);
-  return buf;
-}
-
-std::string value_text(double ms) {
-  char buf[32];
-  if (ms >= 100) std::snprintf(buf, sizeof buf, "%.0f", ms);
-  else if (ms >= 10) std::snprintf(buf, sizeof buf, "%.1f", ms);
-  else if (ms >= 1) std::snprintf(buf, sizeof buf, "%.2f", ms);
-  else std::snprintf(buf, sizeof buf, "%.3g", ms);
-  return buf;
-}
 
 // A "nice" step (1, 2 or 5 times a power of ten) giving about `ticks` intervals up to `max`.
 double nice_step(double max, int ticks) {
@@ -34,34 +20,7 @@ double nice_step(double max, int ticks) {
   return 10.0 * mag;
 }
 
-std::string text(double x, double y, const std::string& s, const std::string& cls, const std::string& anchor = "middle") {
-  return "<text x=\"" + num(x) + "\" y=\"" + num(y) + "\" class=\"" + cls + "\" text-anchor=\"" + anchor + "\">" +
-         xml_escape(s) + "</text>";
-}
-
-std::string svg_open(const std::string& cls, int width, int height, const std::string& title) {
-  return "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"chart " + cls + "\" width=\"" + std::to_string(width) +
-         "\" height=\"" + std::to_string(height) + "\" viewBox=\"0 0 " + std::to_string(width) + " " +
-         std::to_string(height) + "\" role=\"img\" aria-label=\"" + xml_escape(title) + "\">";
-}
-
 }  // namespace
-
-std::string xml_escape(const std::string& s) {
-  std::string out;
-  out.reserve(s.size());
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 std::string stacked_bar_chart_svg(const std::string& title, const std::string& css_class, const std::vector<StackedBar>& bars,
                                   const std::vector<LegendEntry>& legend, int width, int height) {
@@ -99,13 +58,13 @@ std::string stacked_bar_chart_svg(const std::string& title, const std::string& c
   os << svg_open("bars " + css_class, width, height, title);
   os << "<title>" << xml_escape(title) << "</title>";
   os << "<rect class=\"background\" x=\"0\" y=\"0\" width=\"" << width << "\" height=\"" << height << "\" fill=\"#ffffff\"/>";
-  os << text(w / 2, 16, title, "title");
+  os << svg_text(w / 2, 16, title, "title");
   for (double t = 0; t <= axis_max + step * 1e-6; t += step) {
-    os << "<line class=\"grid\" x1=\"" << num(left) << "\" x2=\"" << num(w - right) << "\" y1=\"" << num(y_of(t))
-       << "\" y2=\"" << num(y_of(t)) << "\" stroke=\"#dddddd\"/>";
-    os << text(left - 4, y_of(t) + 4, value_text(t), "tick", "end");
+    os << "<line class=\"grid\" x1=\"" << svg_number(left) << "\" x2=\"" << svg_number(w - right) << "\" y1=\""
+       << svg_number(y_of(t)) << "\" y2=\"" << svg_number(y_of(t)) << "\" stroke=\"#dddddd\"/>";
+    os << svg_text(left - 4, y_of(t) + 4, ms_label(t), "tick", "end");
   }
-  os << text(12, top + plot_h / 2, "ms", "axis-label");
+  os << svg_text(12, top + plot_h / 2, "ms", "axis-label");
   const double slot = plot_w / static_cast<double>(std::max<std::size_t>(bars.size(), 1));
   const double bar_w = std::min(slot * 0.6, 48.0);
   for (std::size_t i = 0; i < bars.size(); ++i) {
@@ -115,17 +74,17 @@ std::string stacked_bar_chart_svg(const std::string& title, const std::string& c
     os << "<g class=\"bar\" data-label=\"" << xml_escape(b.label) << "\">";
     for (const auto& s : b.segments) {
       const double y0 = y_of(base), y1 = y_of(base + s.value);
-      os << "<rect class=\"segment\" data-phase=\"" << xml_escape(s.key) << "\" x=\"" << num(x) << "\" y=\"" << num(y1)
-         << "\" width=\"" << num(bar_w) << "\" height=\"" << num(std::max(y0 - y1, 0.0)) << "\" fill=\""
-         << colors[s.key]->color << "\"><title>" << xml_escape(s.tooltip) << "</title></rect>";
+      os << "<rect class=\"segment\" data-phase=\"" << xml_escape(s.key) << "\" x=\"" << svg_number(x) << "\" y=\""
+         << svg_number(y1) << "\" width=\"" << svg_number(bar_w) << "\" height=\"" << svg_number(std::max(y0 - y1, 0.0))
+         << "\" fill=\"" << colors[s.key]->color << "\"><title>" << xml_escape(s.tooltip) << "</title></rect>";
       base += s.value;
     }
-    os << text(x + bar_w / 2, y_of(base) - 3, value_text(base), "bar-total");
-    os << text(x + bar_w / 2, top + plot_h + 14, b.label, "bar-label");
+    os << svg_text(x + bar_w / 2, y_of(base) - 3, ms_label(base), "bar-total");
+    os << svg_text(x + bar_w / 2, top + plot_h + 14, b.label, "bar-label");
     os << "</g>";
   }
-  os << "<line class=\"axis\" x1=\"" << num(left) << "\" x2=\"" << num(w - right) << "\" y1=\"" << num(top + plot_h)
-     << "\" y2=\"" << num(top + plot_h) << "\" stroke=\"#333333\"/>";
+  os << "<line class=\"axis\" x1=\"" << svg_number(left) << "\" x2=\"" << svg_number(w - right) << "\" y1=\""
+     << svg_number(top + plot_h) << "\" y2=\"" << svg_number(top + plot_h) << "\" stroke=\"#333333\"/>";
   // Legend below the labels, wrapping.
   double lx = left, ly = top + plot_h + 32;
   for (const auto& e : legend) {
@@ -134,9 +93,9 @@ std::string stacked_bar_chart_svg(const std::string& title, const std::string& c
       lx = left;
       ly += 14;
     }
-    os << "<rect class=\"legend-swatch\" x=\"" << num(lx) << "\" y=\"" << num(ly - 9) << "\" width=\"10\" height=\"10\" fill=\""
-       << e.color << "\"/>";
-    os << text(lx + 14, ly, e.label, "legend", "start");
+    os << "<rect class=\"legend-swatch\" x=\"" << svg_number(lx) << "\" y=\"" << svg_number(ly - 9)
+       << "\" width=\"10\" height=\"10\" fill=\"" << e.color << "\"/>";
+    os << svg_text(lx + 14, ly, e.label, "legend", "start");
     lx += item_w;
   }
   os << "</svg>";
@@ -168,35 +127,37 @@ std::string time_series_svg(const std::string& title, const std::vector<std::str
   os << svg_open("timeseries", width, height, title);
   os << "<title>" << xml_escape(title) << "</title>";
   os << "<rect class=\"background\" x=\"0\" y=\"0\" width=\"" << width << "\" height=\"" << height << "\" fill=\"#ffffff\"/>";
-  os << text(w / 2, 16, title, "title");
+  os << svg_text(w / 2, 16, title, "title");
   for (double d = d0; d <= d1 + 1e-9; d += 1) {
     for (double m : {1.0, 2.0, 5.0}) {
       const double v = m * std::pow(10.0, d);
       if (std::log10(v) > d1 + 1e-9) break;
-      os << "<line class=\"grid\" x1=\"" << num(left) << "\" x2=\"" << num(w - right) << "\" y1=\"" << num(y_of(v))
-         << "\" y2=\"" << num(y_of(v)) << "\" stroke=\"" << (m == 1.0 ? "#cccccc" : "#eeeeee") << "\"/>";
-      if (m == 1.0) os << text(left - 4, y_of(v) + 4, value_text(v), "tick", "end");
+      os << "<line class=\"grid\" x1=\"" << svg_number(left) << "\" x2=\"" << svg_number(w - right) << "\" y1=\""
+         << svg_number(y_of(v)) << "\" y2=\"" << svg_number(y_of(v)) << "\" stroke=\""
+         << (m == 1.0 ? "#cccccc" : "#eeeeee") << "\"/>";
+      if (m == 1.0) os << svg_text(left - 4, y_of(v) + 4, ms_label(v), "tick", "end");
     }
   }
-  os << text(12, top + plot_h / 2, "ms", "axis-label");
-  for (std::size_t i = 0; i < x_labels.size(); ++i)
-    os << text(x_of(i), top + plot_h + 14, x_labels[i], "x-label");
+  os << svg_text(12, top + plot_h / 2, "ms", "axis-label");
+  for (std::size_t i = 0; i < x_labels.size(); ++i) os << svg_text(x_of(i), top + plot_h + 14, x_labels[i], "x-label");
   double ly = top + plot_h + 34;
   for (const auto& s : series) {
     os << "<g class=\"series\" data-series=\"" << xml_escape(s.name) << "\">";
     if (s.points.size() > 1) {
       os << "<polyline class=\"line\" fill=\"none\" stroke=\"" << s.color << "\" stroke-width=\"1.5\" points=\"";
-      for (const auto& p : s.points) os << num(x_of(p.x)) << "," << num(y_of(p.value)) << " ";
+      for (const auto& p : s.points) os << svg_number(x_of(p.x)) << "," << svg_number(y_of(p.value)) << " ";
       os << "\"/>";
     }
     for (const auto& p : s.points) {
-      os << "<line class=\"whisker\" x1=\"" << num(x_of(p.x)) << "\" x2=\"" << num(x_of(p.x)) << "\" y1=\"" << num(y_of(p.low))
-         << "\" y2=\"" << num(y_of(p.high)) << "\" stroke=\"" << s.color << "\"/>";
-      os << "<circle class=\"point\" cx=\"" << num(x_of(p.x)) << "\" cy=\"" << num(y_of(p.value)) << "\" r=\"3.5\" fill=\""
-         << s.color << "\"><title>" << xml_escape(p.tooltip) << "</title></circle>";
+      os << "<line class=\"whisker\" x1=\"" << svg_number(x_of(p.x)) << "\" x2=\"" << svg_number(x_of(p.x))
+         << "\" y1=\"" << svg_number(y_of(p.low)) << "\" y2=\"" << svg_number(y_of(p.high)) << "\" stroke=\"" << s.color
+         << "\"/>";
+      os << "<circle class=\"point\" cx=\"" << svg_number(x_of(p.x)) << "\" cy=\"" << svg_number(y_of(p.value))
+         << "\" r=\"3.5\" fill=\"" << s.color << "\"><title>" << xml_escape(p.tooltip) << "</title></circle>";
     }
-    os << "<rect class=\"legend-swatch\" x=\"" << num(left) << "\" y=\"" << num(ly - 9) << "\" width=\"10\" height=\"10\" fill=\""
-       << s.color << "\"/>" << text(left + 14, ly, s.name, "legend", "start");
+    os << "<rect class=\"legend-swatch\" x=\"" << svg_number(left) << "\" y=\"" << svg_number(ly - 9)
+       << "\" width=\"10\" height=\"10\" fill=\"" << s.color << "\"/>"
+       << svg_text(left + 14, ly, s.name, "legend", "start");
     ly += 14;
     os << "</g>";
   }

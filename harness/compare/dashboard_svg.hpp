@@ -8,9 +8,6 @@
 
 namespace vsgl {
 
-// Text safe inside XML character data and attribute values.
-std::string xml_escape(const std::string& text);
-
 struct BarSegment {
   std::string key;      // legend key (a phase)
   double value = 0;     // ms, >= 0

@@ -1,0 +1,170 @@
+#include "harness/core/growth_fit.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <random>
+#include <set>
+#include <tuple>
+#include <utility>
+
+#include "harness/core/error.hpp"
+#include "harness/core/statistics.hpp"
+#include "harness/core/text_format.hpp"
+
+namespace vsgl {
+namespace {
+
+// A uniform index below n from the 64-bit engine by rejection (no modulo bias). Not
+// std::uniform_int_distribution: its algorithm differs between standard libraries, and the
+// interval must be the same bytes everywhere; std::mt19937_64's sequence is fixed by the standard.
+std::size_t uniform_index(std::mt19937_64& rng, std::size_t n) {
+  const std::uint64_t bound = n;
+  const std::uint64_t threshold = (0 - bound) % bound;  // 2^64 mod n
+  for (;;) {
+    const std::uint64_t r = rng();
+    if (r >= threshold) return static_cast<std::size_t>(r % bound);
+  }
+}
+
+double median_of(std::vector<double>& values) {
+  std::sort(values.begin(), values.end());
+  return quantile_sorted(values, 0.5);
+}
+
+// Least-squares slope and intercept of v against u (u not all equal, checked by the caller).
+std::pair<double, double> line_fit(const std::vector<double>& u, const std::vector<double>& v) {
+  const double n = static_cast<double>(u.size());
+  double mu = 0, mv = 0;
+  for (std::size_t i = 0; i < u.size(); ++i) mu += u[i], mv += v[i];
+  mu /= n;
+  mv /= n;
+  double suv = 0, suu = 0;
+  for (std::size_t i = 0; i < u.size(); ++i) {
+    suv += (u[i] - mu) * (v[i] - mv);
+    suu += (u[i] - mu) * (u[i] - mu);
+  }
+  const double slope = suv / suu;
+  return {slope, mv - slope * mu};
+}
+
+// Two decimals, never "-0.00".
+std::string fixed2(double v) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.2f", v);
+  std::string s = buf;
+  if (s == "-0.00") s = "0.00";
+  return s;
+}
+
+}  // namespace
+
+double GrowthFit::predicted_ms(double x) const { return std::exp(intercept + slope * std::log(x)); }
+
+GrowthFit fit_growth(const std::vector<GrowthPoint>& points, const GrowthFitOptions& options) {
+  const std::string& what = options.subject;
+  if (options.resamples < 1 || options.resamples > kMaxResamples)
+    throw InputError(what + ": the bootstrap takes 1 to " + std::to_string(kMaxResamples) + " resamples (got " +
+                     std::to_string(options.resamples) + ")");
+  if (!(options.confidence > 0 && options.confidence < 1))
+    throw InputError(what + ": the confidence must lie strictly between 0 and 1 (got " +
+                     number_text(options.confidence) + ")");
+  std::set<double> distinct;
+  std::size_t min_rounds = SIZE_MAX;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const GrowthPoint& p = points[i];
+    const std::string at = what + ": point " + std::to_string(i + 1) + " (x = " + number_text(p.x) + ")";
+    if (!std::isfinite(p.x) || !(p.x > 0))
+      throw InputError(at + ": the parameter must be a finite positive number for a log-log fit");
+    if (p.samples_ms.size() < 2)
+      throw InputError(at + ": needs at least 2 rounds (got " + std::to_string(p.samples_ms.size()) + ")");
+    for (std::size_t r = 0; r < p.samples_ms.size(); ++r) {
+      const double s = p.samples_ms[r];
+      if (!std::isfinite(s) || !(s > 0))
+        throw InputError(at + ": round " + std::to_string(r + 1) + " is not a positive time (" + number_text(s) +
+                         " ms)");
+    }
+    distinct.insert(p.x);
+    min_rounds = std::min(min_rounds, p.samples_ms.size());
+  }
+  if (distinct.size() < 2)
+    throw InputError(what + ": a slope needs at least 2 distinct parameter values (got " +
+                     std::to_string(distinct.size()) + ")");
+
+  std::vector<double> log_x(points.size()), log_median(points.size());
+  GrowthFit fit;
+  fit.medians_ms.resize(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    std::vector<double> copy = points[i].samples_ms;
+    fit.medians_ms[i] = median_of(copy);
+    log_x[i] = std::log(points[i].x);
+    log_median[i] = std::log(fit.medians_ms[i]);
+  }
+  std::tie(fit.slope, fit.intercept) = line_fit(log_x, log_median);
+
+  // Bootstrap: every replicate draws each point's rounds anew, in point order, so the sequence
+  // of draws (and the interval) depends only on the input and the seed.
+  std::mt19937_64 rng(options.seed);
+  std::vector<double> slopes(options.resamples), draw, log_boot(points.size());
+  for (std::size_t b = 0; b < options.resamples; ++b) {
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const std::vector<double>& s = points[i].samples_ms;
+      draw.resize(s.size());
+      for (double& d : draw) d = s[uniform_index(rng, s.size())];
+      log_boot[i] = std::log(median_of(draw));
+    }
+    slopes[b] = line_fit(log_x, log_boot).first;
+  }
+  std::sort(slopes.begin(), slopes.end());
+  const double tail = (1 - options.confidence) / 2;
+  fit.low = quantile_sorted(slopes, tail);
+  fit.high = quantile_sorted(slopes, 1 - tail);
+  fit.confidence = options.confidence;
+  fit.points = points.size();
+  fit.distinct_x = distinct.size();
+  fit.resamples = options.resamples;
+  fit.min_rounds = min_rounds;
+  fit.seed = options.seed;
+  return fit;
+}
+
+std::string growth_text(const GrowthFit& fit, const std::string& axis_symbol) {
+  return "cost \u221d " + axis_symbol + "^" + fixed2(fit.slope) + " [" + fixed2(fit.low) + ", " + fixed2(fit.high) +
+         "]";
+}
+
+const char* growth_verdict_name(GrowthVerdict verdict) {
+  switch (verdict) {
+    case GrowthVerdict::kConsistent: return "consistent";
+    case GrowthVerdict::kFaster: return "faster";
+    case GrowthVerdict::kSlower: return "slower";
+  }
+  return "?";
+}
+
+GrowthJudgement judge_growth(const GrowthFit& fit, const GrowthExpectation& expected, const std::string& axis_symbol) {
+  if (!std::isfinite(expected.slope) || !std::isfinite(expected.tolerance) || expected.tolerance < 0)
+    throw InputError("expected growth: the slope must be finite and the tolerance finite and non-negative (got " +
+                     number_text(expected.slope) + " \u00b1 " + number_text(expected.tolerance) + ")");
+  const double band_low = expected.slope - expected.tolerance, band_high = expected.slope + expected.tolerance;
+  GrowthJudgement j;
+  if (fit.low > band_high) j.verdict = GrowthVerdict::kFaster;
+  else if (fit.high < band_low) j.verdict = GrowthVerdict::kSlower;
+  std::string expectation = axis_symbol + "^" + fixed2(expected.slope);
+  if (expected.tolerance > 0) expectation += " \u00b1 " + fixed2(expected.tolerance);
+  if (!expected.why.empty()) expectation += " (" + expected.why + ")";
+  const std::string fitted = growth_text(fit, axis_symbol);
+  switch (j.verdict) {
+    case GrowthVerdict::kConsistent: j.text = fitted + " is consistent with the expected " + expectation; break;
+    case GrowthVerdict::kFaster:
+      j.text = fitted + " grows faster than the expected " + expectation + ": the interval excludes it";
+      break;
+    case GrowthVerdict::kSlower:
+      j.text = fitted + " grows slower than the expected " + expectation + ": the interval excludes it";
+      break;
+  }
+  return j;
+}
+
+}  // namespace vsgl
