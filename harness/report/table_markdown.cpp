@@ -203,8 +203,8 @@ void write_table3(std::ostringstream& os, const TableModel& t, const std::vector
   const bool iterations =
       std::any_of(rows.begin(), rows.end(), [](const Table3Row& r) { return !r.dispatch_iterations.empty(); });
   std::vector<std::string> head{"generator", "compute shaders", "paper", "dispatch calls (camera / light)"};
-  if (iterations) head.push_back("iterations × per iteration + rest");
   head.push_back("paper");
+  if (iterations) head.push_back("iterations × per iteration + rest");
   if (split) head.insert(head.end(), {"shader lines", "host lines"});
   head.insert(head.end(), {"lines of code", "paper"});
   row(os, head);
@@ -215,8 +215,8 @@ void write_table3(std::ostringstream& os, const TableModel& t, const std::vector
     std::vector<std::string> cells{
         label_of(t, r.generator), std::to_string(static_cast<int>(r.shaders.measured)), paper_cell(r.shaders.paper, 0),
         std::to_string(r.dispatch_camera_view) + " / " + std::to_string(r.dispatch_light_view)};
-    if (iterations) cells.push_back(iteration_cell(r));
     cells.push_back(paper_cell(r.dispatch_paper, 0));
+    if (iterations) cells.push_back(iteration_cell(r));
     if (split) cells.insert(cells.end(), {optional_count(r.shader_lines), optional_count(r.host_lines)});
     cells.insert(cells.end(), {std::to_string(r.lines_of_code), paper_cell(r.lines_of_code_paper, 0)});
     row(os, cells);
