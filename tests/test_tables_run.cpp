@@ -88,10 +88,28 @@ TEST_F(TablesRunTest, TinyRunProducesCompleteFiniteTablesThatMatchTheSchema) {
           EXPECT_TRUE(st["paper_ms"].is_number()) << "the paper's value beside " << g << " " << view << " " << phase;
         }
         EXPECT_EQ(v["dispatch_calls"], doc["table3"][g]["dispatch_calls"][view]);
+        // k-means: iterations x per iteration + the rest = the dispatches of the view.
+        const auto& calls = doc["table3"][g]["dispatch_calls"];
+        EXPECT_EQ(calls.contains("iterations"), g.rfind("kmeans", 0) == 0);
+        if (calls.contains("iterations")) {
+          const auto& it = calls["iterations"][view];
+          EXPECT_EQ(it["iterations"].get<int>() * it["per_iteration"].get<int>() + it["outside"].get<int>(),
+                    calls[view].get<int>());
+        }
       }
       EXPECT_TRUE(doc["generators"][g]["total"]["paper_ms"].is_number());
-      EXPECT_GT(doc["table3"][g]["lines_of_code"]["measured"].get<int>(), 0);
+      const auto& loc = doc["table3"][g]["lines_of_code"];
+      EXPECT_GT(loc["measured"].get<int>(), 0);
+      EXPECT_EQ(loc["shader_lines"].get<int>() + loc["host_lines"].get<int>(), loc["measured"].get<int>());
     }
+    // Table 3's counting rule and the lines in which the FIS variants differ (the paper: 10).
+    ASSERT_TRUE(doc.contains("table3_counting"));
+    EXPECT_FALSE(doc["table3_counting"]["rule"].get<std::string>().empty());
+    const auto& diff = doc["table3_counting"]["difference"];
+    EXPECT_GT(diff["differing"].get<int>(), 0);
+    EXPECT_EQ(diff["net"].get<int>(), doc["table3"]["fis_modified"]["lines_of_code"]["measured"].get<int>() -
+                                          doc["table3"]["fis_tok15"]["lines_of_code"]["measured"].get<int>());
+    EXPECT_EQ(diff["paper"], 10);
     // Both tables ran: every ratio the paper argues with is present.
     EXPECT_TRUE(doc["ratios"].contains("modified_minus_tok15_us"));
     EXPECT_TRUE(doc["ratios"]["kmeans_over_modified"].contains("kmeans_3d"));
@@ -208,6 +226,8 @@ TEST_F(TablesRunTest, UserCapturesGetTheirOwnTables) {
   const std::string& md = out.markdown[0];
   EXPECT_EQ(md.substr(0, md.find("### Table 3")).find("paper |"), std::string::npos) << md;
   EXPECT_NE(out.markdown[0].find("## Scene tiny"), std::string::npos);
+  EXPECT_NE(md.find("lines differ"), std::string::npos) << md;  // the FIS variants' diff and its rule
+  EXPECT_NE(md.find("Counted: "), std::string::npos) << md;
 
   o.captures = {root / "tiny", root / "tiny"};
   try {

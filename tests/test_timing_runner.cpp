@@ -16,6 +16,7 @@
 #include "harness/core/error.hpp"
 #include "harness/generators/fis/fis_generator.hpp"
 #include "harness/generators/generator_registry.hpp"
+#include "harness/report/measured_table.hpp"
 #include "harness/scene/scene.hpp"
 #include "harness/vk/buffer.hpp"
 #include "harness/vk/command_stream.hpp"
@@ -170,6 +171,49 @@ TEST_F(TimingRunnerTest, RoundRobinSamplesEveryPhaseAndCountsDispatchesTruly) {
       }
       EXPECT_DOUBLE_EQ(c.total_ms[rep], sum);
     }
+    // Table 3's split of the dispatches: k-means' Lloyd iterations, nothing for FIS.
+    const IterationDispatches d = iteration_dispatches(c);
+    EXPECT_EQ(d.iterations * d.per_iteration + d.outside, counted_dispatches[i]);
+    if (names[i] == "kmeans_2d") {
+      EXPECT_EQ(d.iterations, cfg.kmeans_iterations);
+      EXPECT_GT(d.per_iteration, 0u);
+      EXPECT_GT(d.outside, 0u);
+    } else {
+      EXPECT_EQ(d.iterations, 0u);
+    }
+  }
+}
+
+// The dispatches per iteration that Table 3 reports are what one more Lloyd iteration adds to the
+// vkCmdDispatch calls counted by the wrapper.
+TEST_F(TimingRunnerTest, KmeansDispatchesPerIterationAreWhatAnIterationAdds) {
+  const Capture capture = tiny_capture();
+  const DeviceView camera = upload_view(device(), capture, ViewKind::kCamera);
+  TimingOptions options;
+  TimingRunner runner(device(), options);
+  std::vector<std::unique_ptr<VsglGenerator>> gens;
+  std::vector<uint32_t> counted;
+  for (uint32_t iterations : {0u, 1u, 3u}) {
+    GeneratorConfig cfg;
+    cfg.vsgl_count = 32;
+    cfg.kmeans_iterations = iterations;
+    gens.push_back(make_generator("kmeans_2d", device(), camera, cfg));
+    g_dispatches = 0;
+    g_counting = true;
+    runner.add(TimingCase{"kmeans_2d", "camera_view", gens.back().get()});
+    g_counting = false;
+    counted.push_back(g_dispatches);
+    EXPECT_EQ(runner.iteration_dispatches(counted.size() - 1).size(), iterations);
+  }
+  ASSERT_EQ(runner.iteration_dispatches(1).size(), 1u);
+  const uint32_t per_iteration = runner.iteration_dispatches(1).front();
+  EXPECT_EQ(counted[1] - counted[0], per_iteration);
+  EXPECT_EQ(counted[2] - counted[0], 3 * per_iteration);
+  for (std::size_t i = 0; i < 3; ++i) {
+    CaseTiming c;
+    c.dispatch_count = runner.dispatch_count(i);
+    c.iteration_dispatches = runner.iteration_dispatches(i);
+    EXPECT_EQ(iteration_dispatches(c).outside, counted[0]);  // the same work around the iterations
   }
 }
 

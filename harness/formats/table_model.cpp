@@ -123,13 +123,41 @@ ojson table3_json(const std::vector<Table3Row>& rows) {
   ojson out = ojson::object();
   for (const Table3Row& r : rows) {
     ojson files = ojson::array();
-    for (const auto& f : r.files) files.push_back(ojson{{"path", f.path}, {"lines", f.lines}});
+    for (const auto& f : r.files) {
+      ojson fj{{"path", f.path}, {"lines", f.lines}};
+      if (f.kind) fj["kind"] = *f.kind;
+      files.push_back(fj);
+    }
+    ojson dispatch{{"camera_view", r.dispatch_camera_view},
+                   {"light_view", r.dispatch_light_view},
+                   {"paper", number_or_null(r.dispatch_paper)}};
+    if (!r.dispatch_iterations.empty()) {
+      ojson it = ojson::object();
+      for (const auto& [view, d] : r.dispatch_iterations)
+        it[view] = ojson{{"iterations", d.iterations}, {"per_iteration", d.per_iteration}, {"outside", d.outside}};
+      dispatch["iterations"] = it;
+    }
+    ojson lines{{"measured", r.lines_of_code}, {"paper", number_or_null(r.lines_of_code_paper)}};
+    if (r.shader_lines) lines["shader_lines"] = *r.shader_lines;
+    if (r.host_lines) lines["host_lines"] = *r.host_lines;
+    lines["files"] = files;
     out[r.generator] =
-        ojson{{"shaders", measured_paper_json(r.shaders)},
-              {"dispatch_calls", ojson{{"camera_view", r.dispatch_camera_view},
-                                       {"light_view", r.dispatch_light_view},
-                                       {"paper", number_or_null(r.dispatch_paper)}}},
-              {"lines_of_code", ojson{{"measured", r.lines_of_code}, {"paper", number_or_null(r.lines_of_code_paper)}, {"files", files}}}};
+        ojson{{"shaders", measured_paper_json(r.shaders)}, {"dispatch_calls", dispatch}, {"lines_of_code", lines}};
+  }
+  return out;
+}
+
+ojson table3_counting_json(const Table3Counting& c) {
+  ojson out{{"rule", c.rule}, {"difference_rule", c.difference_rule}};
+  if (c.difference) {
+    const Table3Difference& d = *c.difference;
+    out["difference"] = ojson{{"from", d.from},
+                              {"to", d.to},
+                              {"removed", d.removed},
+                              {"added", d.added},
+                              {"differing", d.differing},
+                              {"net", d.net},
+                              {"paper", number_or_null(d.paper)}};
   }
   return out;
 }
@@ -356,16 +384,27 @@ std::vector<Table3Row> read_table3(const Reader& r, const ojson& o, const std::s
     row.dispatch_camera_view = r.count32(d, gp + "/dispatch_calls", "camera_view");
     row.dispatch_light_view = r.count32(d, gp + "/dispatch_calls", "light_view");
     row.dispatch_paper = r.optional_number(d, gp + "/dispatch_calls", "paper");
+    if (const ojson* it = r.optional_object(d, gp + "/dispatch_calls", "iterations"))
+      for (const auto& [view, vj] : it->items()) {
+        const std::string ip = gp + "/dispatch_calls/iterations/" + view;
+        if (!vj.is_object()) r.wrong_type(vj, ip, "an object");
+        row.dispatch_iterations[view] = {r.count32(vj, ip, "iterations"), r.count32(vj, ip, "per_iteration"),
+                                         r.count32(vj, ip, "outside")};
+      }
     const ojson& l = r.object(v, gp, "lines_of_code");
     const std::string lp = gp + "/lines_of_code";
     row.lines_of_code = r.uint64(l, lp, "measured");
     row.lines_of_code_paper = r.optional_number(l, lp, "paper");
+    row.shader_lines = r.optional_uint64(l, lp, "shader_lines");
+    row.host_lines = r.optional_uint64(l, lp, "host_lines");
     const ojson& files = r.member(l, lp, "files");
     if (!files.is_array()) r.wrong_type(files, lp + "/files", "an array");
     for (std::size_t i = 0; i < files.size(); ++i) {
       const std::string fp = lp + "/files/" + std::to_string(i);
       if (!files[i].is_object()) r.wrong_type(files[i], fp, "an object");
-      row.files.push_back({r.string(files[i], fp, "path"), r.uint64(files[i], fp, "lines")});
+      std::optional<std::string> kind;
+      kind = r.optional_string(files[i], fp, "kind");
+      row.files.push_back({r.string(files[i], fp, "path"), r.uint64(files[i], fp, "lines"), kind});
     }
     rows.push_back(std::move(row));
   }
@@ -483,6 +522,7 @@ nlohmann::ordered_json to_json(const TableModel& m) {
   if (m.ratios) doc["ratios"] = ratios_json(*m.ratios);
   if (m.bandwidth) doc["bandwidth"] = bandwidth_json(*m.bandwidth);
   if (m.table3) doc["table3"] = table3_json(*m.table3);
+  if (m.table3_counting) doc["table3_counting"] = table3_counting_json(*m.table3_counting);
   if (m.claims) {
     ojson claims = ojson::array();
     for (const TableClaim& c : *m.claims) claims.push_back(to_json(c));
@@ -558,6 +598,20 @@ TableModel table_model_from_json(const nlohmann::ordered_json& doc, const std::s
   if (const ojson* ratios = r.optional_object(doc, "", "ratios")) m.ratios = read_ratios(r, *ratios, "/ratios");
   if (const ojson* b = r.optional_object(doc, "", "bandwidth")) m.bandwidth = read_bandwidth(r, *b, "/bandwidth");
   if (const ojson* t3 = r.optional_object(doc, "", "table3")) m.table3 = read_table3(r, *t3, "/table3");
+  if (const ojson* c = r.optional_object(doc, "", "table3_counting")) {
+    Table3Counting counting{
+        r.string(*c, "/table3_counting", "rule"), r.string(*c, "/table3_counting", "difference_rule"), {}};
+    if (const ojson* d = r.optional_object(*c, "/table3_counting", "difference")) {
+      const std::string dp = "/table3_counting/difference";
+      const ojson& net = r.member(*d, dp, "net");
+      if (!net.is_number_integer()) r.wrong_type(net, dp + "/net", "an integer");
+      counting.difference = Table3Difference{r.string(*d, dp, "from"),          r.string(*d, dp, "to"),
+                                             r.uint64(*d, dp, "removed"),       r.uint64(*d, dp, "added"),
+                                             r.uint64(*d, dp, "differing"),     net.get<int64_t>(),
+                                             r.optional_number(*d, dp, "paper")};
+    }
+    m.table3_counting = std::move(counting);
+  }
   if (doc.contains("claims")) m.claims = read_claims(r, doc["claims"]);
   return m;
 }

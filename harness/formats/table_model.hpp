@@ -134,6 +134,15 @@ struct TableBandwidth {
 struct SourceFileLines {
   std::string path;
   uint64_t lines = 0;
+  std::optional<std::string> kind;  // "host" | "shader" (absent in older files)
+};
+
+// The dispatches of one view's recording that a repeated block (k-means' Lloyd iterations)
+// recorded: iterations * per_iteration + outside = the view's dispatch calls.
+struct IterationDispatches {
+  uint32_t iterations = 0;
+  uint32_t per_iteration = 0;
+  uint32_t outside = 0;
 };
 
 struct Table3Row {
@@ -142,9 +151,26 @@ struct Table3Row {
   uint32_t dispatch_camera_view = 0;
   uint32_t dispatch_light_view = 0;
   std::optional<double> dispatch_paper;
+  std::map<std::string, IterationDispatches> dispatch_iterations;  // per view; empty: none (FIS, older files)
   uint64_t lines_of_code = 0;
   std::optional<double> lines_of_code_paper;
+  std::optional<uint64_t> shader_lines, host_lines;  // absent in older files
   std::vector<SourceFileLines> files;
+};
+
+// The lines in which two generators' counted sources differ (DESIGN.md §10).
+struct Table3Difference {
+  std::string from, to;  // "fis_tok15", "fis_modified"
+  uint64_t removed = 0, added = 0, differing = 0;
+  int64_t net = 0;  // lines_of_code(to) - lines_of_code(from)
+  std::optional<double> paper;
+};
+
+// How Table 3 was counted, and the FIS variants' difference (absent in older files).
+struct Table3Counting {
+  std::string rule;
+  std::string difference_rule;
+  std::optional<Table3Difference> difference;
 };
 
 // One of the paper's claims checked on this run (report/table_claims.hpp).
@@ -224,6 +250,7 @@ struct TableModel {
   std::optional<TableRatios> ratios;
   std::optional<TableBandwidth> bandwidth;
   std::optional<std::vector<Table3Row>> table3;
+  std::optional<Table3Counting> table3_counting;
   std::optional<std::vector<TableClaim>> claims;
 
   const GeneratorTiming* find_generator(const std::string& name) const;

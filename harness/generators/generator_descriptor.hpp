@@ -42,11 +42,12 @@ struct GeneratorDescriptor {
   GeneratorFamily family = GeneratorFamily::kFis;
   std::vector<std::string> phases;  // in execution order; equal to VsglGenerator::phases() (tested)
   GeneratorFactory make = nullptr;  // throws InputError for N = 0, N > samplable texels, K <= 0
-  // The host class and the compute kernels it dispatches (one pipeline each); the GLSL they
-  // #include is added by count_generator_lines(). Shared infrastructure counts for no generator.
+  // The host class and the compute kernels it dispatches (one pipeline each), and which marked
+  // regions of those files its config counts (source_lines.hpp); the GLSL they #include is added
+  // by count_generator_lines(). Shared infrastructure counts for no generator.
   SourceSet sources;
   // The sources the generator is built from under a given config (FIS: its pyramid path and
-  // mipmapping strategy, DESIGN.md §6.1a); null: always `sources`. `sources` is the default config's.
+  // mipmapping strategy, DESIGN.md §6.1a, §10); null: always `sources`. `sources` is the default config's.
   SourceSet (*sources_for)(const GeneratorConfig& config) = nullptr;
 };
 

@@ -27,6 +27,22 @@ const CaseTiming& need_case(const MeasuredTable& t, const std::string& generator
   return *c;
 }
 
+IterationDispatches iteration_dispatches(const CaseTiming& c) {
+  IterationDispatches out;
+  out.iterations = static_cast<uint32_t>(c.iteration_dispatches.size());
+  uint32_t inside = 0;
+  for (uint32_t n : c.iteration_dispatches) {
+    if (n != c.iteration_dispatches.front())
+      throw std::logic_error(c.generator + " " + c.view + ": its iterations recorded different dispatch counts");
+    inside += n;
+  }
+  if (inside > c.dispatch_count)
+    throw std::logic_error(c.generator + " " + c.view + ": more dispatches in iterations than in all");
+  out.per_iteration = out.iterations > 0 ? c.iteration_dispatches.front() : 0;
+  out.outside = c.dispatch_count - inside;
+  return out;
+}
+
 std::vector<double> generator_totals(const MeasuredTable& t, const std::string& g) {
   return add_samples(need_case(t, g, "camera_view").total_ms, need_case(t, g, "light_view").total_ms);
 }

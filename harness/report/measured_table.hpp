@@ -53,6 +53,9 @@ inline const char* const kTableViews[] = {"camera_view", "light_view"};
 bool has_generator(const MeasuredTable& t, const std::string& g);
 // Throws std::logic_error when the table has no timing of the case.
 const CaseTiming& need_case(const MeasuredTable& t, const std::string& generator, const std::string& view);
+// The case's dispatches split into its iterations (CommandStream::begin_iteration) and the rest.
+// Throws std::logic_error when the iterations recorded different counts (one number could not say it).
+IterationDispatches iteration_dispatches(const CaseTiming& c);
 // Per-round sums of the camera- and light-view totals.
 std::vector<double> generator_totals(const MeasuredTable& t, const std::string& g);
 double median_total(const MeasuredTable& t, const std::string& g);

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "harness/core/error.hpp"
+#include "harness/core/line_diff.hpp"
 #include "harness/core/statistics.hpp"
 #include "harness/generators/fis/fis_traffic.hpp"
 #include "harness/generators/generator_registry.hpp"
@@ -180,12 +181,39 @@ std::vector<Table3Row> table3_rows(const MeasuredTable& t, const ReportContext& 
     row.dispatch_camera_view = need_case(t, g, "camera_view").dispatch_count;
     row.dispatch_light_view = need_case(t, g, "light_view").dispatch_count;
     row.dispatch_paper = paper_number(ctx.paper, {"tables", "3", g, "dispatch_calls"});
+    if (generator_descriptor(g).family == GeneratorFamily::kKmeans)
+      for (const char* view : kTableViews) row.dispatch_iterations[view] = iteration_dispatches(need_case(t, g, view));
     row.lines_of_code = lines.total;
     row.lines_of_code_paper = paper_number(ctx.paper, {"tables", "3", g, "lines_of_code"});
-    for (const auto& f : lines.files) row.files.push_back({f.path, f.lines});
+    row.shader_lines = lines.shader;
+    row.host_lines = lines.host;
+    for (const auto& f : lines.files) row.files.push_back({f.path, f.lines, f.shader ? "shader" : "host"});
     rows.push_back(std::move(row));
   }
   return rows;
+}
+
+// Tokuyoshi 2016, §5 "Code size": the modified FIS differs from [Tok15] "only [in] the mip level
+// determination (10 lines of code)".
+constexpr double kPaperFisDifferenceLines = 10;
+
+Table3Counting table3_counting(const ReportContext& ctx) {
+  Table3Counting out;
+  out.rule = kTable3CountingRule;
+  out.difference_rule = kTable3DifferenceRule;
+  const auto from = ctx.lines.find("fis_tok15");
+  const auto to = ctx.lines.find("fis_modified");
+  if (from != ctx.lines.end() && to != ctx.lines.end()) {
+    const LineDiff d = diff_lines(from->second.code, to->second.code);
+    out.difference = Table3Difference{from->first,
+                                      to->first,
+                                      d.removed,
+                                      d.added,
+                                      d.differing(),
+                                      static_cast<int64_t>(to->second.total) - static_cast<int64_t>(from->second.total),
+                                      kPaperFisDifferenceLines};
+  }
+  return out;
 }
 
 }  // namespace
@@ -236,6 +264,7 @@ TableModel table_model(const MeasuredTable& t, const MeasuredTable* other, const
   m.ratios = table_ratios(t, other, ctx);
   m.bandwidth = table_bandwidth(t);
   m.table3 = table3_rows(t, ctx);
+  m.table3_counting = table3_counting(ctx);
   m.claims = table_claims(t, other, ctx);
   return m;
 }

@@ -1,5 +1,6 @@
 #include "harness/report/table_markdown.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <sstream>
 #include <vector>
@@ -189,14 +190,58 @@ void write_bandwidth(std::ostringstream& os, const TableModel& t, const TableBan
       }
 }
 
-void write_table3(std::ostringstream& os, const TableModel& t, const std::vector<Table3Row>& rows) {
+std::string optional_count(const std::optional<uint64_t>& v) { return v ? std::to_string(*v) : "—"; }
+
+// "4 x 61 + 25" per view: iterations x dispatches per iteration + the rest.
+std::string iteration_cell(const Table3Row& r) {
+  if (r.dispatch_iterations.empty()) return "—";
+  std::string cell;
+  for (const char* view : {"camera_view", "light_view"}) {
+    const auto it = r.dispatch_iterations.find(view);
+    if (it == r.dispatch_iterations.end()) continue;
+    const IterationDispatches& d = it->second;
+    cell += (cell.empty() ? "" : " / ") + std::to_string(d.iterations) + " × " + std::to_string(d.per_iteration) +
+            " + " + std::to_string(d.outside);
+  }
+  return cell;
+}
+
+void write_table3(std::ostringstream& os, const TableModel& t, const std::vector<Table3Row>& rows,
+                  const std::optional<Table3Counting>& counting) {
   os << "\n### Table 3 analog (counted, not typed in)\n\n";
-  row(os, {"generator", "compute shaders", "paper", "dispatch calls (camera / light)", "paper", "lines of code", "paper"});
-  row(os, {"---", "---:", "---:", "---:", "---:", "---:", "---:"});
-  for (const Table3Row& r : rows)
-    row(os, {label_of(t, r.generator), std::to_string(static_cast<int>(r.shaders.measured)), paper_cell(r.shaders.paper, 0),
-             std::to_string(r.dispatch_camera_view) + " / " + std::to_string(r.dispatch_light_view),
-             paper_cell(r.dispatch_paper, 0), std::to_string(r.lines_of_code), paper_cell(r.lines_of_code_paper, 0)});
+  // Files written before the split had neither column; they render as they were written.
+  const bool split =
+      std::any_of(rows.begin(), rows.end(), [](const Table3Row& r) { return r.shader_lines.has_value(); });
+  const bool iterations =
+      std::any_of(rows.begin(), rows.end(), [](const Table3Row& r) { return !r.dispatch_iterations.empty(); });
+  std::vector<std::string> head{"generator", "compute shaders", "paper", "dispatch calls (camera / light)"};
+  head.push_back("paper");
+  if (iterations) head.push_back("iterations × per iteration + rest");
+  if (split) head.insert(head.end(), {"shader lines", "host lines"});
+  head.insert(head.end(), {"lines of code", "paper"});
+  row(os, head);
+  std::vector<std::string> align(head.size(), "---:");
+  align[0] = "---";
+  row(os, align);
+  for (const Table3Row& r : rows) {
+    std::vector<std::string> cells{
+        label_of(t, r.generator), std::to_string(static_cast<int>(r.shaders.measured)), paper_cell(r.shaders.paper, 0),
+        std::to_string(r.dispatch_camera_view) + " / " + std::to_string(r.dispatch_light_view)};
+    cells.push_back(paper_cell(r.dispatch_paper, 0));
+    if (iterations) cells.push_back(iteration_cell(r));
+    if (split) cells.insert(cells.end(), {optional_count(r.shader_lines), optional_count(r.host_lines)});
+    cells.insert(cells.end(), {std::to_string(r.lines_of_code), paper_cell(r.lines_of_code_paper, 0)});
+    row(os, cells);
+  }
+  if (!counting) return;
+  os << "\nCounted: " << counting->rule << "\n";
+  if (const auto& d = counting->difference) {
+    os << "\n"
+       << label_of(t, d->from) << " → " << label_of(t, d->to) << ": " << d->differing << " lines differ (" << d->removed
+       << " removed, " << d->added << " added; net " << (d->net >= 0 ? "+" : "") << d->net << ")";
+    if (d->paper) os << "; the paper: " << fixed(*d->paper, 0) << " lines";
+    os << ". " << counting->difference_rule << "\n";
+  }
 }
 
 std::string claim_verdict(const TableClaim& c) {
@@ -228,7 +273,7 @@ std::string table_markdown(const TableModel& t) {
   write_ratios(os, ratios, paper);
   if (ratios.paired_modified_minus_tok15) write_paired(os, *ratios.paired_modified_minus_tok15, paper);
   write_bandwidth(os, t, need(t.bandwidth, "bandwidth"));
-  write_table3(os, t, need(t.table3, "table3"));
+  write_table3(os, t, need(t.table3, "table3"), t.table3_counting);
   write_claims(os, need(t.claims, "claims"));
   return os.str();
 }

@@ -46,6 +46,7 @@ struct TimingRunner::Recorded {
   std::unique_ptr<TimestampPool> pool;
   VkCommandBuffer cmd = VK_NULL_HANDLE;
   uint32_t dispatches = 0;
+  std::vector<uint32_t> iteration_dispatches;
   Device* device = nullptr;
   ~Recorded() {
     if (cmd != VK_NULL_HANDLE) device->free_command_buffer(cmd);
@@ -100,10 +101,15 @@ void TimingRunner::add(const TimingCase& c) {
     throw std::logic_error("generator " + c.generator + " called its phase boundary " + std::to_string(pool.written()) +
                            " times for " + std::to_string(r->phases.size()) + " phases (expected phases + 1)");
   r->dispatches = stream.dispatch_count();
+  r->iteration_dispatches = stream.iteration_dispatches();
   cases_.push_back(std::move(r));
 }
 
 uint32_t TimingRunner::dispatch_count(std::size_t case_index) const { return cases_.at(case_index)->dispatches; }
+
+const std::vector<uint32_t>& TimingRunner::iteration_dispatches(std::size_t case_index) const {
+  return cases_.at(case_index)->iteration_dispatches;
+}
 
 std::vector<double> TimingRunner::replay_once(std::size_t case_index) {
   Recorded& r = *cases_.at(case_index);
@@ -132,6 +138,7 @@ TimingResult TimingRunner::run(const std::function<void(const TimingProgress&)>&
     t.phases = r->phases;
     t.phase_ms.resize(r->phases.size());
     t.dispatch_count = r->dispatches;
+    t.iteration_dispatches = r->iteration_dispatches;
     result.cases.push_back(std::move(t));
   }
   TimingProgress p;

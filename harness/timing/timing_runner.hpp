@@ -69,6 +69,7 @@ struct CaseTiming {
   std::vector<std::vector<double>> phase_ms;  // [phase][round]: index i is round i in every case
   std::vector<double> total_ms;               // first to last timestamp, [round]
   uint32_t dispatch_count = 0;                // vkCmdDispatch calls recorded (CommandStream)
+  std::vector<uint32_t> iteration_dispatches;  // of them, per iteration of a repeated block (k-means)
 };
 
 struct TimingResult {
@@ -99,6 +100,8 @@ class TimingRunner {
   void add(const TimingCase& c);
   // Dispatches the case's recording contains (known right after add()).
   uint32_t dispatch_count(std::size_t case_index) const;
+  // Of them, those of each iteration of a repeated block (CommandStream::begin_iteration).
+  const std::vector<uint32_t>& iteration_dispatches(std::size_t case_index) const;
 
   // Warm-up, then rounds until the stop rule says so. `progress` (may be empty) is called after
   // every replay round. Throws DeviceError for a zero or negative interval (TimestampPool).

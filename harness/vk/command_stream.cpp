@@ -1,5 +1,7 @@
 #include "harness/vk/command_stream.hpp"
 
+#include <stdexcept>
+
 #include "harness/vk/compute_pipeline.hpp"
 
 namespace vsgl {
@@ -12,6 +14,18 @@ void CommandStream::dispatch(const ComputePipeline& pipeline, const BindingSet& 
   if (push_bytes > 0) vkCmdPushConstants(cmd_, pipeline.layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, push_bytes, push);
   vkCmdDispatch(cmd_, groups_x, groups_y, groups_z);
   ++dispatches_;
+}
+
+void CommandStream::begin_iteration() {
+  if (in_iteration_) throw std::logic_error("CommandStream::begin_iteration inside an open iteration");
+  in_iteration_ = true;
+  iteration_start_ = dispatches_;
+}
+
+void CommandStream::end_iteration() {
+  if (!in_iteration_) throw std::logic_error("CommandStream::end_iteration without begin_iteration");
+  in_iteration_ = false;
+  iterations_.push_back(dispatches_ - iteration_start_);
 }
 
 void CommandStream::compute_barrier() {

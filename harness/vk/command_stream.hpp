@@ -4,6 +4,7 @@
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
+#include <vector>
 
 namespace vsgl {
 
@@ -31,9 +32,20 @@ class CommandStream {
 
   uint32_t dispatch_count() const { return dispatches_; }
 
+  // One iteration of a repeated block (k-means' Lloyd iterations) opens and closes around its
+  // recording, so Table 3 gives the dispatches per iteration beside the total (DESIGN.md §10).
+  // Throws std::logic_error for a nested begin or an end without a begin.
+  void begin_iteration();
+  void end_iteration();
+  // The dispatches each closed iteration recorded, in order.
+  const std::vector<uint32_t>& iteration_dispatches() const { return iterations_; }
+
  private:
   VkCommandBuffer cmd_;
   uint32_t dispatches_ = 0;
+  std::vector<uint32_t> iterations_;
+  bool in_iteration_ = false;
+  uint32_t iteration_start_ = 0;
 };
 
 inline uint32_t div_up(uint32_t n, uint32_t d) { return (n + d - 1) / d; }

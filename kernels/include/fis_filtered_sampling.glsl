@@ -13,24 +13,32 @@
 
 layout(local_size_x_id = 0) in;
 layout(constant_id = 1) const uint FIS_VARIANT = 1u;  // 0: [Tok15], 1: modified (the paper's "Ours")
+// table3: begin modified
 layout(constant_id = 2) const uint BISECTION_ITERATIONS = 12u;
+// table3: end modified
 
 layout(push_constant) uniform PushBlock { FisSamplingPush pc; };
 
 float square_texels() { return float(pyramid_size) * float(pyramid_size); }  // M
 
+// table3: begin modified
 // a(l) * p_bar(x, l): the PDF mass inside a level-l kernel centred at x (left side of Eq. 3).
 float kernel_mass(vec2 x, float level, float q_top) {
   return exp2(2.0 * level) / square_texels() * (pyramid_trilinear(PDF_LAYER, x, level).w / q_top);
 }
+// table3: end modified
 
 // ---- [Tok15] vs modified FIS: the only two places they differ --------------------------------
+// The regions are the lines each specialization keeps (Table 3 counts them per variant).
 float choose_level(WarpedSample s, float q_top) {
   float L = float(pyramid_levels);
+  // table3: begin tok15
   if (FIS_VARIANT == 0u) {
     // Eq. 1: 4^l / M = min(K / (N p(x_i)), 1).
     return clamp(0.5 * log2(pc.K * square_texels() / (float(pc.count) * s.pdf)), 0.0, L);
   }
+  // table3: end tok15
+  // table3: begin modified
   // Eq. 3 with K: solve a(l) p_bar(x_i, l) = K / N by bisection on [0, L].
   float target = pc.K / float(pc.count);
   if (kernel_mass(s.x, 0.0, q_top) >= target) return 0.0;
@@ -40,17 +48,22 @@ float choose_level(WarpedSample s, float q_top) {
     if (kernel_mass(s.x, mid, q_top) < target) lo = mid; else hi = mid;
   }
   return 0.5 * (lo + hi);
+  // table3: end modified
 }
 
 // Returns the cluster power; `density` receives the PDF value the estimator divided by.
 vec3 estimate_power(vec3 mean_flux, WarpedSample s, float level, float q_top, out float density) {
   float N = float(pc.count);
+  // table3: begin tok15
   if (FIS_VARIANT == 0u) {
     density = s.pdf;  // Eq. 4: the numerator is filtered, the denominator is not
     return square_texels() * mean_flux / max(N * s.pdf, pc.K);
   }
+  // table3: end tok15
+  // table3: begin modified
   density = pyramid_trilinear(PDF_LAYER, s.x, level).w / q_top;  // Eq. 5: both filtered alike
   return square_texels() * mean_flux / (N * density);
+  // table3: end modified
 }
 // ------------------------------------------------------------------------------------------------
 

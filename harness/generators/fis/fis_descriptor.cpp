@@ -17,15 +17,29 @@ std::unique_ptr<VsglGenerator> make_fis(Device& device, const DeviceView& view, 
   return std::make_unique<FisGenerator>(device, view, variant, p);
 }
 
-// Table 3 counts what the chosen path dispatches: one kernel per pipeline it binds.
+// Table 3 counts what the chosen path compiles and runs (DESIGN.md §10): one kernel per pipeline
+// it binds, and of the shared files the regions of its pyramid path, mip strategy and variant.
+template <FisVariant variant>
 SourceSet fis_sources(const GeneratorConfig& config) {
-  SourceSet s{{"harness/generators/fis/fis_generator.hpp", "harness/generators/fis/fis_generator.cpp"}, {}};
-  if (config.pyramid == PyramidPath::kBuffer) {
+  const bool buffer = config.pyramid == PyramidPath::kBuffer;
+  const MipStrategy mip = config.mipmapping.value_or(MipStrategy::kSinglePass);
+  SourceSet s{{"harness/generators/fis/fis_generator.hpp", "harness/generators/fis/fis_generator.cpp"},
+              {},
+              {{"buffer", buffer},
+               {"texture", !buffer},
+               {"single_pass", !buffer && mip == MipStrategy::kSinglePass},
+               {"per_level", !buffer && mip == MipStrategy::kPerLevel},
+               {"blit", !buffer && mip == MipStrategy::kBlit},
+               {"tok15", variant == FisVariant::kTok15},
+               {"modified", variant == FisVariant::kModified},
+               {"verify", false},
+               {"report", false}}};
+  if (buffer) {
     s.kernels = {"kernels/fis_additional.comp", "kernels/fis_mip_level.comp", "kernels/fis_filtered_sampling.comp"};
     return s;
   }
   s.kernels.push_back("kernels/fis_additional_texture.comp");
-  switch (config.mipmapping.value_or(MipStrategy::kSinglePass)) {
+  switch (mip) {
     case MipStrategy::kSinglePass:
       s.kernels.push_back("kernels/fis_mip_single_pass.comp");
       s.kernels.push_back("kernels/fis_mip_single_pass_tail.comp");
@@ -41,9 +55,9 @@ SourceSet fis_sources(const GeneratorConfig& config) {
 
 GeneratorDescriptor fis_descriptor(FisVariant variant) {
   const bool tok15 = variant == FisVariant::kTok15;
-  // Both variants are one source with a specialization constant, so they count the same lines
-  // (the paper's ~10-line difference is choose_level()/estimate_power() of
-  // kernels/include/fis_filtered_sampling.glsl, counted in both).
+  // Both variants are one source with a specialization constant; the regions `tok15` and
+  // `modified` (choose_level()/estimate_power() of kernels/include/fis_filtered_sampling.glsl) are
+  // the lines each specialization keeps, so their counts differ as the paper's do.
   return GeneratorDescriptor{
       .name = fis_variant_name(variant),
       .label = tok15 ? "[Tok15]" : "Ours (modified FIS)",
@@ -52,8 +66,9 @@ GeneratorDescriptor fis_descriptor(FisVariant variant) {
       .family = GeneratorFamily::kFis,
       .phases = {"additional", "mipmapping", "filtered_sampling"},
       .make = tok15 ? &make_fis<FisVariant::kTok15> : &make_fis<FisVariant::kModified>,
-      .sources = fis_sources(GeneratorConfig{}),
-      .sources_for = &fis_sources,
+      .sources = tok15 ? fis_sources<FisVariant::kTok15>(GeneratorConfig{})
+                       : fis_sources<FisVariant::kModified>(GeneratorConfig{}),
+      .sources_for = tok15 ? &fis_sources<FisVariant::kTok15> : &fis_sources<FisVariant::kModified>,
   };
 }
 

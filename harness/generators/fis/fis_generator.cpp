@@ -34,19 +34,23 @@ FisParams checked(const FisParams& p, const DeviceView& view) {
     throw InputError("N = " + std::to_string(p.vsgl_count) + " is larger than the " +
                      std::to_string(view.samplable_texels) + " valid texels with nonzero PDF of the " + view.label);
   if (!(p.K > 0.0f) || !std::isfinite(p.K)) throw InputError("K must be a positive number (got " + std::to_string(p.K) + ")");
+  // table3: begin modified
   if (p.bisection_iterations == 0 || p.bisection_iterations > 64)
     throw InputError("the bisection iteration count must be in [1, 64]");
+  // table3: end modified
   return p;
 }
 
 std::vector<SpecializationConstant> tile_constants() { return {{0, kFisTile}, {1, kFisTile}}; }
 
+// table3: begin single_pass
 // Levels 0..L of the square, in-bounds texels of levels 6..L (the single pass's hand-over).
 VkDeviceSize spd_mid_texels(const VirtualSquare& sq) {
   VkDeviceSize n = 0;
   for (uint32_t l = kFisSpdTileLevels; l <= sq.levels; ++l) n += sq.level_texels(l);
   return std::max<VkDeviceSize>(n, 1);
 }
+// table3: end single_pass
 
 std::vector<SpecializationConstant> sampling_constants(FisVariant variant, uint32_t bisection_iterations) {
   return {{0, kFisSamplingGroup}, {1, variant == FisVariant::kTok15 ? 0u : 1u}, {2, bisection_iterations}};
@@ -55,17 +59,26 @@ std::vector<SpecializationConstant> sampling_constants(FisVariant variant, uint3
 constexpr ImageSlot kStorageImage{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1};
 
 ComputePipelineDesc additional_pipeline(PyramidPath path) {
+  // table3: begin buffer
   if (path == PyramidPath::kBuffer)
     return {"fis_additional.comp", 2, sizeof(FisAdditionalPush), tile_constants()};
+  // table3: end buffer
+  // table3: begin texture
   return {"fis_additional_texture.comp", 1, sizeof(FisAdditionalPush), tile_constants(), {kStorageImage}};
+  // table3: end texture
 }
 
 ComputePipelineDesc sampling_pipeline(PyramidPath path, const std::vector<SpecializationConstant>& constants) {
+  // table3: begin buffer
   if (path == PyramidPath::kBuffer) return {"fis_filtered_sampling.comp", 2, sizeof(FisSamplingPush), constants};
+  // table3: end buffer
+  // table3: begin texture
   return {"fis_filtered_sampling_texture.comp", 1, sizeof(FisSamplingPush), constants,
           {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}}};
+  // table3: end texture
 }
 
+// table3: begin single_pass
 // The single pass's two dispatches: tiles to level 6, then levels 7..L (fis_mip_single_pass*.comp).
 std::vector<ComputePipelineDesc> single_pass_pipelines() {
   return {{"fis_mip_single_pass.comp", 1, sizeof(FisMipPush), tile_constants(),
@@ -73,15 +86,24 @@ std::vector<ComputePipelineDesc> single_pass_pipelines() {
           {"fis_mip_single_pass_tail.comp", 1, sizeof(FisMipPush), tile_constants(),
            {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kFisSpdTailLevelSlots}}}};
 }
+// table3: end single_pass
 
 std::vector<ComputePipelineDesc> mip_pipelines(PyramidPath path, MipStrategy strategy) {
+  // table3: begin buffer
   if (path == PyramidPath::kBuffer) return {{"fis_mip_level.comp", 1, sizeof(FisMipPush), tile_constants()}};
+  // table3: end buffer
+  // table3: begin texture
   switch (strategy) {
+    // table3: begin single_pass
     case MipStrategy::kSinglePass: return single_pass_pipelines();
+    // table3: end single_pass
+    // table3: begin per_level
     case MipStrategy::kPerLevel:
       return {{"fis_mip_level_texture.comp", 0, sizeof(FisMipPush), tile_constants(), {kStorageImage, kStorageImage}}};
-    case MipStrategy::kBlit: break;
+    // table3: end per_level
+    case MipStrategy::kBlit: break;  // every texture config compiles the whole switch (-Wswitch)
   }
+  // table3: end texture
   return {};
 }
 
@@ -97,13 +119,17 @@ std::vector<ComputePipelineDesc> fis_pipelines(PyramidPath path, MipStrategy str
 }
 
 std::string fis_unfit_reason(const DeviceInfo& info, PyramidPath path, MipStrategy strategy) {
+  // table3: begin texture
   if (path == PyramidPath::kTexture) {
     const std::string why = texture_path_unsupported_reason(info);
     if (!why.empty()) return why;
+    // table3: begin blit
     const VkFormatFeatureFlags blit = VK_FORMAT_FEATURE_BLIT_SRC_BIT | VK_FORMAT_FEATURE_BLIT_DST_BIT;
     if (strategy == MipStrategy::kBlit && (info.rgba32f_features & blit) != blit)
       return "the device cannot blit RGBA32F images";
+    // table3: end blit
   }
+  // table3: end texture
   for (const auto& desc : fis_pipelines(path, strategy)) {
     const std::string why = does_not_fit_reason(info.limits, pipeline_needs(desc));
     if (!why.empty()) return why;
@@ -145,6 +171,7 @@ MipStrategy default_mip_strategy(const DeviceInfo& info) {
   return MipStrategy::kSinglePass;
 }
 
+// table3: begin report
 std::string default_mip_strategy_reason(const DeviceInfo& info) {
   if (info.type == VK_PHYSICAL_DEVICE_TYPE_CPU)
     return "fastest correct strategy measured on lavapipe (Mesa 22.3.6, llvmpipe) with vsgl-mipbench on the full-size "
@@ -153,6 +180,7 @@ std::string default_mip_strategy_reason(const DeviceInfo& info) {
   return "not measured on this kind of device: the single-pass downsampler is the default for GPUs by design "
          "(one dispatch, no barrier per level); measure with vsgl-mipbench";
 }
+// table3: end report
 
 PyramidPath effective_pyramid_path(const DeviceInfo& info, PyramidPath requested, std::string* reason) {
   const auto buffer = [&]() {
@@ -173,12 +201,14 @@ PyramidPath effective_pyramid_path(const DeviceInfo& info, PyramidPath requested
   return buffer();
 }
 
+// table3: begin report
 GeneratorConfig resolve_fis_config(const DeviceInfo& info, GeneratorConfig config) {
   config.pyramid = effective_pyramid_path(info, config.pyramid);
   config.mipmapping = config.pyramid == PyramidPath::kTexture ? effective_mip_strategy(info, config.mipmapping)
                                                               : config.mipmapping.value_or(default_mip_strategy(info));
   return config;
 }
+// table3: end report
 
 FisGenerator::FisGenerator(Device& device, const DeviceView& view, FisVariant variant, const FisParams& params)
     : view_(view),
@@ -200,6 +230,7 @@ FisGenerator::FisGenerator(Device& device, const DeviceView& view, FisVariant va
   const auto sampling = sampling_pipeline(path_, sampling_constants(variant, params.bisection_iterations));
   const std::string base = name() + "." + view.label;
 
+  // table3: begin buffer
   if (path_ == PyramidPath::kBuffer) {
     pyramid_ = Buffer(device, VkDeviceSize{kMomentLayers} * sq.total_texels() * sizeof(glm::vec4),
                       MemoryUsage::kDeviceLocal, base + ".pyramid");
@@ -212,7 +243,9 @@ FisGenerator::FisGenerator(Device& device, const DeviceView& view, FisVariant va
                           base + ".filtered_sampling");
     return;
   }
+  // table3: end buffer
 
+  // table3: begin texture
   image_.emplace(device, sq.size, sq.levels + 1, kMomentLayers, VK_FORMAT_R32G32B32A32_SFLOAT,
                  VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
                      VK_IMAGE_USAGE_TRANSFER_DST_BIT,
@@ -235,6 +268,7 @@ FisGenerator::FisGenerator(Device& device, const DeviceView& view, FisVariant va
   sampling_set_.emplace(device, *filtered_sampling_, std::vector<BufferBinding>{vsgls_},
                         std::vector<ImageBinding>{{{image_->view()}, sampler_->get()}}, base + ".filtered_sampling");
 
+  // table3: begin single_pass
   if (strategy_ == MipStrategy::kSinglePass) {
     if (sq.levels > kFisSpdTileLevels + kFisSpdTailLevelSlots)
       throw InputError("the single-pass downsampler supports squares of at most 2^" +
@@ -253,13 +287,18 @@ FisGenerator::FisGenerator(Device& device, const DeviceView& view, FisVariant va
                            std::vector<ImageBinding>{{{image_->level_view(0)}}, tile_levels}, base + ".mipmapping");
     mip_sets_.emplace_back(device, *spd_tail_, std::vector<BufferBinding>{spd_mid_},
                            std::vector<ImageBinding>{tail_levels}, base + ".mipmapping.tail");
-  } else if (strategy_ == MipStrategy::kPerLevel) {
+  }
+  // table3: end single_pass
+  // table3: begin per_level
+  if (strategy_ == MipStrategy::kPerLevel) {
     mip_.emplace(device, mip_pipelines(path_, strategy_).front());
     for (uint32_t l = 0; l < sq.levels; ++l)
       mip_sets_.emplace_back(device, *mip_, std::vector<BufferBinding>{},
                              std::vector<ImageBinding>{{{image_->level_view(l)}}, {{image_->level_view(l + 1)}}},
                              base + ".mipmapping.level" + std::to_string(l));
   }
+  // table3: end per_level
+  // table3: end texture
 }
 
 // The paper's three passes, in order (DESIGN.md §7): the moments of every texel, their mip
@@ -292,6 +331,7 @@ void FisGenerator::record_additional(CommandStream& stream) {
 // Levels 1..L, each texel the 2x2 mean of its children (DESIGN.md §4).
 void FisGenerator::record_mipmapping(CommandStream& stream) {
   const VirtualSquare& sq = view_.square;
+  // table3: begin buffer|per_level
   if (path_ == PyramidPath::kBuffer || strategy_ == MipStrategy::kPerLevel) {
     // One dispatch per level; a barrier orders consecutive levels.
     for (uint32_t l = 0; l < sq.levels; ++l) {
@@ -302,6 +342,8 @@ void FisGenerator::record_mipmapping(CommandStream& stream) {
     }
     return;
   }
+  // table3: end buffer|per_level
+  // table3: begin single_pass
   if (strategy_ == MipStrategy::kSinglePass) {
     // One group per 64x64 tile of level 0 (= one per in-bounds level-6 texel) builds levels 1..6;
     // then one group builds levels 7..L from the level-6 texels.
@@ -316,6 +358,8 @@ void FisGenerator::record_mipmapping(CommandStream& stream) {
     }
     return;
   }
+  // table3: end single_pass
+  // table3: begin blit
   // vkCmdBlitImage chain. A linear 2:1 blit samples each destination texel exactly between its
   // four sources (weights 1/2 x 1/2), i.e. their mean. An odd extent does not halve exactly, so
   // each blit reads the even-rounded region 2*ceil(w/2) x 2*ceil(h/2) of level l — its extra
@@ -349,6 +393,7 @@ void FisGenerator::record_mipmapping(CommandStream& stream) {
   image_->change_layouts(cmd, {Layout{0, sq.levels, kSrc, kGeneral}, Layout{sq.levels, 1, kDst, kGeneral}},
                          VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT,
                          VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+  // table3: end blit
 }
 
 // One thread per VSGL: sample, choose the level, fetch, build (Eq. 1/4 or Eq. 3/5).
@@ -358,6 +403,7 @@ void FisGenerator::record_filtered_sampling(CommandStream& stream) {
   stream.dispatch(*filtered_sampling_, *sampling_set_, push, div_up(params_.vsgl_count, kFisSamplingGroup));
 }
 
+// table3: begin verify
 std::vector<glm::vec4> FisGenerator::download_pyramid(Device& device) const {
   const VirtualSquare& sq = view_.square;
   const std::size_t count = std::size_t{kMomentLayers} * sq.total_texels();
@@ -395,5 +441,6 @@ std::vector<glm::vec4> FisGenerator::download_pyramid(Device& device) const {
   std::memcpy(out.data(), readback.mapped(), count * sizeof(glm::vec4));
   return out;
 }
+// table3: end verify
 
 }  // namespace vsgl

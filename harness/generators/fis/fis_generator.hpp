@@ -47,7 +47,9 @@ std::string texture_path_unsupported_reason(const DeviceInfo& info);
 // The mipmapping strategy a run uses when none is given, by kind of device, and why (measured on
 // lavapipe for CPU devices; the single-pass downsampler, unmeasured here, for GPUs).
 MipStrategy default_mip_strategy(const DeviceInfo& info);
+// table3: begin report
 std::string default_mip_strategy_reason(const DeviceInfo& info);
+// table3: end report
 // The pyramid path a run takes for `requested` on this device: the texture path falls back to
 // the buffer path (with `reason` set) when the device cannot filter RGBA32F or no mip strategy
 // of it fits the device's limits. Throws DeviceError when the buffer path does not fit either.
@@ -66,10 +68,12 @@ std::string fis_unfit_reason(const DeviceInfo& info, PyramidPath path, MipStrate
 MipStrategy effective_mip_strategy(const DeviceInfo& info, std::optional<MipStrategy> requested,
                                    std::string* reason = nullptr);
 
+// table3: begin report
 struct GeneratorConfig;
 // `config` with the FIS pyramid path this device takes and its mipmapping strategy filled in
 // (what Table 3 and the JSON report).
 GeneratorConfig resolve_fis_config(const DeviceInfo& info, GeneratorConfig config);
+// table3: end report
 
 class FisGenerator : public VsglGenerator {
  public:
@@ -86,9 +90,11 @@ class FisGenerator : public VsglGenerator {
 
   PyramidPath pyramid_path() const { return path_; }
   MipStrategy mip_strategy() const { return strategy_; }  // after any fallback to what fits
+  // table3: begin verify
   // The 3 moment layers' pyramids (layer-major, VirtualSquare layout), read back from either
   // path's storage, for verify. Submits and waits.
   std::vector<glm::vec4> download_pyramid(Device& device) const;
+  // table3: end verify
 
   // Records only the mipmapping phase (the microbenchmark times it alone).
   void record_mipmapping(CommandStream& stream);
@@ -104,16 +110,22 @@ class FisGenerator : public VsglGenerator {
   PyramidPath path_;
   MipStrategy strategy_;
   Buffer vsgls_;
-  // Buffer path.
+  // table3: begin buffer
   Buffer pyramid_;
-  // Texture path.
+  // table3: end buffer
+  // table3: begin texture
   std::optional<MipImage> image_;
   std::optional<Sampler> sampler_;
-  Buffer spd_mid_;  // single pass: level-6 and coarser texels, handed from its first dispatch to its second
+  // table3: begin single_pass
+  Buffer spd_mid_;  // level-6 and coarser texels, handed from its first dispatch to its second
+  // table3: end single_pass
+  // table3: end texture
   // Pipelines and sets of the chosen path.
   std::optional<ComputePipeline> additional_;
   std::optional<ComputePipeline> mip_;
-  std::optional<ComputePipeline> spd_tail_;  // single pass: levels 7..L
+  // table3: begin single_pass
+  std::optional<ComputePipeline> spd_tail_;  // levels 7..L
+  // table3: end single_pass
   std::optional<ComputePipeline> filtered_sampling_;
   std::optional<BindingSet> additional_set_;
   std::vector<BindingSet> mip_sets_;  // buffer: one; single pass: tiles, tail; per-level: one per level

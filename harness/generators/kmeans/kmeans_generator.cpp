@@ -154,6 +154,7 @@ KmeansGenerator::KmeansGenerator(Device& device, const DeviceView& view, KmeansS
       ranges_set_(device, ranges_pipeline_, {sorted_, ranges_}, name() + ".ranges"),
       update_pieces_set_(device, update_pieces_, {sorted_, features_, centre_pieces_}, name() + ".update_pieces"),
       update_centres_set_(device, update_centres_, {ranges_, centre_pieces_, centres_}, name() + ".update_centres") {
+  // table3: begin segmented_sum
   if (params_.segmented_sum) {
     sum_pieces_.emplace(device, bytes<glm::vec4>(4ull * pieces_), MemoryUsage::kDeviceLocal, name() + ".sum_pieces");
     segsum_pieces_.emplace(device, kernel_1d("kmeans_segsum_pieces.comp", 3, sizeof(KmeansSumPush), kNarrow));
@@ -163,11 +164,14 @@ KmeansGenerator::KmeansGenerator(Device& device, const DeviceView& view, KmeansS
     segsum_clusters_set_.emplace(device, *segsum_clusters_,
                                  std::initializer_list<BufferBinding>{ranges_, *sum_pieces_, centres_, vsgls_},
                                  name() + ".segsum_clusters");
-  } else {
-    sum_.emplace(device, kernel_1d("kmeans_sum.comp", 5, sizeof(KmeansSumPush), kNarrow));
-    sum_set_.emplace(device, *sum_, std::initializer_list<BufferBinding>{view.texels, sorted_, ranges_, centres_, vsgls_},
-                     name() + ".sum");
+    return;
   }
+  // table3: end segmented_sum
+  // table3: begin sequential_sum
+  sum_.emplace(device, kernel_1d("kmeans_sum.comp", 5, sizeof(KmeansSumPush), kNarrow));
+  sum_set_.emplace(device, *sum_, std::initializer_list<BufferBinding>{view.texels, sorted_, ranges_, centres_, vsgls_},
+                   name() + ".sum");
+  // table3: end sequential_sum
 }
 
 template <class Push>
@@ -200,6 +204,7 @@ void KmeansGenerator::record(CommandStream& stream, const std::function<void(VkC
 void KmeansGenerator::record_cluster_assignment(CommandStream& stream) {
   record_seeding(stream);
   for (uint32_t it = 0; it < params_.iterations; ++it) {
+    stream.begin_iteration();  // Table 3: dispatches per iteration, as recorded
     stream.compute_barrier();
     record_grid_build(stream);
     stream.compute_barrier();
@@ -208,6 +213,7 @@ void KmeansGenerator::record_cluster_assignment(CommandStream& stream) {
     record_radix_sort(stream);
     stream.compute_barrier();
     record_centre_update(stream);
+    stream.end_iteration();
   }
   stream.compute_barrier();
   record_grid_build(stream);
@@ -228,14 +234,18 @@ void KmeansGenerator::record_sum(CommandStream& stream) {
                      space_ == KmeansSpace::k3d ? 1u : 0u,
                      sq.size,
                      glm::vec4(view_.source_position, 0.0f)};
+  // table3: begin sequential_sum
   if (!params_.segmented_sum) {
     // The paper's Sum: one thread per cluster, its texels one after another.
     dispatch_flat(stream, *sum_, *sum_set_, push, div_up(params_.vsgl_count, kNarrow));
     return;
   }
+  // table3: end sequential_sum
+  // table3: begin segmented_sum
   dispatch_flat(stream, *segsum_pieces_, *segsum_pieces_set_, push, div_up(div_up(texels_, kKmeansChunk), kNarrow));
   stream.compute_barrier();
   dispatch_flat(stream, *segsum_clusters_, *segsum_clusters_set_, push, div_up(params_.vsgl_count, kNarrow));
+  // table3: end segmented_sum
 }
 
 // Features, PDF pyramid level 0 and feature bounds; the PDF pyramid; the seeds (DESIGN.md §5).

@@ -32,12 +32,15 @@ class KmeansGenerator : public VsglGenerator {
   const Buffer& vsgls() const override { return vsgls_; }
   uint32_t vsgl_count() const override { return params_.vsgl_count; }
 
+  // table3: begin verify
   // Intermediate results, for verify and the tests:
   const Buffer& features() const { return features_; }      // W*H vec4: (feature, q), q = -1: no cluster
   const Buffer& centres() const { return centres_; }        // N vec4: the centres of the final assignment
   const Buffer& assignment() const { return assignment_; }  // W*H uint: cluster id or 0xFFFFFFFF
   const Buffer& sorted_pairs() const { return sorted_; }    // W*H uvec2: (cluster id, texel), stable
   const Buffer& ranges() const { return ranges_; }          // N uvec2: [begin, end) in sorted_pairs
+
+  // table3: end verify
 
  private:
   // A multi-level exclusive scan of `count` uints starting at word `offset` of a target buffer.
@@ -96,7 +99,9 @@ class KmeansGenerator : public VsglGenerator {
   Buffer ranges_;
   Buffer centre_pieces_;
   Buffer vsgls_;
+  // table3: begin segmented_sum
   std::optional<Buffer> sum_pieces_;
+  // table3: end segmented_sum
 
   ComputePipeline fill_;
   ComputePipeline prepare_;
@@ -112,9 +117,13 @@ class KmeansGenerator : public VsglGenerator {
   ComputePipeline ranges_pipeline_;
   ComputePipeline update_pieces_;
   ComputePipeline update_centres_;
-  std::optional<ComputePipeline> sum_;             // sequential
-  std::optional<ComputePipeline> segsum_pieces_;   // segmented
+  // table3: begin sequential_sum
+  std::optional<ComputePipeline> sum_;
+  // table3: end sequential_sum
+  // table3: begin segmented_sum
+  std::optional<ComputePipeline> segsum_pieces_;
   std::optional<ComputePipeline> segsum_clusters_;
+  // table3: end segmented_sum
 
   BindingSet fill_grid_set_;
   BindingSet prepare_set_;
@@ -134,9 +143,13 @@ class KmeansGenerator : public VsglGenerator {
   BindingSet ranges_set_;
   BindingSet update_pieces_set_;
   BindingSet update_centres_set_;
+  // table3: begin sequential_sum
   std::optional<BindingSet> sum_set_;
+  // table3: end sequential_sum
+  // table3: begin segmented_sum
   std::optional<BindingSet> segsum_pieces_set_;
   std::optional<BindingSet> segsum_clusters_set_;
+  // table3: end segmented_sum
 };
 
 }  // namespace vsgl
