@@ -1,28 +1,38 @@
 #!/usr/bin/env bash
 # Packs what ci/device-run.sh needs on a machine without this project's build dependencies (a lent
-# GPU machine) into .device-pack/: the four binaries (vsgl-bench, vsgl-gbench, vsgl-mipbench,
+# GPU machine) into .device-pack/ (as tools.tar.xz): the four binaries (vsgl-bench, vsgl-gbench, vsgl-mipbench,
 # vsgl_tests), the shared libraries they link (all but the C runtime), the Khronos validation
 # layer, and where the tests were built (they hold absolute paths to the sources and binaries).
 #
 # The captures are not packed: the paper-size captures with surface detail are 67 + 51 MiB, over
 # the 64 MiB a lent machine's working tree may carry, so ci/device-run.sh records them there. Their
 # channel hashes land in the tables' JSON, so any difference from lavapipe's bytes is on record.
+# The paper's scenes' models (37 MiB as glTF: Sponza and the Conference room) are packed instead,
+# xz-compressed (11 MiB) as scenes.tar.xz, from the first asset directory that holds both
+# (--assets DIR, else ../shared/scenes beside the checkout); scenes.txt lists what was packed with
+# each file's size and SHA-256, and the tables' JSON names each model by its content hash. Without
+# them the pack holds no models and the run times the procedural stand-ins, and says so.
 #
 # Usage: bash ci/device-pack.sh [BUILD_DIR]   a release build: build/release, else build/ci
 #        bash ci/device-pack.sh --gl          also fetch the Vulkan loader and GL dispatch .debs
 #                                             into .gl/ for a bare machine (needs apt here)
+#        bash ci/device-pack.sh --assets DIR  where the paper's scenes are (DIR/sponza, DIR/conference)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 pack=.device-pack
 gl=false
 build=""
-for a in "$@"; do
-  case "$a" in
+assets=()
+while [[ $# -gt 0 ]]; do
+  case "$1" in
     --gl) gl=true ;;
-    -*) echo "ci/device-pack.sh: unknown option '$a' (BUILD_DIR, --gl)" >&2; exit 2 ;;
-    *) build=$a ;;
+    --assets) assets+=("${2:?--assets takes a directory}"); shift ;;
+    -*) echo "ci/device-pack.sh: unknown option '$1' (BUILD_DIR, --gl, --assets DIR)" >&2; exit 2 ;;
+    *) build=$1 ;;
   esac
+  shift
 done
+assets+=("$(pwd)/../shared/scenes")
 if [[ -z "$build" ]]; then
   for b in build/release build/ci; do [[ -x $b/bench/vsgl-bench ]] && { build=$b; break; }; done
 fi
@@ -65,6 +75,25 @@ if $gl; then
   apt-get "${o[@]}" update >/dev/null
   (cd .gl && apt-get "${o[@]}" download libvulkan1 libegl1 libglvnd0 libopengl0 libgl1 libglx0 libgles2 >/dev/null)
 fi
+# The paper's scenes: the preset files' model paths, relative to an asset directory.
+scene_files=(sponza/Sponza.gltf sponza/Sponza.bin sponza/textures conference/conference.gltf conference/conference.bin
+  conference/textures)
+for dir in "${assets[@]}"; do
+  have=true
+  for f in "${scene_files[@]}"; do [[ -e $dir/$f ]] || have=false; done
+  if $have; then
+    tar cf - -C "$dir" "${scene_files[@]}" | xz -6 -T2 > "$pack/scenes.tar.xz"
+    (cd "$dir" && find "${scene_files[@]}" -type f -print0 | sort -z | xargs -0 sha256sum |
+      while read -r sum f; do echo "$f $(stat -c %s "$f") sha256:$sum"; done) > "$pack/scenes.txt"
+    echo "ci/device-pack.sh: packed the paper's scenes from $dir ($(du -sm "$pack/scenes.tar.xz" | cut -f1) MiB compressed)"
+    break
+  fi
+done
+[[ -f $pack/scenes.tar.xz ]] || echo "ci/device-pack.sh: the paper's scenes are in none of ${assets[*]}: the run will time the stand-ins" >&2
+# The binaries, libraries and layer travel xz-compressed too (47 MiB, most of it the validation
+# layer, become about 12): ci/device-run.sh unpacks them first.
+tar cf - -C "$pack" bin lib layer | xz -6 -T2 > "$pack/tools.tar.xz"
+rm -rf "$pack/bin" "$pack/lib" "$pack/layer"
 size=$(du -sm "$pack" | cut -f1)
 echo "ci/device-pack.sh: $pack holds $size MiB (from $build)"
 du -sh "$pack"/* .gl 2>/dev/null || true

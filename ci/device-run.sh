@@ -3,10 +3,13 @@
 # and inside a wall-time budget. Steps run most valuable first, so a run cut short still brings
 # back what matters most:
 #   1 devices (--json) and nvidia-smi     5 tables with --pyramid buffer
-#   2 record atrium and conference         6 vsgl-mipbench (the three mipmapping strategies)
+#   2 record sponza and conference-room    6 vsgl-mipbench (the three mipmapping strategies)
 #   3 verify both captures: both pyramid   7 vsgl-gbench
 #     paths, every generator               8 the test suite under the validation layer
 #   4 tables (texture path, the default)
+# The paper's scenes come from the pack's scenes.tar.xz (ci/device-pack.sh); a pack without them
+# records the procedural stand-ins atrium and conference instead, and run.log says so. run.log
+# lists the model files carried (size, SHA-256).
 # Each step runs under its own limit and what is left of the budget; a step that would start with
 # less than a minimum left is skipped, and run.log says so. Whatever ran comes back as
 # OUT/results.tar.gz (everything the steps wrote) and OUT/run.log (each step: start, seconds, exit).
@@ -37,6 +40,8 @@ while [[ $# -gt 0 ]]; do
   shift
 done
 pack=$PWD/.device-pack
+# The pack travels compressed (ci/device-pack.sh): unpack the tools once.
+if [[ -f $pack/tools.tar.xz && ! -x $pack/bin/vsgl-bench ]]; then xz -dc "$pack/tools.tar.xz" | tar xf - -C "$pack"; fi
 [[ -x $pack/bin/vsgl-bench && -f $pack/build.env ]] || { echo "ci/device-run.sh: no pack in $pack: run bash ci/device-pack.sh first (here, not on the GPU machine)" >&2; exit 2; }
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
@@ -105,29 +110,43 @@ step devices 30 5 "$bin/vsgl-bench" devices
 "$bin/vsgl-bench" devices --json > "$run/devices.json" 2>> "$log" || status=1
 command -v nvidia-smi > /dev/null && nvidia-smi -q > "$run/nvidia-smi.txt" 2>&1
 
-# 2. The captures, recorded here: the paper-size ones are too big to carry (ci/device-pack.sh).
-record_both() {
+# 2. The captures, recorded here from the carried models: the paper-size captures are too big to
+# carry (ci/device-pack.sh).
+assets=$captures/assets
+if [[ -f $pack/scenes.tar.xz ]] && mkdir -p "$assets" && xz -dc "$pack/scenes.tar.xz" | tar xf - -C "$assets"; then
+  scenes=(sponza conference-room)
+  say "   carried the paper's scenes ($(du -sm "$pack/scenes.tar.xz" | cut -f1) MiB xz, $(du -sm "$assets" | cut -f1) MiB unpacked):"
+  sed 's/^/     /' "$pack/scenes.txt" | tee -a "$log" >&2
+  cp "$pack/scenes.txt" "$run/scenes_carried.txt"
+else
+  scenes=(atrium conference)
+  say "   no paper scenes in the pack (ci/device-pack.sh found none): timing the procedural stand-ins"
+fi
+export assets
+record_scenes() {
   # $size unquoted: it is empty or options
-  "$bin/vsgl-bench" record --scene atrium --out "$captures/atrium" $size &&
-    "$bin/vsgl-bench" record --scene conference --out "$captures/conference" $size
+  for scene in "$@"; do
+    "$bin/vsgl-bench" record --scene "$scene" --assets "$assets" --out "$captures/$scene" $size || return 1
+  done
 }
-step record 120 20 record_both
+step record 120 20 record_scenes "${scenes[@]}"
+table_captures=(--capture "$captures/${scenes[0]}" --capture "$captures/${scenes[1]}")
 
 # 3. verify: both pyramid paths (its default) and every generator's checks, each capture.
-for scene in atrium conference; do
+for scene in "${scenes[@]}"; do
   step "verify_$scene" 120 20 "$bin/vsgl-bench" verify --capture "$captures/$scene" --json "$run/verify_$scene.json"
 done
 
 # 4-5. Tables 1 and 2 on the texture path (the default), then on the buffer path.
-step tables_texture 150 30 "$bin/vsgl-bench" tables --captures "$captures" --out "$run/texture" \
+step tables_texture 150 30 "$bin/vsgl-bench" tables "${table_captures[@]}" --out "$run/texture" \
   "${paper[@]}" --no-progress "${tables_quick[@]}"
-step tables_buffer 120 30 "$bin/vsgl-bench" tables --captures "$captures" --out "$run/buffer" --pyramid buffer \
+step tables_buffer 120 30 "$bin/vsgl-bench" tables "${table_captures[@]}" --out "$run/buffer" --pyramid buffer \
   "${paper[@]}" --no-progress "${tables_quick[@]}"
 
 # 6-7. The Google Benchmark binaries, JSON out.
-step mipbench 60 15 "$bin/vsgl-mipbench" --vsgl_captures="$captures" "${replays[@]}" \
+step mipbench 60 15 "$bin/vsgl-mipbench" --vsgl_captures="$captures" --vsgl_assets="$assets" "${replays[@]}" \
   --benchmark_out="$run/mipbench.json" --benchmark_out_format=json
-step gbench 90 20 "$bin/vsgl-gbench" --vsgl_captures="$captures" "${replays[@]}" "${gbench_quick[@]}" \
+step gbench 90 20 "$bin/vsgl-gbench" --vsgl_captures="$captures" --vsgl_assets="$assets" "${replays[@]}" "${gbench_quick[@]}" \
   --benchmark_out="$run/gbench.json" --benchmark_out_format=json
 
 # 8. The test suite, last, on this machine's default device under the validation layer (the
