@@ -146,6 +146,19 @@ TEST(SceneIdentity, TableSchemaTwoNamesAreInferredAndWrittenBackAsNames) {
   }
 }
 
+TEST(SceneIdentity, SchemaOneTablesAreLabelledByTheirCaptureScene) {
+  ojson doc = table_doc(1, "unused");
+  doc.erase("scene");  // schema 1 named the scene only under /capture
+  doc["device"] = ojson{{"name", "GPU"}, {"type", "discrete"}};
+  doc["build"] = ojson{{"git_commit", "abc1234"}};
+  doc["run"] = ojson{{"started_utc", "2026-11-22T00:00:00Z"}};
+  doc["config"] = ojson{{"K", 1}};
+  doc["capture"] = ojson{{"scene", "atrium"}, {"hashes", ojson{{"gbuffer", ojson::object()}}}};
+  const BenchRun run = parse_bench_run(doc, "h100/table1.json");
+  ASSERT_TRUE(run.tables.at(1).scene);
+  EXPECT_EQ(scene_label(*run.tables.at(1).scene), "atrium, stand-in");
+}
+
 BenchRun run_on(const SceneIdentity& scene, const std::string& device, const std::string& date) {
   BenchRun r;
   r.path = device + "/" + scene.name + "/table1.json";

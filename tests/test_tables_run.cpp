@@ -74,6 +74,10 @@ TEST_F(TablesRunTest, TinyRunProducesCompleteFiniteTablesThatMatchTheSchema) {
     const auto problems = validate_against_schema(doc, schema);
     EXPECT_TRUE(problems.empty()) << problems.front();
     EXPECT_EQ(doc["table"], table);
+    // Without the paper's models the procedural scenes stand in, and the JSON says so.
+    EXPECT_EQ(doc["scene"]["name"], table == 1 ? "atrium" : "conference");
+    EXPECT_EQ(doc["scene"]["kind"], "stand-in");
+    EXPECT_FALSE(doc["scene"].contains("model_file"));
     EXPECT_EQ(doc["timing"]["repetitions"], 3);
     for (const auto& g : o.generators) {
       SCOPED_TRACE(g);
@@ -215,7 +219,8 @@ TEST_F(TablesRunTest, UserCapturesGetTheirOwnTables) {
   EXPECT_TRUE(fs::exists(o.out_dir / "tiny.md"));
   const nlohmann::json doc = read_json(o.out_dir / "tiny.json");
   EXPECT_TRUE(doc["table"].is_null());
-  EXPECT_EQ(doc["scene"], "tiny");
+  EXPECT_EQ(doc["scene"]["name"], "tiny");
+  EXPECT_EQ(doc["scene"]["kind"], "procedural") << "the tiny scene stands in for no paper table";
   EXPECT_EQ(doc["capture"]["recorded_now"], false);
   EXPECT_TRUE(doc["generators"]["fis_modified"]["total"]["paper_ms"].is_null());
   EXPECT_GT(doc["generators"]["fis_modified"]["total"]["median_ms"].get<double>(), 0.0);

@@ -103,6 +103,13 @@ BenchRun parse_table_json(const json& doc, const Reader& r) {
   for (const char* key : {"timing", "generators", "kmeans_sum", "sampler"}) workload.erase(key);
   t.workload = unordered(workload);
   t.scene = m.scene;
+  if (!t.scene && m.capture.scene) {  // schema 1 named the scene only under /capture
+    SceneIdentity s;
+    s.name = *m.capture.scene;
+    s.kind = m.capture.source ? SceneKind::kUser : SceneKind::kStandIn;
+    s.name_only = true;
+    t.scene = s;
+  }
   run.tables[table] = t;
 
   const std::string prefix = "table" + std::to_string(table) + "/";
