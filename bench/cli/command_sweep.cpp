@@ -144,7 +144,7 @@ Command add_sweep_command(CLI::App& parent) {
       ->allow_extra_args(false)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
       ->type_name("NAME=VALUES")
-      ->check(usage_checked([](const std::string& t) { (void)parse_axis_spec(t); }, "NAME=VALUES"));
+      ->check(usage_checked([](const std::string& t) { (void)parse_axis_spec(t); }, ""));
   CLI::Option* capture =
       add_optional(*app, "--capture", o->capture, "time this capture (not with the gbuffer and rsm axes)")
           ->type_name("DIR");
