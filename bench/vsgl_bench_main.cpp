@@ -24,9 +24,10 @@ int dispatch(int argc, char** argv) {
   // A repeated single-value option keeps its last value, as before; list options say so.
   app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
   const std::vector<vsgl::cli::Command> commands{
-      vsgl::cli::add_devices_command(app), vsgl::cli::add_record_command(app),  vsgl::cli::add_verify_command(app),
-      vsgl::cli::add_shade_command(app),   vsgl::cli::add_quality_command(app), vsgl::cli::add_tables_command(app),
-      vsgl::cli::add_compare_command(app), vsgl::cli::add_export_command(app),  vsgl::cli::add_dashboard_command(app),
+      vsgl::cli::add_devices_command(app),   vsgl::cli::add_record_command(app),  vsgl::cli::add_verify_command(app),
+      vsgl::cli::add_shade_command(app),     vsgl::cli::add_quality_command(app), vsgl::cli::add_tables_command(app),
+      vsgl::cli::add_sweep_command(app),     vsgl::cli::add_compare_command(app), vsgl::cli::add_export_command(app),
+      vsgl::cli::add_dashboard_command(app),
   };
   app.footer("`vsgl-bench <command> --help` lists a command's options.\n\n" + vsgl::cli::exit_codes_help());
   if (argc == 2 && std::string(argv[1]) == "help") {  // `vsgl-bench help`, as before: the top-level help
@@ -36,8 +37,9 @@ int dispatch(int argc, char** argv) {
   if (const auto exit_code = vsgl::cli::parse_command_line(app, argc, argv)) return *exit_code;
   for (const auto& c : commands)
     if (c.app->parsed()) return c.run();
-  throw vsgl::UsageError("a command is required: devices, record, verify, shade, quality, tables, compare, export or "
-                         "dashboard");
+  throw vsgl::UsageError(
+      "a command is required: devices, record, verify, shade, quality, tables, sweep, compare, export "
+      "or dashboard");
 }
 
 }  // namespace

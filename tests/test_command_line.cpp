@@ -24,7 +24,8 @@ bool contains(const std::string& text, const std::string& part) { return text.fi
 TEST(CliUsage, TopLevelHelpListsEveryCommandAndTheExitCodeTable) {
   const auto r = run_cli_without_vulkan("--help");
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  for (const char* command : {"devices", "record", "verify", "shade", "quality", "tables", "compare", "export", "dashboard"})
+  for (const char* command :
+       {"devices", "record", "verify", "shade", "quality", "tables", "sweep", "compare", "export", "dashboard"})
     EXPECT_TRUE(contains(r.output, command)) << command << "\n" << r.output;
   for (const auto& e : cli::exit_code_table()) EXPECT_TRUE(contains(r.output, e.meaning)) << e.meaning << "\n" << r.output;
   EXPECT_TRUE(contains(r.output, "70")) << r.output;
@@ -128,7 +129,8 @@ TEST(CliUsage, DocumentedOptionsAreAccepted) {
            "record --gltf=" VSGL_SOURCE_DIR "/CMakeLists.txt --intensity 1,2,3",
            "verify --capture x --json out.json --camera-vsgls 64 --light-vsgls 32 --K 2 --pyramid texture,buffer "
            "--mipmapping blit",
-           "shade --capture x --generators fis_tok15,fis_modified --vsgls 64 --stride 2 --exposure 0.5 --pyramid buffer "
+           "shade --capture x --generators fis_tok15,fis_modified --vsgls 64 --stride 2 --exposure 0.5 --pyramid "
+           "buffer "
            "--mipmapping per-level --out /tmp/vsgl_never_written",
            "quality --capture x --frames 4 --generators fis_modified --k-sweep 1,2 --error-stride 8 "
            "--flicker-width 60 --reference-rsm 32 --sequence-reference-rsm 16 --light-vsgls 8 --camera-vsgls 8 --K 1 "
@@ -138,6 +140,10 @@ TEST(CliUsage, DocumentedOptionsAreAccepted) {
            "--copy-mib 1 --camera-vsgls 64 --light-vsgls 32 --K 1 --iterations 12 --kmeans-iterations 4 "
            "--pyramid buffer --mipmapping blit --json-only --clocks-locked --no-progress --debug-slow fis_tok15",
            "tables --capture a --capture b --out=o",
+           "sweep --scene tiny --axis vsgls=256:16384:x2 --axis K=1:4:+1 --gbuffer 96x64 --rsm 32 --captures caps "
+           "--out o --generators fis_modified --quick --time-budget 60 --camera-vsgls 64 --warmup 2 --repetitions 3 "
+           "--noise-target 0.05 --max-repetitions 5 --clocks-locked --no-progress",
+           "sweep --capture x --axis pdf-sharpness=0,0.5,1,2 --axis kmeans-iterations=0,4 --time-cap 5",
        }) {
     SCOPED_TRACE(args);
     const auto r = run_cli_without_vulkan(args);

@@ -17,6 +17,24 @@
 
 namespace vsgl {
 
+TimingResult time_capture(Device& device, const TablesOptions& o, const Capture& capture,
+                          const std::function<void(const TimingProgress&)>& progress) {
+  // Inputs uploaded, generators built and recorded before any timing (DESIGN.md §9).
+  const DeviceView camera = upload_view(device, capture, ViewKind::kCamera);
+  const DeviceView light = upload_view(device, capture, ViewKind::kLight);
+  std::vector<std::unique_ptr<VsglGenerator>> generators;
+  TimingRunner runner(device, o.timing);
+  for (const auto& g : o.generators)
+    for (const DeviceView* view : {&camera, &light}) {
+      GeneratorConfig cfg = o.generator;
+      cfg.vsgl_count = view->kind == ViewKind::kCamera ? o.camera_vsgls : o.light_vsgls;
+      generators.push_back(make_generator(g, device, *view, cfg));
+      if (o.wrap_generator) generators.back() = o.wrap_generator(device, std::move(generators.back()));
+      runner.add(TimingCase{g, view_name(view->kind), generators.back().get()});
+    }
+  return runner.run(progress);
+}
+
 TableMeasurement measure_table(Device& device, const TablesOptions& o, const TableInput& input,
                                const std::function<void(const TablesEvent&)>& on_event) {
   const int number = input.paper_table;
@@ -66,22 +84,9 @@ TableMeasurement measure_table(Device& device, const TablesOptions& o, const Tab
   if (!t.copy_bandwidth.reduced_because.empty())
     say("copy bandwidth measured with buffers of " + mib(t.copy_bandwidth.bytes) + ": " + t.copy_bandwidth.reduced_because);
 
-  // Inputs uploaded, generators built and recorded before any timing (DESIGN.md §9).
-  const DeviceView camera = upload_view(device, capture, ViewKind::kCamera);
-  const DeviceView light = upload_view(device, capture, ViewKind::kLight);
-  std::vector<std::unique_ptr<VsglGenerator>> generators;
-  TimingRunner runner(device, o.timing);
-  for (const auto& g : o.generators)
-    for (const DeviceView* view : {&camera, &light}) {
-      GeneratorConfig cfg = o.generator;
-      cfg.vsgl_count = view->kind == ViewKind::kCamera ? o.camera_vsgls : o.light_vsgls;
-      generators.push_back(make_generator(g, device, *view, cfg));
-      if (o.wrap_generator) generators.back() = o.wrap_generator(device, std::move(generators.back()));
-      runner.add(TimingCase{g, view_name(view->kind), generators.back().get()});
-    }
-  say("timing " + (number != 0 ? "table " + std::to_string(number) + " (" + t.scene + ")" : "capture " + t.scene) + ": " +
-      std::to_string(generators.size()) + " cases");
-  t.timing = runner.run([&](const TimingProgress& p) {
+  say("timing " + (number != 0 ? "table " + std::to_string(number) + " (" + t.scene + ")" : "capture " + t.scene) +
+      ": " + std::to_string(2 * o.generators.size()) + " cases");
+  t.timing = time_capture(device, o, capture, [&](const TimingProgress& p) {
     if (on_event) on_event(TablesEvent{"", &p, number});
   });
   return out;

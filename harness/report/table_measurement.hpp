@@ -19,6 +19,12 @@ struct TableMeasurement {
   nlohmann::ordered_json config;  // config_json() of its capture
 };
 
+// The timing step alone, on a capture in memory (`sweep` times captures it altered): both views
+// uploaded, every generator of `options` built and recorded on each at its view's N, then timed
+// interleaved (timing_runner.hpp). Throws what upload_view, make_generator and TimingRunner throw.
+TimingResult time_capture(Device& device, const TablesOptions& options, const Capture& capture,
+                          const std::function<void(const TimingProgress&)>& progress = {});
+
 TableMeasurement measure_table(Device& device, const TablesOptions& options, const TableInput& input,
                                const std::function<void(const TablesEvent&)>& on_event);
 

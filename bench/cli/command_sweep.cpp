@@ -1,0 +1,201 @@
+// `vsgl-bench sweep`: the tables' timing protocol at every point of one or more parameter axes, the
+// cost growth per generator, view and phase, and log-log plots (DESIGN.md §10.1). The work is
+// harness/sweep/sweep_run.hpp; this file maps options and prints.
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <memory>
+#include <optional>
+
+#include "bench/cli/commands.hpp"
+#include "bench/cli/generator_options.hpp"
+#include "bench/cli/gpu_session.hpp"
+#include "bench/cli/option_types.hpp"
+#include "harness/core/error.hpp"
+#include "harness/generators/generator_registry.hpp"
+#include "harness/report/checkout_scenes.hpp"
+#include "harness/sweep/sweep_run.hpp"
+#include "harness/timing/run_provenance.hpp"
+
+namespace vsgl::cli {
+namespace {
+
+struct SweepCommandOptions {
+  std::vector<std::string> axes;
+  std::optional<std::string> capture;
+  std::optional<std::string> scene;
+  std::vector<std::string> assets;
+  std::string captures = "captures/sweep";
+  std::pair<uint32_t, uint32_t> gbuffer{1920, 1088};
+  uint32_t rsm = 512;
+  std::optional<std::string> out;
+  GeneratorOptions gen;
+  std::optional<uint32_t> warmup, repetitions, max_repetitions;
+  std::optional<double> noise_target, time_cap, time_budget;
+  bool quick = false;
+  bool clocks_locked = false;
+  std::optional<std::string> schema;
+  bool no_progress = false;
+  DeviceOptions device;
+};
+
+int run_sweep_command(const SweepCommandOptions& c) {
+  SweepOptions o;
+  // Everything the command line alone decides is checked before Vulkan is touched (exit 2).
+  for (const auto& spec : c.axes) o.axes.push_back(parse_axis_spec(spec));
+  check_axes(o.axes);
+  if (c.capture.has_value() == c.scene.has_value())
+    throw UsageError("sweep needs exactly one input: --capture DIR or --scene NAME");
+  for (const SweepAxis& a : o.axes)
+    if (c.capture && (a.parameter == SweepParameter::kGbuffer || a.parameter == SweepParameter::kRsm))
+      throw UsageError("--axis " + a.spec +
+                       " records the capture again at each size, which needs --scene NAME, not "
+                       "--capture");
+  if (c.capture) o.capture = std::filesystem::path(*c.capture);
+  if (c.scene) o.scene = *c.scene;
+  o.scenes = checkout_scene_library({c.assets.begin(), c.assets.end()});
+  o.captures_dir = c.captures;
+  o.record_sizes = RecordSizes{c.gbuffer.first, c.gbuffer.second, c.rsm};
+  o.time_budget_s = c.time_budget;
+  if (c.schema) o.schema = *c.schema;
+  TablesOptions& t = o.tables;
+  const GeneratorOptions& gen = c.gen;
+  if (!gen.generators.empty()) t.generators = gen.generators;
+  t.camera_vsgls = gen.camera_vsgls;
+  t.light_vsgls = gen.light_vsgls;
+  t.generator = gen.config;
+  t.clocks_locked = c.clocks_locked;
+
+  GpuSession session = GpuSession::open(c.device);
+  t.validation = session.context->instance().validation_enabled();
+  const DeviceInfo& info = session.device().info();
+  // As `tables`: on a CPU device the default generators are the paper's four.
+  if (gen.generators.empty() && info.type == VK_PHYSICAL_DEVICE_TYPE_CPU) {
+    std::vector<std::string> paper;
+    for (const auto& g : t.generators)
+      if (generator_in_paper(g)) paper.push_back(g);
+    t.generators = paper;
+    std::fprintf(stderr, "CPU device: timing the paper's four generators (add the extras with --generators)\n");
+  }
+  t.timing = TimingOptions::defaults_for(info);
+  if (c.quick) {  // CI / tests: the protocol's shape, not its statistics
+    t.quick = true;
+    t.timing.min_repetitions = 3;
+    t.timing.max_repetitions = 3;
+  }
+  if (c.warmup) t.timing.warmup = *c.warmup;
+  if (c.repetitions) {
+    t.timing.min_repetitions = *c.repetitions;
+    t.timing.max_repetitions = std::max(t.timing.max_repetitions, t.timing.min_repetitions);
+  }
+  if (c.max_repetitions) t.timing.max_repetitions = *c.max_repetitions;
+  if (c.noise_target) t.timing.noise_target = *c.noise_target;
+  if (c.time_cap) t.timing.time_cap_s = *c.time_cap;
+  o.out_dir =
+      c.out ? std::filesystem::path(*c.out) : std::filesystem::path("results") / device_slug(info.name) / "sweep";
+
+  const bool tty = !c.no_progress && isatty(fileno(stderr)) != 0;
+  bool line_open = false;
+  const SweepOutcome outcome = run_sweep(session.device(), o, [&](const SweepEvent& e) {
+    if (e.progress == nullptr) {
+      if (line_open) std::fputc('\n', stderr);
+      line_open = false;
+      std::fprintf(stderr, "%s\n", e.message.c_str());
+      return;
+    }
+    if (!tty) return;  // the progress line is for people watching a terminal
+    const TimingProgress& p = *e.progress;
+    if (p.rounds == 0)
+      std::fprintf(stderr, "\r  point %zu/%zu: warm-up %u/%u        ", e.point + 1, e.points, p.warmup_done,
+                   p.warmup_total);
+    else
+      std::fprintf(stderr, "\r  point %zu/%zu: repetition %u (min %u), %.1f s / %.0f s   ", e.point + 1, e.points,
+                   p.rounds, p.min_rounds, p.elapsed_s, p.cap_s);
+    std::fflush(stderr);
+    line_open = true;
+  });
+  if (line_open) std::fputc('\n', stderr);
+  std::printf("%s\n", outcome.markdown.c_str());
+  std::fflush(stdout);
+  for (const auto& path : outcome.written) std::fprintf(stderr, "wrote %s\n", path.string().c_str());
+  return session.finish(0);
+}
+
+}  // namespace
+
+Command add_sweep_command(CLI::App& parent) {
+  CLI::App* app = parent.add_subcommand(
+      "sweep",
+      "the tables' protocol at every point of one or more parameter axes (--axis, repeatable: two axes give their "
+      "product): every generator on both views, recorded once per point and replayed with discarded warm-ups and "
+      "interleaved repetitions. Per generator, view and phase, the cost growth along each axis is fitted on log-log "
+      "axes (cost ∝ x^slope with a 95 % bootstrap interval over the rounds) and judged against what the algorithm "
+      "predicts (e.g. filtered_sampling linear in N). Writes OUT/sweep.json (schema results/schema/sweep.schema.json: "
+      "every point's statistics and raw samples, every fit), OUT/sweep.md (a table per axis) and "
+      "OUT/sweep_<axis>_<phase>.svg (log-log, median and IQR band per generator and view)");
+  auto o = std::make_shared<SweepCommandOptions>();
+  app->add_option("--axis", o->axes,
+                  "NAME=VALUES: NAME one of vsgls (N on both views), camera-vsgls, light-vsgls, K, kmeans-iterations, "
+                  "gbuffer (WxH, recorded at each size), rsm (side, recorded at each size), pdf-sharpness (gamma: both "
+                  "views' PDFs raised to it, 0 = uniform); VALUES a:b:xF (geometric), a:b:+D (arithmetic) or "
+                  "v1,v2,... (a list); e.g. vsgls=256:16384:x2, K=1,2,4, gbuffer=480x272:1920x1088:x2")
+      ->required()
+      ->allow_extra_args(false)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
+      ->type_name("NAME=VALUES")
+      ->check(usage_checked([](const std::string& t) { (void)parse_axis_spec(t); }, ""));
+  CLI::Option* capture =
+      add_optional(*app, "--capture", o->capture, "time this capture (not with the gbuffer and rsm axes)")
+          ->type_name("DIR");
+  CLI::Option* scene =
+      add_optional(*app, "--scene", o->scene,
+                   "or record this named scene (a preset such as sponza, or atrium, conference, tiny) into --captures")
+          ->type_name("NAME")
+          ->excludes(capture);
+  add_assets_option(*app, o->assets)->excludes(capture);
+  app->add_option("--captures", o->captures,
+                  "capture cache of --scene: CAPTURES/<scene>-g<W>x<H>-r<R>, recorded when missing or stale")
+      ->type_name("DIR")
+      ->capture_default_str();
+  add_size_option(*app, "--gbuffer", o->gbuffer, "G-buffer size of the --scene capture (the gbuffer axis sets its own)")
+      ->excludes(capture);
+  app->add_option("--rsm", o->rsm, "RSM size N x N of the --scene capture (the rsm axis sets its own)")
+      ->check(at_least(1))
+      ->capture_default_str()
+      ->excludes(capture);
+  add_optional(*app, "--out", o->out, "output directory")->type_name("DIR")->default_str("results/<device slug>/sweep");
+  CLI::App* protocol = app->add_option_group("timing protocol", "warm-ups, repetitions and the stop rule, per point");
+  add_optional(*protocol, "--warmup", o->warmup, "discarded warm-up runs")->check(at_least(2))->default_str("2");
+  add_optional(*protocol, "--repetitions", o->repetitions, "minimum repetitions")
+      ->check(at_least(2))
+      ->default_str("10");
+  add_optional(*protocol, "--noise-target", o->noise_target, "stop once every total has IQR/median <= X")
+      ->check(positive_number())
+      ->default_str("0.02");
+  CLI::Option* budget = add_optional(*protocol, "--time-budget", o->time_budget,
+                                     "S s of timing for the whole sweep, split evenly over the points as each point's "
+                                     "time cap (recorded in the JSON with every point's stop rule)")
+                            ->check(positive_number());
+  add_optional(*protocol, "--time-cap", o->time_cap, "... or after S s of timing per point (0: no cap)")
+      ->check(CLI::NonNegativeNumber)
+      ->default_str("60; 20 on a CPU device such as lavapipe")
+      ->excludes(budget);
+  add_optional(*protocol, "--max-repetitions", o->max_repetitions, "... or after M repetitions")
+      ->check(at_least(2))
+      ->default_str("1000");
+  protocol->add_flag("--quick", o->quick,
+                     "3 repetitions per point, no noise target (CI smoke runs; marked in the JSON)");
+  CLI::App* generators = app->add_option_group("generators", "what is timed (an axis overrides its parameter)");
+  add_generator_options(*generators, o->gen);
+  app->add_flag("--clocks-locked", o->clocks_locked, "record that you locked the GPU clocks (Vulkan cannot)");
+  add_optional(*app, "--schema", o->schema, "the sweep JSON schema")
+      ->check(input_file("--schema"))
+      ->default_str("results/schema/sweep.schema.json");
+  app->add_flag("--no-progress", o->no_progress, "no progress line (it is off anyway when stderr is not a terminal)");
+  add_device_options(*app, o->device);
+  (void)scene;
+  return {app, [o] { return run_sweep_command(*o); }};
+}
+
+}  // namespace vsgl::cli

@@ -1,0 +1,70 @@
+#pragma once
+// A measured sweep (DESIGN.md §10.1): every point's parameters and timing, and the growth fits read
+// off them. The report (sweep_report.hpp) is built from this alone, so tests can feed it synthetic
+// samples.
+#include <cstddef>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "harness/core/growth_fit.hpp"
+#include "harness/formats/scene_identity.hpp"
+#include "harness/sweep/sweep_axis.hpp"
+#include "harness/timing/timing_runner.hpp"
+
+namespace vsgl {
+
+// How high-frequency a view's PDF is at a point of the pdf-sharpness axis (quality_metrics.hpp
+// pdf_frequency): var(p) and the fine shares of its Haar spectrum.
+struct PointPdfFrequency {
+  double relative_variance = 0;
+  std::vector<double> fine_share;
+};
+
+struct SweepPointResult {
+  std::vector<std::size_t> value_index;  // one per axis
+  std::string capture_dir;
+  nlohmann::ordered_json capture;  // hashes and sizes of the capture timed (altered in memory for gamma)
+  nlohmann::ordered_json config;   // the tables' config block for this point (report/run_context.hpp)
+  double time_cap_s = 0;
+  std::optional<double> pdf_sharpness;
+  std::map<std::string, PointPdfFrequency> pdf_frequency;  // per view, on the pdf-sharpness axis
+  TimingResult timing;
+};
+
+struct MeasuredSweep {
+  std::vector<SweepAxis> axes;
+  std::vector<std::string> generators;
+  SceneIdentity scene;
+  std::optional<double> time_budget_s;
+  std::vector<SweepPointResult> points;
+};
+
+// One fit: a (generator, view, phase) along one axis, the other axes held at `slice`.
+struct SweepFit {
+  std::size_t axis = 0;
+  std::vector<std::pair<std::string, std::string>> slice;  // the other axes: name, value text
+  std::string generator, view, phase;                      // phase: a phase name or "total"
+  std::vector<std::size_t> points;                         // indices into MeasuredSweep::points, by x
+  std::vector<double> x;                                   // growth_x of each point (0: off the log axis)
+  std::optional<GrowthFit> fit;
+  std::string note;  // why there is no fit (fewer than 2 points on the log axis, too few rounds)
+  std::optional<GrowthExpectation> expected;
+  std::optional<GrowthJudgement> judgement;
+};
+
+// "K=2, rsm=64"; "" for no other axis.
+std::string slice_text(const std::vector<std::pair<std::string, std::string>>& slice);
+
+// The samples (ms) of a case's phase or total at a point. Throws std::logic_error when absent.
+const std::vector<double>& point_samples(const SweepPointResult& point, const std::string& generator,
+                                         const std::string& view, const std::string& phase);
+
+// Every fit of the sweep, axis by axis, slice by slice, case by case, phases then "total". The
+// phases are those of each case as timed.
+std::vector<SweepFit> sweep_fits(const MeasuredSweep& sweep, const GrowthFitOptions& options = {});
+
+}  // namespace vsgl
