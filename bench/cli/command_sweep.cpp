@@ -10,6 +10,8 @@
 
 #include "bench/cli/commands.hpp"
 #include "bench/cli/generator_options.hpp"
+#include "bench/cli/timed_generators.hpp"
+#include "bench/cli/timing_flags.hpp"
 #include "bench/cli/gpu_session.hpp"
 #include "bench/cli/option_types.hpp"
 #include "harness/core/error.hpp"
@@ -60,38 +62,15 @@ int run_sweep_command(const SweepCommandOptions& c) {
   o.time_budget_s = c.time_budget;
   if (c.schema) o.schema = *c.schema;
   TablesOptions& t = o.tables;
-  const GeneratorOptions& gen = c.gen;
-  if (!gen.generators.empty()) t.generators = gen.generators;
-  t.camera_vsgls = gen.camera_vsgls;
-  t.light_vsgls = gen.light_vsgls;
-  t.generator = gen.config;
   t.clocks_locked = c.clocks_locked;
 
   GpuSession session = GpuSession::open(c.device);
   t.validation = session.context->instance().validation_enabled();
   const DeviceInfo& info = session.device().info();
-  // As `tables`: on a CPU device the default generators are the paper's four.
-  if (gen.generators.empty() && info.type == VK_PHYSICAL_DEVICE_TYPE_CPU) {
-    std::vector<std::string> paper;
-    for (const auto& g : t.generators)
-      if (generator_in_paper(g)) paper.push_back(g);
-    t.generators = paper;
-    std::fprintf(stderr, "CPU device: timing the paper's four generators (add the extras with --generators)\n");
-  }
+  apply_timed_generators(c.gen, info, t);
   t.timing = TimingOptions::defaults_for(info);
-  if (c.quick) {  // CI / tests: the protocol's shape, not its statistics
-    t.quick = true;
-    t.timing.min_repetitions = 3;
-    t.timing.max_repetitions = 3;
-  }
-  if (c.warmup) t.timing.warmup = *c.warmup;
-  if (c.repetitions) {
-    t.timing.min_repetitions = *c.repetitions;
-    t.timing.max_repetitions = std::max(t.timing.max_repetitions, t.timing.min_repetitions);
-  }
-  if (c.max_repetitions) t.timing.max_repetitions = *c.max_repetitions;
-  if (c.noise_target) t.timing.noise_target = *c.noise_target;
-  if (c.time_cap) t.timing.time_cap_s = *c.time_cap;
+  t.quick = c.quick;
+  apply_timing_flags(c, t.timing);
   o.out_dir =
       c.out ? std::filesystem::path(*c.out) : std::filesystem::path("results") / device_slug(info.name) / "sweep";
 

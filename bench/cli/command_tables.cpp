@@ -9,6 +9,8 @@
 #include "bench/cli/commands.hpp"
 #include "bench/cli/option_types.hpp"
 #include "bench/cli/generator_options.hpp"
+#include "bench/cli/timed_generators.hpp"
+#include "bench/cli/timing_flags.hpp"
 #include "harness/generators/testing/debug_slowdown.hpp"
 #include "bench/cli/gpu_session.hpp"
 #include "harness/core/error.hpp"
@@ -53,11 +55,6 @@ int run_tables_command(const TablesCommandOptions& c) {
   o.tables.clear();
   if (o.captures.empty())
     for (const auto& t : c.tables) o.tables.push_back(std::stoi(t));
-  const GeneratorOptions& gen = c.gen;
-  if (!gen.generators.empty()) o.generators = gen.generators;
-  o.camera_vsgls = gen.camera_vsgls;
-  o.light_vsgls = gen.light_vsgls;
-  o.generator = gen.config;
   o.timing.cold = c.cold;
   o.copy_bandwidth.bytes = uint64_t{c.copy_mib} << 20;
   o.json_only = c.json_only;
@@ -73,34 +70,14 @@ int run_tables_command(const TablesCommandOptions& c) {
 
   // Defaults by device class (timing_runner.hpp), then the presets, then explicit options.
   const DeviceInfo& info = session.device().info();
-  // On a CPU device (lavapipe) a k-means replay of both views takes seconds, so the full
-  // protocol (2 warm-ups + 10 rounds) of all six generators would take ~20 minutes: there the
-  // default is the paper's four; the segmented-sum extras are one --generators away.
-  if (gen.generators.empty() && info.type == VK_PHYSICAL_DEVICE_TYPE_CPU) {
-    std::vector<std::string> paper;
-    for (const auto& g : o.generators)
-      if (generator_in_paper(g)) paper.push_back(g);
-    o.generators = paper;
-    std::fprintf(stderr, "CPU device: timing the paper's four generators (add the extras with --generators)\n");
-  }
+  apply_timed_generators(c.gen, info, o);
   o.timing = [&] {
     TimingOptions t = TimingOptions::defaults_for(info);
     t.cold = o.timing.cold;
     return t;
   }();
-  if (quick) {  // CI / tests: the protocol's shape, not its statistics
-    o.quick = true;
-    o.timing.min_repetitions = 3;
-    o.timing.max_repetitions = 3;
-  }
-  if (c.warmup) o.timing.warmup = *c.warmup;
-  if (c.repetitions) {
-    o.timing.min_repetitions = *c.repetitions;
-    o.timing.max_repetitions = std::max(o.timing.max_repetitions, o.timing.min_repetitions);
-  }
-  if (c.max_repetitions) o.timing.max_repetitions = *c.max_repetitions;
-  if (c.noise_target) o.timing.noise_target = *c.noise_target;
-  if (c.time_cap) o.timing.time_cap_s = *c.time_cap;
+  o.quick = quick;
+  apply_timing_flags(c, o.timing);
   o.out_dir = out ? std::filesystem::path(*out) : std::filesystem::path("results") / device_slug(info.name);
 
   std::fprintf(stderr,

@@ -25,6 +25,19 @@ std::string utc_now() {
 
 }  // namespace
 
+nlohmann::ordered_json run_json(const TablesOptions& o) {
+  ojson run{{"started_utc", utc_now()},
+            {"validation_layer", o.validation},
+            {"quick", o.quick},
+            {"protocol_compliant", o.timing.warmup >= 2 && o.timing.min_repetitions >= 10},
+            {"clocks_locked_claimed", o.clocks_locked},
+            {"clocks_note",
+             "Vulkan cannot lock GPU clocks: lock them outside (e.g. `nvidia-smi -lgc <MHz>` on "
+             "NVIDIA, `rocm-smi --setperfdeterminism <MHz>` on AMD) and pass --clocks-locked"}};
+  if (!o.debug_slow.empty()) run["debug_slow"] = o.debug_slow;  // TEST-ONLY: these timings are inflated
+  return run;
+}
+
 RunContext make_run_context(const DeviceInfo& device, const TablesOptions& o) {
   RunContext out;
   ReportContext& ctx = out.report;
@@ -33,14 +46,7 @@ RunContext make_run_context(const DeviceInfo& device, const TablesOptions& o) {
   ctx.paper_path = o.paper_tables.string();
   out.schema = read_json_file(o.schema, "the table schema", " (use --schema FILE)");
   ctx.build = build_json(o.source_dir);
-  ctx.run = ojson{{"started_utc", utc_now()},
-                  {"validation_layer", o.validation},
-                  {"quick", o.quick},
-                  {"protocol_compliant", o.timing.warmup >= 2 && o.timing.min_repetitions >= 10},
-                  {"clocks_locked_claimed", o.clocks_locked},
-                  {"clocks_note", "Vulkan cannot lock GPU clocks: lock them outside (e.g. `nvidia-smi -lgc <MHz>` on "
-                                  "NVIDIA, `rocm-smi --setperfdeterminism <MHz>` on AMD) and pass --clocks-locked"}};
-  if (!o.debug_slow.empty()) ctx.run["debug_slow"] = o.debug_slow;  // TEST-ONLY: these timings are inflated
+  ctx.run = run_json(o);
   // Table 3 counts the sources of the path this run takes (FIS: pyramid path and mip strategy).
   const GeneratorConfig resolved = resolve_fis_config(device, o.generator);
   for (const auto& g : generator_names())

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <ctime>
 #include <set>
 
 #include "harness/capture/capture_files.hpp"
@@ -59,15 +58,6 @@ void check_options(const SweepOptions& o) {
     throw UsageError("--time-budget must be a positive number of seconds");
 }
 
-std::string utc_now() {
-  const std::time_t now = std::time(nullptr);
-  std::tm tm{};
-  gmtime_r(&now, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return buf;
-}
-
 PointPdfFrequency frequency_of(const Capture& capture, ViewKind kind) {
   const ViewImage& view = capture.view(kind);
   const glm::vec3 source = kind == ViewKind::kCamera ? capture.meta.camera.position : capture.meta.light.position;
@@ -100,11 +90,7 @@ SweepOutcome run_sweep(Device& device, const SweepOptions& o, const std::functio
   SweepContext ctx;
   ctx.device = to_json(device.info());
   ctx.build = build_json(o.tables.source_dir);
-  ctx.run = ojson{{"started_utc", utc_now()},
-                  {"validation_layer", o.tables.validation},
-                  {"quick", o.tables.quick},
-                  {"protocol_compliant", o.tables.timing.warmup >= 2 && o.tables.timing.min_repetitions >= 10},
-                  {"clocks_locked_claimed", o.tables.clocks_locked}};
+  ctx.run = run_json(o.tables);
   std::optional<NamedScene> scene;
   if (!o.scene.empty()) scene = load_named_scene(o.scene, o.scenes);
 
