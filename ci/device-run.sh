@@ -6,7 +6,7 @@
 #   2 record sponza and conference-room    6 vsgl-mipbench (the three mipmapping strategies)
 #   3 verify both captures: both pyramid   7 vsgl-gbench
 #     paths, every generator               8 the test suite under the validation layer
-#   4 tables (texture path, the default)
+#   4 tables (texture path, the default)  7b a short sweep: N x PDF sharpness (90 s at most)
 # The paper's scenes come from the pack's scenes.tar.xz (ci/device-pack.sh); a pack without them
 # records the procedural stand-ins atrium and conference instead, and run.log says so. run.log
 # lists the model files carried (size, SHA-256).
@@ -18,19 +18,19 @@
 #   bash ci/device-run.sh OUT [--quick] [--budget SECONDS]
 #   --quick       the rehearsal on lavapipe: 480x272 captures with a 128^2 RSM, tables --quick,
 #                 3 replays per benchmark on Table 1 only, vsgl-gbench for the FIS generators
-#   --budget S    wall-time budget of the whole run [450: the 8 minutes a lent machine's command gets,
+#   --budget S    wall-time budget of the whole run [540: the 10 minutes a lent machine's command gets,
 #                 less the machine's start-up and the transfers]
 # Exit: 0 if every step ran and passed, 1 otherwise (run.log names the steps).
 #
 # Through this workplace's device tool: here `bash ci/device-pack.sh --gl`, then one call of
-#   run(command="bash ci/device-run.sh $OUT", carry=[".device-pack", ".gl"], timeout_s=540)
+#   run(command="bash ci/device-run.sh $OUT", carry=[".device-pack", ".gl"], timeout_s=600)
 # brings back $OUT/results.tar.gz and $OUT/run.log; give the machine back after it.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 out=${1:?usage: bash ci/device-run.sh OUT [--quick] [--budget SECONDS]}
 shift
 quick=false
-budget=450
+budget=540
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --quick) quick=true ;;
@@ -97,11 +97,13 @@ if $quick; then
   tables_quick=(--quick)
   replays=(--vsgl_replays=3 --vsgl_tables=1)
   gbench_quick=(--vsgl_generators=fis_tok15,fis_modified)
+  sweep_args=(--quick --generators fis_tok15,fis_modified --axis vsgls=256,1024 --axis pdf-sharpness=1,2)
 else
   size=""
   tables_quick=()
   replays=()
   gbench_quick=()
+  sweep_args=(--axis vsgls=256:16384:x4 --axis pdf-sharpness=0.5,1,2,4 --time-budget 60)
 fi
 export size
 
@@ -148,6 +150,11 @@ step mipbench 60 15 "$bin/vsgl-mipbench" --vsgl_captures="$captures" --vsgl_asse
   --benchmark_out="$run/mipbench.json" --benchmark_out_format=json
 step gbench 90 20 "$bin/vsgl-gbench" --vsgl_captures="$captures" --vsgl_assets="$assets" "${replays[@]}" "${gbench_quick[@]}" \
   --benchmark_out="$run/gbench.json" --benchmark_out_format=json
+
+# 7b. A short sweep (DESIGN.md §10.1) on Table 1's capture: N on both views times the PDF's
+# sharpness gamma, with the fitted growth of every phase; 60 s of timing split over its points.
+step sweep 90 30 "$bin/vsgl-bench" sweep --capture "$captures/${scenes[0]}" "${sweep_args[@]}" --out "$run/sweep" \
+  --schema results/schema/sweep.schema.json --no-progress
 
 # 8. The test suite, last, on this machine's default device under the validation layer (the
 # fixture fails a test on any validation message). The tests hold the absolute paths they were
