@@ -102,14 +102,7 @@ BenchRun parse_table_json(const json& doc, const Reader& r) {
   json workload = m.config;
   for (const char* key : {"timing", "generators", "kmeans_sum", "sampler"}) workload.erase(key);
   t.workload = unordered(workload);
-  t.scene = m.scene;
-  if (!t.scene && m.capture.scene) {  // schema 1 named the scene only under /capture
-    SceneIdentity s;
-    s.name = *m.capture.scene;
-    s.kind = m.capture.source ? SceneKind::kUser : SceneKind::kStandIn;
-    s.name_only = true;
-    t.scene = s;
-  }
+  t.scene = m.timed_scene();
   run.tables[table] = t;
 
   const std::string prefix = "table" + std::to_string(table) + "/";

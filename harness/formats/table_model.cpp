@@ -445,30 +445,42 @@ CaptureSummary read_capture(const Reader& r, const ojson& c) {
   return out;
 }
 
-// Schema 3's object; schema 1-2's plain name, its kind inferred from what else the file says.
+// A scene known by name only (schema 1-2), its kind inferred from what else the file says: a
+// capture of a model file is the user's, a paper table's procedural scene is its stand-in.
+SceneIdentity name_only_scene(const std::string& name, const TableModel& m) {
+  SceneIdentity s;
+  s.name = name;
+  s.name_only = true;
+  if (m.capture.source) {
+    s.kind = SceneKind::kUser;
+    s.model_file = m.capture.source->file;
+    s.content_hash = m.capture.source->content_hash;
+    s.triangles = m.capture.source->triangles;
+  } else {
+    s.kind = m.table ? SceneKind::kStandIn : SceneKind::kProcedural;
+  }
+  return s;
+}
+
+// Schema 3's object; schema 2's plain name.
 std::optional<SceneIdentity> read_scene(const Reader& r, const ojson& doc, const TableModel& m) {
   const auto it = doc.find("scene");
   if (it == doc.end()) return std::nullopt;
-  SceneIdentity s;
   if (it->is_string()) {
     if (m.schema_version >= 3) r.fail("/scene", "is a plain name; schema 3 gives an object {name, kind, ...}");
-    s.name = it->get<std::string>();
-    s.name_only = true;
-    if (m.capture.source) {
-      s.kind = SceneKind::kUser;
-      s.model_file = m.capture.source->file;
-      s.content_hash = m.capture.source->content_hash;
-      s.triangles = m.capture.source->triangles;
-    } else {
-      s.kind = m.table ? SceneKind::kStandIn : SceneKind::kProcedural;
-    }
-    return s;
+    return name_only_scene(it->get<std::string>(), m);
   }
   if (!it->is_object()) r.wrong_type(*it, "/scene", "an object (schema 3) or a scene name (schema 1-2)");
   return scene_identity_from_json(*it, r.where(), "/scene");
 }
 
 }  // namespace
+
+std::optional<SceneIdentity> TableModel::timed_scene() const {
+  if (scene) return scene;
+  if (capture.scene) return name_only_scene(*capture.scene, *this);  // schema 1: only /capture/scene
+  return std::nullopt;
+}
 
 const GeneratorTiming* TableModel::find_generator(const std::string& name) const {
   for (const GeneratorTiming& g : generators)

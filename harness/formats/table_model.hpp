@@ -253,6 +253,9 @@ struct TableModel {
   std::optional<Table3Counting> table3_counting;
   std::optional<std::vector<TableClaim>> claims;
 
+  // The scene the run timed: `scene`, else (schema 1) the capture's scene name, its kind inferred
+  // as for a schema 2 name. Not written back: only `scene` is.
+  std::optional<SceneIdentity> timed_scene() const;
   const GeneratorTiming* find_generator(const std::string& name) const;
   // config.views.<view>.vsgl_count; throws InputError when absent.
   int vsgl_count(const std::string& view) const;
