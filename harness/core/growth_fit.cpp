@@ -4,29 +4,17 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <random>
 #include <set>
 #include <tuple>
 #include <utility>
 
+#include "harness/core/bootstrap.hpp"
 #include "harness/core/error.hpp"
 #include "harness/core/statistics.hpp"
 #include "harness/core/text_format.hpp"
 
 namespace vsgl {
 namespace {
-
-// A uniform index below n from the 64-bit engine by rejection (no modulo bias). Not
-// std::uniform_int_distribution: its algorithm differs between standard libraries, and the
-// interval must be the same bytes everywhere; std::mt19937_64's sequence is fixed by the standard.
-std::size_t uniform_index(std::mt19937_64& rng, std::size_t n) {
-  const std::uint64_t bound = n;
-  const std::uint64_t threshold = (0 - bound) % bound;  // 2^64 mod n
-  for (;;) {
-    const std::uint64_t r = rng();
-    if (r >= threshold) return static_cast<std::size_t>(r % bound);
-  }
-}
 
 double median_of(std::vector<double>& values) {
   std::sort(values.begin(), values.end());
@@ -105,21 +93,16 @@ GrowthFit fit_growth(const std::vector<GrowthPoint>& points, const GrowthFitOpti
 
   // Bootstrap: every replicate draws each point's rounds anew, in point order, so the sequence
   // of draws (and the interval) depends only on the input and the seed.
-  std::mt19937_64 rng(options.seed);
-  std::vector<double> slopes(options.resamples), draw, log_boot(points.size());
+  BootstrapSampler sampler(options.seed);
+  std::vector<double> slopes(options.resamples), log_boot(points.size());
   for (std::size_t b = 0; b < options.resamples; ++b) {
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      const std::vector<double>& s = points[i].samples_ms;
-      draw.resize(s.size());
-      for (double& d : draw) d = s[uniform_index(rng, s.size())];
-      log_boot[i] = std::log(median_of(draw));
-    }
+    for (std::size_t i = 0; i < points.size(); ++i)
+      log_boot[i] = std::log(sampler.resampled_median(points[i].samples_ms));
     slopes[b] = line_fit(log_x, log_boot).first;
   }
-  std::sort(slopes.begin(), slopes.end());
-  const double tail = (1 - options.confidence) / 2;
-  fit.low = quantile_sorted(slopes, tail);
-  fit.high = quantile_sorted(slopes, 1 - tail);
+  const PercentileInterval interval = percentile_interval(slopes, options.confidence);
+  fit.low = interval.low;
+  fit.high = interval.high;
   fit.confidence = options.confidence;
   fit.points = points.size();
   fit.distinct_x = distinct.size();
