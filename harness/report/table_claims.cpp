@@ -19,7 +19,6 @@ using ojson = nlohmann::ordered_json;
 constexpr double kOverheadFloorUs = 10.0;       // claim 1: modified - Tok15 within max(10 us, 1 %)
 constexpr double kOverheadFraction = 0.01;
 constexpr double kKmeansOverModifiedMin = 7.0;  // claim 2: k-means at least 7x the modified FIS
-constexpr double kFisPdfChangeMax = 0.10;       // claim 3: FIS moves at most 10 % from Table 1 to 2
 constexpr double kLinesRatioMin = 4.0;          // claim 6: k-means at least 4x the lines of FIS
 
 std::string number(double v) { return number_text(v, 6); }

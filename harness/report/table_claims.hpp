@@ -16,6 +16,11 @@ namespace vsgl {
 inline constexpr const char* kInconclusivePrefix = "inconclusive";
 inline constexpr const char* kInconclusiveNote = "inconclusive at this noise";
 
+// Claim 3 (the paper's "FIS cost is almost independent of the PDF"): how far a FIS total may move
+// when only the PDF changes, between the two tables' scenes here and along the sweep's
+// pdf-sharpness axis (sweep/pdf_independence.hpp).
+inline constexpr double kFisPdfChangeMax = 0.10;
+
 struct OverheadVerdict {
   std::optional<bool> holds;
   std::string note;

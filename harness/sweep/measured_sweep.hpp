@@ -39,6 +39,7 @@ struct MeasuredSweep {
   std::vector<SweepAxis> axes;
   std::vector<std::string> generators;
   SceneIdentity scene;
+  int paper_table = 0;  // the paper table whose input the scene is (report/tables_run.hpp paper_table_of); 0: none
   std::optional<double> time_budget_s;
   std::vector<SweepPointResult> points;
 };

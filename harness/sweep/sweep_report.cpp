@@ -6,6 +6,8 @@
 #include "harness/compare/loglog_plot.hpp"
 #include "harness/core/statistics.hpp"
 #include "harness/core/text_format.hpp"
+#include "harness/report/paper_tables.hpp"
+#include "harness/sweep/sweep_expectations.hpp"
 
 namespace vsgl {
 namespace {
@@ -58,9 +60,57 @@ std::string file_part(std::string s) {
   return s;
 }
 
+// Whether a fit's series was timed at the paper's setup in everything but the plotted axis (read
+// off its first point's config: the view's size, N and K, and γ), so the paper's time belongs on it.
+bool at_paper_setup(const MeasuredSweep& s, const SweepFit& f, const nlohmann::json& paper) {
+  const SweepParameter plotted = s.axes[f.axis].parameter;
+  const SweepPointResult& p = s.points[f.points.front()];
+  const auto& view = p.config.at("views").at(f.view);
+  const double area = view.at("width").get<double>() * view.at("height").get<double>();
+  const bool camera = f.view == "camera_view";
+  const bool n_axis = plotted == SweepParameter::kVsgls || plotted == SweepParameter::kCameraVsgls ||
+                      plotted == SweepParameter::kLightVsgls;
+  const auto matches = [&](SweepParameter q, double value) {
+    const std::optional<double> want = paper_reference_x(paper, q, f.view);
+    return want && *want == value;
+  };
+  if (!n_axis && !matches(SweepParameter::kVsgls, view.at("vsgl_count").get<double>())) return false;
+  const SweepParameter size = camera ? SweepParameter::kGbuffer : SweepParameter::kRsm;
+  if (plotted != size && !matches(size, area)) return false;
+  if (plotted != SweepParameter::kK && !matches(SweepParameter::kK, p.config.at("K").get<double>())) return false;
+  return plotted == SweepParameter::kPdfSharpness || p.pdf_sharpness.value_or(1.0) == 1.0;
+}
+
 }  // namespace
 
-ojson sweep_json(const MeasuredSweep& s, const std::vector<SweepFit>& fits, const SweepContext& ctx) {
+std::optional<double> paper_reference_x(const nlohmann::json& paper, SweepParameter p, const std::string& view) {
+  if (!parameter_touches_view(p, view) || !paper.is_object() || !paper.contains("setup")) return std::nullopt;
+  const nlohmann::json& setup = paper.at("setup");
+  const auto number = [&](const char* key) -> std::optional<double> {
+    if (!setup.contains(key) || !setup.at(key).is_number()) return std::nullopt;
+    return setup.at(key).get<double>();
+  };
+  const auto area = [&](const char* key) -> std::optional<double> {
+    if (!setup.contains(key) || !setup.at(key).is_array() || setup.at(key).size() != 2) return std::nullopt;
+    const nlohmann::json& wh = setup.at(key);
+    if (!wh[0].is_number() || !wh[1].is_number()) return std::nullopt;
+    return wh[0].get<double>() * wh[1].get<double>();
+  };
+  switch (p) {
+    case SweepParameter::kVsgls:
+    case SweepParameter::kCameraVsgls:
+    case SweepParameter::kLightVsgls: return number(view == "camera_view" ? "vsgls_camera_view" : "vsgls_light_view");
+    case SweepParameter::kK: return number("K");
+    case SweepParameter::kGbuffer: return area("gbuffer");
+    case SweepParameter::kRsm: return area("rsm");
+    case SweepParameter::kPdfSharpness: return 1.0;
+    case SweepParameter::kKmeansIterations: return std::nullopt;
+  }
+  return std::nullopt;
+}
+
+ojson sweep_json(const MeasuredSweep& s, const std::vector<SweepFit>& fits, const SweepContext& ctx,
+                 const std::vector<PdfIndependence>& claims) {
   ojson axes = ojson::array();
   for (const SweepAxis& a : s.axes) {
     ojson values = ojson::array();
@@ -146,29 +196,37 @@ ojson sweep_json(const MeasuredSweep& s, const std::vector<SweepFit>& fits, cons
     }
     fit_list.push_back(j);
   }
+  ojson claim_list = ojson::array();
+  const std::string text = ctx.paper.is_object() && ctx.paper.contains("claims") && ctx.paper["claims"].size() > 2
+                               ? ctx.paper["claims"][2].get<std::string>()
+                               : std::string("FIS cost is almost independent of the PDF, k-means cost is not");
+  for (const PdfIndependence& c : claims) claim_list.push_back(to_json(c, text, ctx.informative));
   ojson budget = s.time_budget_s ? ojson(*s.time_budget_s) : ojson(nullptr);
-  return ojson{{"schema_version", kSweepSchemaVersion},
-               {"kind", "sweep"},
-               {"unit", "ms"},
-               {"device", ctx.device},
-               {"build", ctx.build},
-               {"run", ctx.run},
-               {"scene", to_json(s.scene)},
-               {"generators", s.generators},
-               {"axes", axes},
-               {"time_budget_s", budget},
-               {"time_budget_rule",
-                "each point's time cap is the budget / the number of points; the minimum "
-                "repetitions always run, so a point may exceed its cap"},
-               {"fit_method",
-                "least-squares slope of ln(median ms) over ln(growth_x) along one axis, the other axes "
-                "held (a slice); percentile bootstrap over each point's rounds (DESIGN.md §9.1); judged "
-                "against the expected slope ± tolerance"},
-               {"points", points},
-               {"fits", fit_list}};
+  ojson doc{{"schema_version", kSweepSchemaVersion},
+            {"kind", "sweep"},
+            {"unit", "ms"},
+            {"device", ctx.device},
+            {"build", ctx.build},
+            {"run", ctx.run},
+            {"scene", to_json(s.scene)},
+            {"generators", s.generators},
+            {"axes", axes},
+            {"time_budget_s", budget},
+            {"time_budget_rule",
+             "each point's time cap is the budget / the number of points; the minimum "
+             "repetitions always run, so a point may exceed its cap"},
+            {"fit_method",
+             "least-squares slope of ln(median ms) over ln(growth_x) along one axis, the other axes "
+             "held (a slice); percentile bootstrap over each point's rounds (DESIGN.md §9.1); judged "
+             "against the expected slope ± tolerance"},
+            {"points", points},
+            {"fits", fit_list}};
+  if (!claims.empty()) doc["claims"] = claim_list;
+  return doc;
 }
 
-std::string sweep_markdown(const MeasuredSweep& s, const std::vector<SweepFit>& fits) {
+std::string sweep_markdown(const MeasuredSweep& s, const std::vector<SweepFit>& fits,
+                           const std::vector<PdfIndependence>& claims) {
   std::string md = "# Sweep: " + scene_label(s.scene) + "\n\n";
   md += "Axes:";
   for (const SweepAxis& a : s.axes) md += " `" + a.spec + "`";
@@ -222,11 +280,29 @@ std::string sweep_markdown(const MeasuredSweep& s, const std::vector<SweepFit>& 
             var("light_view") + " |\n";
     }
   }
+  for (const PdfIndependence& c : claims) {
+    md += "\n## PDF independence" + (c.slice.empty() ? std::string() : " (" + slice_text(c.slice) + ")") + ": " +
+          verdict_word(c.holds) + "\n\nChange of each view's median total from γ=" + number_text(c.reference_gamma, 4) +
+          ", with 95 % bootstrap intervals; FIS must stay within ±" + number_text(100 * c.band, 3) +
+          " % and each paper k-means generator must move more than either FIS.\n\n";
+    md += "| generator | view |";
+    for (const GammaChange& g : c.spreads.front().changes) md += " γ=" + number_text(g.gamma, 4) + " |";
+    md += " spread |\n|---|---|";
+    for (std::size_t k = 0; k < c.spreads.front().changes.size(); ++k) md += "---:|";
+    md += "---:|\n";
+    const auto pct = [](double v) { return number_text(100 * v, 3) + " %"; };
+    for (const PdfSpread& p : c.spreads) {
+      md += "| " + p.generator + " | " + p.view + " |";
+      for (const GammaChange& g : p.changes) md += " " + pct(g.change) + " [" + pct(g.low) + ", " + pct(g.high) + "] |";
+      md += " " + pct(p.spread) + " [" + pct(p.low) + ", " + pct(p.high) + "] |\n";
+    }
+    if (!c.note.empty()) md += "\n" + c.note + "\n";
+  }
   return md;
 }
 
-std::vector<std::pair<std::string, std::string>> sweep_plots(const MeasuredSweep& s,
-                                                             const std::vector<SweepFit>& fits) {
+std::vector<std::pair<std::string, std::string>> sweep_plots(const MeasuredSweep& s, const std::vector<SweepFit>& fits,
+                                                             const nlohmann::json* paper) {
   std::vector<std::pair<std::string, std::string>> out;
   for (std::size_t a = 0; a < s.axes.size(); ++a) {
     std::vector<std::string> phases;
@@ -243,6 +319,14 @@ std::vector<std::pair<std::string, std::string>> sweep_plots(const MeasuredSweep
           const SampleStats st = summarize(point_samples(s.points[f.points[k]], f.generator, f.view, f.phase));
           ser.points.push_back(LogLogPoint{f.x[k], st.median, st.q1, st.q3, {}});
         }
+        if (paper != nullptr && s.paper_table > 0 && at_paper_setup(s, f, *paper))
+          if (const auto x = paper_reference_x(*paper, s.axes[a].parameter, f.view)) {
+            const std::string table = std::to_string(s.paper_table);
+            const std::optional<double> ms = phase == "total"
+                                                 ? paper_view_total(*paper, s.paper_table, f.generator, f.view)
+                                                 : paper_number(*paper, {"tables", table, f.generator, f.view, phase});
+            if (ms && *ms > 0) ser.references.push_back(LogLogReference{*x, *ms, "paper, Table " + table, {}});
+          }
         if (!ser.points.empty()) series.push_back(std::move(ser));
       }
       if (series.empty()) continue;

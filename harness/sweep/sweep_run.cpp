@@ -15,6 +15,7 @@
 #include "harness/quality/quality_metrics.hpp"
 #include "harness/reference/fis_reference.hpp"
 #include "harness/report/capture_scene_identity.hpp"
+#include "harness/report/paper_tables.hpp"
 #include "harness/report/run_context.hpp"
 #include "harness/report/table_measurement.hpp"
 #include "harness/scene/capture_provisioning.hpp"
@@ -91,6 +92,8 @@ SweepOutcome run_sweep(Device& device, const SweepOptions& o, const std::functio
   ctx.device = to_json(device.info());
   ctx.build = build_json(o.tables.source_dir);
   ctx.run = run_json(o.tables);
+  ctx.paper = load_paper_tables(o.tables.paper_tables);
+  ctx.informative = device.info().type == VK_PHYSICAL_DEVICE_TYPE_CPU;
   std::optional<NamedScene> scene;
   if (!o.scene.empty()) scene = load_named_scene(o.scene, o.scenes);
 
@@ -141,7 +144,10 @@ SweepOutcome run_sweep(Device& device, const SweepOptions& o, const std::functio
       held_sizes = sizes;
     }
     r.capture_dir = o.capture ? o.capture->string() : sweep_capture_dir(o.captures_dir, o.scene, sizes).string();
-    if (i == 0) m.scene = capture_scene_identity(held.capture.meta);
+    if (i == 0) {
+      m.scene = capture_scene_identity(held.capture.meta);
+      m.paper_table = paper_table_of(held.capture.meta);
+    }
     std::optional<Capture> altered;
     if (gamma) {
       altered = sharpened_pdf_capture(held.capture, *gamma);
@@ -166,8 +172,9 @@ SweepOutcome run_sweep(Device& device, const SweepOptions& o, const std::functio
 
   SweepOutcome out;
   out.fits = sweep_fits(m);
+  out.claims = judge_pdf_independence(m, out.fits);
   try {
-    out.document = sweep_json(m, out.fits, ctx);
+    out.document = sweep_json(m, out.fits, ctx, out.claims);
     require_finite_numbers(out.document);
   } catch (const std::invalid_argument& e) {
     throw DeviceError(std::string("sweep: ") + e.what());
@@ -178,11 +185,11 @@ SweepOutcome run_sweep(Device& device, const SweepOptions& o, const std::functio
     for (const auto& p : problems) all += "\n  " + p;
     throw std::logic_error("the sweep does not conform to " + o.schema.string() + ":" + all);
   }
-  out.markdown = sweep_markdown(m, out.fits);
+  out.markdown = sweep_markdown(m, out.fits, out.claims);
   std::vector<std::pair<std::filesystem::path, std::string>> files;
   files.emplace_back(o.out_dir / "sweep.json", out.document.dump(2) + "\n");
   files.emplace_back(o.out_dir / "sweep.md", out.markdown);
-  for (auto& [name, svg] : sweep_plots(m, out.fits)) files.emplace_back(o.out_dir / name, std::move(svg));
+  for (auto& [name, svg] : sweep_plots(m, out.fits, &ctx.paper)) files.emplace_back(o.out_dir / name, std::move(svg));
   // Nothing is written until every file is complete and valid.
   std::filesystem::create_directories(o.out_dir);
   for (const auto& [path, text] : files) {

@@ -14,6 +14,7 @@
 
 #include "harness/report/tables_run.hpp"
 #include "harness/sweep/measured_sweep.hpp"
+#include "harness/sweep/pdf_independence.hpp"
 #include "harness/sweep/sweep_axis.hpp"
 
 namespace vsgl {
@@ -46,6 +47,7 @@ struct SweepEvent {
 struct SweepOutcome {
   MeasuredSweep measured;
   std::vector<SweepFit> fits;
+  std::vector<PdfIndependence> claims;  // on a pdf-sharpness axis
   nlohmann::ordered_json document;
   std::string markdown;
   std::vector<std::filesystem::path> written;

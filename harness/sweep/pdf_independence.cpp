@@ -1,0 +1,205 @@
+#include "harness/sweep/pdf_independence.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "harness/core/bootstrap.hpp"
+#include "harness/core/error.hpp"
+#include "harness/core/text_format.hpp"
+#include "harness/generators/generator_registry.hpp"
+#include "harness/report/table_claims.hpp"
+
+namespace vsgl {
+namespace {
+
+using ojson = nlohmann::ordered_json;
+
+std::string percent(double v) { return number_text(100 * v, 3) + "%"; }
+
+std::string interval_text(double v, double low, double high) {
+  return percent(v) + " [" + percent(low) + ", " + percent(high) + "]";
+}
+
+// The changes and spread of one case along γ, with their bootstrap intervals. Each replicate
+// resamples every point's rounds independently (the points are separate runs) and takes the
+// reference's median from the same replicate.
+PdfSpread spread_of(const MeasuredSweep& s, const SweepFit& f, std::size_t axis, std::size_t ref,
+                    const PdfIndependenceOptions& o) {
+  PdfSpread out;
+  out.generator = f.generator;
+  out.view = f.view;
+  const GeneratorDescriptor& d = generator_descriptor(f.generator);
+  out.fis = d.family == GeneratorFamily::kFis;
+  out.in_paper = d.in_paper;
+  const std::size_t n = f.points.size();
+  std::vector<const std::vector<double>*> samples(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    samples[k] = &point_samples(s.points[f.points[k]], f.generator, f.view, "total");
+    if (samples[k]->size() < 2)
+      throw InputError("pdf independence: " + f.generator + " " + f.view + " has " +
+                       std::to_string(samples[k]->size()) + " round(s) at point " + std::to_string(f.points[k]) +
+                       "; an interval needs at least 2");
+  }
+  const auto median = [](std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return quantile_sorted(v, 0.5);
+  };
+  const double ref_median = median(*samples[ref]);
+  out.changes.resize(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    GammaChange& c = out.changes[k];
+    c.point = f.points[k];
+    c.gamma = s.axes[axis].values[s.points[c.point].value_index[axis]].value;
+    c.change = median(*samples[k]) / ref_median - 1;
+    out.spread = std::max(out.spread, std::abs(c.change));
+  }
+  BootstrapSampler sampler(o.seed);
+  std::vector<std::vector<double>> changes(n, std::vector<double>(o.resamples));
+  std::vector<double> spreads(o.resamples), medians(n);
+  for (std::size_t b = 0; b < o.resamples; ++b) {
+    for (std::size_t k = 0; k < n; ++k) medians[k] = sampler.resampled_median(*samples[k]);
+    double spread = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      changes[k][b] = medians[k] / medians[ref] - 1;
+      spread = std::max(spread, std::abs(changes[k][b]));
+    }
+    spreads[b] = spread;
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    const PercentileInterval i = percentile_interval(changes[k], o.confidence);
+    out.changes[k].low = i.low;
+    out.changes[k].high = i.high;
+  }
+  const PercentileInterval i = percentile_interval(spreads, o.confidence);
+  out.low = i.low;
+  out.high = i.high;
+  return out;
+}
+
+// The claim's rule on one slice's spreads (the header says it in words).
+void judge(PdfIndependence& j) {
+  std::vector<std::string> refuted, open;
+  bool any_fis = false, any_kmeans = false;
+  for (const PdfSpread& p : j.spreads) {
+    if (p.fis) any_fis = true;
+    if (!p.fis && p.in_paper) any_kmeans = true;
+    if (!p.fis) continue;
+    for (const GammaChange& c : p.changes) {
+      const std::string what = p.generator + " " + p.view + " at γ=" + number_text(c.gamma, 4) + " moves " +
+                               interval_text(c.change, c.low, c.high);
+      if (c.low > j.band || c.high < -j.band) refuted.push_back(what + ", wholly outside ±" + percent(j.band));
+      else if (c.low < -j.band || c.high > j.band) open.push_back(what + ", across ±" + percent(j.band));
+    }
+  }
+  for (const PdfSpread& k : j.spreads) {
+    if (k.fis || !k.in_paper) continue;
+    for (const PdfSpread& f : j.spreads) {
+      if (!f.fis || f.view != k.view) continue;
+      const std::string what = k.generator + " spread " + interval_text(k.spread, k.low, k.high) + " vs " +
+                               f.generator + " " + interval_text(f.spread, f.low, f.high) + " on " + k.view;
+      if (k.high < f.low) refuted.push_back(what + ": k-means moves less");
+      else if (!(k.low > f.high)) open.push_back(what + ": the intervals overlap");
+    }
+  }
+  // The first few reasons; the JSON's "measured" has every number.
+  const auto joined = [](const std::vector<std::string>& v) {
+    constexpr std::size_t kShown = 3;
+    std::string s;
+    for (std::size_t i = 0; i < v.size() && i < kShown; ++i) s += (s.empty() ? "" : "; ") + v[i];
+    if (v.size() > kShown) s += "; and " + std::to_string(v.size() - kShown) + " more";
+    return s;
+  };
+  if (!any_fis || !any_kmeans) {
+    j.holds = std::nullopt;
+    j.note = "needs a FIS generator and a paper k-means generator on the pdf-sharpness axis";
+  } else if (!refuted.empty()) {
+    j.holds = false;
+    j.note = joined(refuted);
+  } else if (!open.empty()) {
+    j.holds = std::nullopt;
+    j.note = std::string(kInconclusivePrefix) + ": " + joined(open);
+  } else {
+    j.holds = true;
+  }
+}
+
+}  // namespace
+
+std::string verdict_word(const std::optional<bool>& holds) {
+  return holds ? (*holds ? "holds" : "does not hold") : "inconclusive";
+}
+
+std::vector<PdfIndependence> judge_pdf_independence(const MeasuredSweep& s, const std::vector<SweepFit>& fits,
+                                                    const PdfIndependenceOptions& o) {
+  std::vector<PdfIndependence> out;
+  std::optional<std::size_t> axis;
+  for (std::size_t a = 0; a < s.axes.size(); ++a)
+    if (s.axes[a].parameter == SweepParameter::kPdfSharpness) axis = a;
+  if (!axis) return out;
+  std::map<std::string, std::size_t> slice_index;
+  for (const SweepFit& f : fits) {
+    if (f.axis != *axis || f.phase != "total") continue;
+    const std::string key = slice_text(f.slice);
+    if (!slice_index.contains(key)) {
+      slice_index[key] = out.size();
+      PdfIndependence j;
+      j.slice = f.slice;
+      j.band = kFisPdfChangeMax;
+      j.confidence = o.confidence;
+      j.resamples = o.resamples;
+      out.push_back(std::move(j));
+    }
+    PdfIndependence& j = out[slice_index.at(key)];
+    if (f.points.size() < 2)
+      throw InputError("pdf independence: the pdf-sharpness axis needs at least 2 values of γ" +
+                       (key.empty() ? std::string() : " at " + key));
+    // The capture's own PDF (γ = 1) when timed, else the first γ.
+    std::size_t ref = 0;
+    for (std::size_t k = 0; k < f.points.size(); ++k)
+      if (s.axes[*axis].values[s.points[f.points[k]].value_index[*axis]].value == 1.0) ref = k;
+    j.reference_gamma = s.axes[*axis].values[s.points[f.points[ref]].value_index[*axis]].value;
+    j.spreads.push_back(spread_of(s, f, *axis, ref, o));
+  }
+  for (PdfIndependence& j : out) judge(j);
+  return out;
+}
+
+ojson to_json(const PdfIndependence& j, const std::string& text, bool informative) {
+  ojson slice = ojson::object();
+  for (const auto& [name, value] : j.slice) slice[name] = value;
+  ojson measured = ojson::array();
+  for (const PdfSpread& p : j.spreads) {
+    ojson changes = ojson::array();
+    for (const GammaChange& c : p.changes)
+      changes.push_back(
+          ojson{{"gamma", c.gamma}, {"point", c.point}, {"change", c.change}, {"low", c.low}, {"high", c.high}});
+    measured.push_back(ojson{{"generator", p.generator},
+                             {"view", p.view},
+                             {"family", p.fis ? "fis" : "kmeans"},
+                             {"in_paper", p.in_paper},
+                             {"spread", p.spread},
+                             {"spread_low", p.low},
+                             {"spread_high", p.high},
+                             {"changes", changes}});
+  }
+  return ojson{
+      {"id", "pdf_independence"},
+      {"text", text},
+      {"axis", "pdf-sharpness"},
+      {"slice", slice},
+      {"criterion", "change of each view's median total from γ=" + number_text(j.reference_gamma, 4) + " (bootstrap " +
+                        number_text(100 * j.confidence, 3) + "% intervals, " + std::to_string(j.resamples) +
+                        " resamples): every FIS change's interval within ±" + percent(j.band) +
+                        " at every γ, and each paper k-means generator's spread (max |change| over γ) above "
+                        "every FIS generator's on the same view; a FIS interval wholly outside the band or a "
+                        "k-means spread wholly below a FIS one: does not hold; otherwise inconclusive"},
+      {"reference_gamma", j.reference_gamma},
+      {"band", j.band},
+      {"measured", measured},
+      {"holds", j.holds ? ojson(*j.holds) : ojson(nullptr)},
+      {"note", j.note},
+      {"informative", informative}};
+}
+
+}  // namespace vsgl

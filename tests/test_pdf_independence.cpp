@@ -1,0 +1,202 @@
+// The PDF-independence claim judged on a pdf-sharpness sweep (harness/sweep/pdf_independence.hpp)
+// and the paper's point on the sweep plots (sweep_report.hpp), from synthetic samples: no device.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <string>
+
+#include "harness/core/json_schema_subset.hpp"
+#include "harness/report/paper_tables.hpp"
+#include "harness/sweep/pdf_independence.hpp"
+#include "harness/sweep/sweep_report.hpp"
+
+namespace vsgl {
+namespace {
+
+const std::filesystem::path kSource = VSGL_SOURCE_DIR;
+
+// Seven rounds around `ms`, ±1 %: noise for the bootstrap, far below the 10 % band.
+std::vector<double> rounds(double ms) {
+  return {ms * 0.99, ms * 1.0, ms * 1.01, ms * 0.995, ms * 1.005, ms * 0.998, ms * 1.002};
+}
+
+// total(generator, view, x) in ms at each point of one axis, four generators on both views, the
+// config at the paper's setup (1920x1088 G-buffer, 512 RSM, its N, K 1).
+using TotalFn = std::function<double(const std::string& generator, const std::string& view, double x)>;
+
+MeasuredSweep sweep_of(const std::string& spec, const TotalFn& total) {
+  MeasuredSweep s;
+  s.axes = {parse_axis_spec(spec)};
+  s.generators = {"fis_tok15", "fis_modified", "kmeans_2d", "kmeans_3d"};
+  s.scene = SceneIdentity{"tiny", SceneKind::kProcedural};
+  for (std::size_t i = 0; i < s.axes[0].values.size(); ++i) {
+    const AxisValue& v = s.axes[0].values[i];
+    const bool gamma = s.axes[0].parameter == SweepParameter::kPdfSharpness;
+    const bool n_axis = s.axes[0].parameter == SweepParameter::kVsgls;
+    SweepPointResult p;
+    p.value_index = {i};
+    if (gamma) p.pdf_sharpness = v.value;
+    const auto view_config = [&](uint32_t w, uint32_t h, uint32_t n) {
+      return nlohmann::ordered_json{{"width", w}, {"height", h}, {"vsgl_count", n_axis ? v.value : n}};
+    };
+    p.config = nlohmann::ordered_json{
+        {"views", {{"camera_view", view_config(1920, 1088, 2048)}, {"light_view", view_config(512, 512, 1024)}}},
+        {"K", 1.0},
+        {"kmeans_iterations", 4},
+        {"timing", nlohmann::ordered_json::object()}};
+    p.capture = nlohmann::ordered_json{{"hashes", nlohmann::ordered_json::object()},
+                                       {"gbuffer", {{"width", 1920}, {"height", 1088}}},
+                                       {"rsm", {{"width", 512}, {"height", 512}}},
+                                       {"pdf_altered_in_memory", gamma}};
+    for (const std::string& g : s.generators)
+      for (const char* view : {"camera_view", "light_view"}) {
+        CaseTiming c;
+        c.generator = g;
+        c.view = view;
+        c.phases = {"only"};
+        c.dispatch_count = 2;
+        c.phase_ms = {rounds(total(g, view, v.value))};
+        c.total_ms = rounds(total(g, view, v.value));
+        p.timing.cases.push_back(c);
+      }
+    p.timing.repetitions = 7;
+    p.timing.stop_reason = "max_repetitions";
+    s.points.push_back(std::move(p));
+  }
+  return s;
+}
+
+bool is_fis(const std::string& g) { return g.rfind("fis", 0) == 0; }
+
+// The one judgement of a single-axis sweep.
+PdfIndependence only(const std::vector<PdfIndependence>& v) {
+  EXPECT_EQ(v.size(), 1u);
+  return v.at(0);
+}
+
+TEST(PdfIndependence, HoldsWhenFisStaysFlatAndKmeansMovesWithGamma) {
+  const MeasuredSweep s = sweep_of("pdf-sharpness=0,0.5,1,2,4", [](const std::string& g, const std::string&, double y) {
+    return is_fis(g) ? 2.0 : 10.0 * (1 + 0.25 * y);
+  });
+  const auto claims = judge_pdf_independence(s, sweep_fits(s));
+  const PdfIndependence c = only(claims);
+  EXPECT_EQ(c.reference_gamma, 1.0);
+  ASSERT_EQ(c.spreads.size(), 8u);
+  ASSERT_TRUE(c.holds.has_value()) << c.note;
+  EXPECT_TRUE(*c.holds) << c.note;
+  for (const PdfSpread& p : c.spreads) {
+    ASSERT_EQ(p.changes.size(), 5u);
+    EXPECT_EQ(p.changes[2].change, 0.0);  // the reference, γ = 1
+    if (!p.fis) {
+      EXPECT_NEAR(p.spread, 2.0 / 1.25 - 1, 1e-9);  // γ = 4: 10 * 2 against 10 * 1.25
+      EXPECT_LE(p.low, p.spread);
+      EXPECT_GE(p.high, p.spread);
+    }
+  }
+  // The JSON carries it as a claim, valid against the schema; the markdown gives its verdict.
+  SweepContext ctx;
+  ctx.device = {{"name", "synthetic"},
+                {"type", "cpu"},
+                {"timestamps", true},
+                {"timestamp_valid_bits", 64},
+                {"timestamp_period_ns", 1.0}};
+  ctx.run = {{"started_utc", "2026-01-01T00:00:00Z"},
+             {"validation_layer", false},
+             {"quick", true},
+             {"protocol_compliant", false},
+             {"clocks_locked_claimed", false}};
+  ctx.build = nlohmann::ordered_json::object();
+  ctx.paper = load_paper_tables(kSource / "results/paper/paper_tables.json");
+  ctx.informative = true;
+  const auto doc = sweep_json(s, sweep_fits(s), ctx, claims);
+  ASSERT_TRUE(doc.contains("claims"));
+  EXPECT_EQ(doc["claims"][0]["id"], "pdf_independence");
+  EXPECT_EQ(doc["claims"][0]["holds"], true);
+  EXPECT_EQ(doc["claims"][0]["text"], ctx.paper["claims"][2]);
+  const auto schema = nlohmann::json::parse(std::ifstream(kSource / "results/schema/sweep.schema.json"));
+  const auto problems = validate_against_schema(nlohmann::json::parse(doc.dump()), schema);
+  EXPECT_TRUE(problems.empty()) << problems.front();
+  EXPECT_NE(sweep_markdown(s, sweep_fits(s), claims).find("## PDF independence: holds"), std::string::npos);
+  // Without claims there is no "claims" key (the schema's minItems would refuse an empty one).
+  EXPECT_FALSE(sweep_json(s, sweep_fits(s), ctx).contains("claims"));
+}
+
+TEST(PdfIndependence, DoesNotHoldWhenAFisTotalLeavesTheBand) {
+  const MeasuredSweep s = sweep_of("pdf-sharpness=0,1,4", [](const std::string& g, const std::string& view, double y) {
+    if (g == "fis_tok15" && view == std::string("light_view")) return 2.0 * (1 + 0.3 * y);
+    return is_fis(g) ? 2.0 : 10.0 * (1 + 0.25 * y);
+  });
+  const PdfIndependence c = only(judge_pdf_independence(s, sweep_fits(s)));
+  ASSERT_TRUE(c.holds.has_value());
+  EXPECT_FALSE(*c.holds);
+  EXPECT_NE(c.note.find("fis_tok15 light_view"), std::string::npos) << c.note;
+  EXPECT_NE(c.note.find("wholly outside"), std::string::npos) << c.note;
+}
+
+TEST(PdfIndependence, DoesNotHoldWhenKmeansMovesLessThanFis) {
+  const MeasuredSweep s = sweep_of("pdf-sharpness=0.5,1,2", [](const std::string& g, const std::string&, double y) {
+    return is_fis(g) ? 2.0 * (1 + 0.04 * y) : 10.0;
+  });
+  const PdfIndependence c = only(judge_pdf_independence(s, sweep_fits(s)));
+  ASSERT_TRUE(c.holds.has_value()) << c.note;
+  EXPECT_FALSE(*c.holds);
+  EXPECT_NE(c.note.find("k-means moves less"), std::string::npos) << c.note;
+}
+
+TEST(PdfIndependence, InconclusiveWhenNothingMovesAndWithoutKmeans) {
+  const MeasuredSweep flat = sweep_of(
+      "pdf-sharpness=0,1,2", [](const std::string& g, const std::string&, double) { return is_fis(g) ? 2.0 : 10.0; });
+  const PdfIndependence c = only(judge_pdf_independence(flat, sweep_fits(flat)));
+  EXPECT_FALSE(c.holds.has_value());
+  EXPECT_EQ(c.note.rfind("inconclusive: ", 0), 0u) << c.note;
+  EXPECT_NE(c.note.find("overlap"), std::string::npos) << c.note;
+
+  MeasuredSweep fis_only = flat;
+  for (SweepPointResult& p : fis_only.points)
+    std::erase_if(p.timing.cases, [](const CaseTiming& t) { return !is_fis(t.generator); });
+  const PdfIndependence d = only(judge_pdf_independence(fis_only, sweep_fits(fis_only)));
+  EXPECT_FALSE(d.holds.has_value());
+  EXPECT_NE(d.note.find("needs"), std::string::npos) << d.note;
+  // Another axis: no judgement at all.
+  const MeasuredSweep n = sweep_of("vsgls=64,128", [](const std::string&, const std::string&, double x) { return x; });
+  EXPECT_TRUE(judge_pdf_independence(n, sweep_fits(n)).empty());
+}
+
+TEST(SweepPaperReference, PlotsMarkThePaperAtItsSetupForAPaperScene) {
+  const nlohmann::json paper = load_paper_tables(kSource / "results/paper/paper_tables.json");
+  EXPECT_EQ(paper_reference_x(paper, SweepParameter::kVsgls, "camera_view"), 2048.0);
+  EXPECT_EQ(paper_reference_x(paper, SweepParameter::kVsgls, "light_view"), 1024.0);
+  EXPECT_EQ(paper_reference_x(paper, SweepParameter::kGbuffer, "camera_view"), 1920.0 * 1088.0);
+  EXPECT_FALSE(paper_reference_x(paper, SweepParameter::kGbuffer, "light_view").has_value());
+  EXPECT_EQ(paper_reference_x(paper, SweepParameter::kRsm, "light_view"), 512.0 * 512.0);
+  EXPECT_FALSE(paper_reference_x(paper, SweepParameter::kKmeansIterations, "camera_view").has_value());
+
+  MeasuredSweep s = sweep_of("vsgls=256:4096:x4", [](const std::string&, const std::string&, double x) { return x; });
+  const auto fits = sweep_fits(s);
+  const auto count_references = [&](const MeasuredSweep& m) {
+    std::size_t n = 0;
+    for (const auto& [name, svg] : sweep_plots(m, fits, &paper))
+      for (std::size_t at = svg.find("class=\"reference"); at != std::string::npos;
+           at = svg.find("class=\"reference", at + 1))
+        ++n;
+    return n;
+  };
+  EXPECT_EQ(count_references(s), 0u);  // the tiny scene is no paper table's input
+  s.paper_table = 1;
+  // Table 1 gives every generator's view total and phases, but "only" is no phase of the paper's:
+  // the total plot alone carries the marks, one per generator and view.
+  EXPECT_GE(count_references(s), 8u);
+  const auto plots = sweep_plots(s, fits, &paper);
+  bool total_marked = false;
+  for (const auto& [name, svg] : plots)
+    if (name == "sweep_vsgls_total.svg") total_marked = svg.find("paper, Table 1") != std::string::npos;
+  EXPECT_TRUE(total_marked);
+  // Not at the paper's setup (K = 2): no mark.
+  for (SweepPointResult& p : s.points) p.config["K"] = 2.0;
+  EXPECT_EQ(count_references(s), 0u);
+}
+
+}  // namespace
+}  // namespace vsgl
