@@ -9,8 +9,12 @@
 # their models on the asset search path (README "The paper's scenes"); the results go to
 # results/lavapipe. With --stand-ins the procedural stand-ins atrium and conference are used and the
 # results go to results/lavapipe/stand-ins, so both stay side by side.
+# The sweep step times every generator along each axis of `vsgl-bench sweep` (N, G-buffer and RSM
+# size, K, k-means iterations on Sponza; PDF sharpness on both scenes) into OUT/sweep/<axis>/, at a
+# 960x544 G-buffer and a 256 RSM where the axis does not set them, 5-8 rounds per point, so that the
+# whole sweep stays under 30 minutes on a 2-core machine (its wall time goes to the log).
 # Usage: bash ci/lavapipe-results.sh [--stand-ins] [STEP...]   steps: record verify tables quality
-#        shade compare dashboard (default: all, in that order). VSGL_BENCH=path/to/vsgl-bench to pick
+#        shade compare sweep dashboard (default: all, in that order). VSGL_BENCH=path/to/vsgl-bench to pick
 #        a build; --assets DIR is passed on to record (repeatable).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -28,7 +32,7 @@ while [[ $# -gt 0 ]]; do
   esac
   shift
 done
-[[ ${#steps[@]} -gt 0 ]] || steps=(record verify tables quality shade compare dashboard)
+[[ ${#steps[@]} -gt 0 ]] || steps=(record verify tables quality shade compare sweep dashboard)
 [[ -x "$bench" ]] || { echo "ci/lavapipe-results.sh: no $bench (build it: cmake --preset release && cmake --build --preset release)" >&2; exit 2; }
 # Only lavapipe: these are the lavapipe results (a GPU run goes to results/<its slug>).
 export VK_ICD_FILENAMES=${VK_ICD_FILENAMES:-/usr/share/vulkan/icd.d/lvp_icd.x86_64.json}
@@ -83,6 +87,23 @@ for s in "${steps[@]}"; do
       # The slowed run must come out SLOWER: exit 1 from --fail-on is the expected answer here.
       step "compare slowed" bash -c "\"$bench\" compare $tmp/A $tmp/S --fail-on slower --out $out/compare_debug_slow_fis_modified.md; [[ \$? -eq 1 ]]"
       rm -rf "$tmp" ;;
+    sweep)
+      sweep_start=$(date +%s)
+      sweep() {  # sweep OUTNAME SCENE AXIS [FLAGS...]
+        local name=$1 scene=$2 axis=$3
+        shift 3
+        step "sweep $name" "$bench" sweep --scene "$scene" "${assets[@]}" --captures "$caps/sweep" --axis "$axis" \
+          --gbuffer 960x544 --rsm 256 --warmup 2 --repetitions 5 --max-repetitions 8 --time-budget 60 \
+          --out "$out/sweep/$name" --no-progress "$@"
+      }
+      sweep vsgls "${scenes[0]}" vsgls=64:16384:x4
+      sweep gbuffer "${scenes[0]}" gbuffer=480x272:3840x2176:x2
+      sweep rsm "${scenes[0]}" rsm=128:2048:x2
+      sweep "pdf-sharpness_${scenes[0]}" "${scenes[0]}" pdf-sharpness=0,0.5,1,2,4
+      sweep "pdf-sharpness_${scenes[1]}" "${scenes[1]}" pdf-sharpness=0,0.5,1,2,4
+      sweep K "${scenes[0]}" K=1:16:x2
+      sweep kmeans-iterations "${scenes[0]}" kmeans-iterations=1:8:x2
+      echo "sweep (all axes): $(( $(date +%s) - sweep_start )) s" | tee -a "$log" >&2 ;;
     dashboard)
       step dashboard "$bench" dashboard results --out results/dashboard
       if chromium=$(bash ci/find-chromium.sh 2>/dev/null); then
