@@ -97,7 +97,9 @@ for s in "${steps[@]}"; do
           --out "$out/sweep/$name" --no-progress "$@"
       }
       sweep vsgls "${scenes[0]}" vsgls=64:16384:x4
-      sweep gbuffer "${scenes[0]}" gbuffer=480x272:3840x2176:x2
+      # 1920x1088 is lavapipe's largest: FIS binds 64 bytes per G-buffer texel in one storage
+      # buffer, and 3840x2176 needs 512 MiB against its 128 MiB maxStorageBufferRange.
+      sweep gbuffer "${scenes[0]}" gbuffer=480x272:1920x1088:x2
       sweep rsm "${scenes[0]}" rsm=128:2048:x2
       sweep "pdf-sharpness_${scenes[0]}" "${scenes[0]}" pdf-sharpness=0,0.5,1,2,4
       sweep "pdf-sharpness_${scenes[1]}" "${scenes[1]}" pdf-sharpness=0,0.5,1,2,4
