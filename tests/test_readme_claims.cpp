@@ -1,9 +1,11 @@
 // The README's table of the paper's claims states verdicts; this test reads each one from the
 // committed results it cites, so the table can never say what the files do not. A row is
 //   | `KEY` | what | VERDICTS (paper scenes) | VERDICTS (stand-ins) |
-// where KEY is a table claim id (tableN.json /claims/*/id) or "quality: MEASURE" (the start of a
-// quality.json claim's measure), and a VERDICTS cell begins with one verdict per table or scene:
-//   "T1 holds, T2 inconclusive" / "sponza holds, conference-room no clear difference (within 0.02)".
+// where KEY is a table claim id (tableN.json /claims/*/id), "quality: MEASURE" (the start of a
+// quality.json claim's measure) or "sweep: ID" (a claim of sweep/pdf-sharpness_<scene>/sweep.json),
+// and a VERDICTS cell begins with one verdict per table or scene:
+//   "T1 holds, T2 inconclusive" / "sponza holds, conference-room no clear difference (within 0.02)";
+// "not run" for a sweep a column has no file of.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -49,6 +51,15 @@ std::string table_verdict(const fs::path& dir, int table, const std::string& id)
   return "?";
 }
 
+std::string sweep_verdict(const fs::path& file, const std::string& id) {
+  const ojson doc = read_json_file(file, "the sweep");
+  for (const ojson& c : doc.value("claims", ojson::array()))
+    if (c.at("id") == id)
+      return c.at("holds").is_null() ? "inconclusive" : c.at("holds").get<bool>() ? "holds" : "does not hold";
+  ADD_FAILURE() << file << " has no claim " << id;
+  return "?";
+}
+
 std::string quality_verdict(const fs::path& dir, const std::string& scene, const std::string& measure) {
   const ojson doc = read_json_file(dir / "quality" / scene / "quality.json", "the quality report");
   std::string found;
@@ -81,7 +92,14 @@ TEST(ReadmeClaims, EveryVerdictIsTheCommittedResults) {
     ++rows;
     for (int c = 0; c < 2; ++c) {
       std::string expected;
-      if (key.rfind("quality: ", 0) == 0) {
+      if (key.rfind("sweep: ", 0) == 0) {
+        for (const std::string& scene : columns[c].scenes) {
+          const fs::path file = columns[c].dir / "sweep" / ("pdf-sharpness_" + scene) / "sweep.json";
+          if (!fs::exists(file)) continue;
+          expected += (expected.empty() ? "" : ", ") + scene + " " + sweep_verdict(file, key.substr(7));
+        }
+        if (expected.empty()) expected = "not run";
+      } else if (key.rfind("quality: ", 0) == 0) {
         for (const std::string& scene : columns[c].scenes)
           expected +=
               (expected.empty() ? "" : ", ") + scene + " " + quality_verdict(columns[c].dir, scene, key.substr(9));
