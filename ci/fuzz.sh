@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # A long fuzzing run of one target: bash ci/fuzz.sh TARGET SECONDS [extra libFuzzer flags]
-# TARGET: one of tests/fuzz/fuzz_*.cpp (fuzz_capture, fuzz_run_json, fuzz_paper_tables,
+# TARGET: one of tests/fuzz/fuzz_*.cpp (fuzz_capture, fuzz_run_json, fuzz_sweep_json, fuzz_paper_tables,
 # fuzz_gltf, fuzz_obj). Builds build/fuzz
 # (clang, libFuzzer + ASan + UBSan) if needed, starts from the committed seed corpus
 # (tests/fuzz/corpus/TARGET, read only) and keeps what it finds in build/fuzz/corpus/TARGET;

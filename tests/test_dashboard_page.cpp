@@ -1,7 +1,10 @@
 // `vsgl-bench dashboard`: the SVG charts on hand-made data, the page from the committed results/
 // (both tables, the paper's bars, a time series per total), and the page opened in headless
 // Chromium: the DOM it builds holds the charts, and its screenshot is not blank and shows the
-// bars' colours. Chromium is a dependency (ci/install-deps.sh): without it the test fails.
+// bars' colours; and the scaling section from synthetic sweep JSON beside the committed tables
+// (a log-log chart per axis, the fits, the flagged ones marked, the claims), a broken sweep named,
+// no sweep in one line. Chromium is a dependency (ci/install-deps.sh): without it the rendering
+// tests are skipped, saying why.
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -18,6 +21,8 @@
 #include "bench/cli/dashboard_generators.hpp"
 #include "harness/report/paper_tables.hpp"
 #include "harness/report/table_json.hpp"
+#include "input_error.hpp"
+#include "synthetic_sweep.hpp"
 #include "test_support.hpp"
 
 namespace vsgl {
@@ -74,6 +79,117 @@ TEST(DashboardPage, CommittedResultsGiveBothTablesBesideThePaper) {
   EXPECT_GE(count(html, "class=\"chart timeseries\""), 2u * 4u);  // a total per generator and table
   EXPECT_NE(html.find("Paper: NVIDIA GeForce GTX 970"), std::string::npos);
   EXPECT_NE(html.find("kmeans_3d light_view sum: 20.49 ms (paper)"), std::string::npos);  // Table 2's value
+}
+
+// A results directory: the committed tables under their paths, and each sweep document at its path.
+void make_results(const fs::path& dir, const std::vector<std::pair<std::string, nlohmann::ordered_json>>& sweeps,
+                  bool with_tables = true) {
+  if (with_tables)
+    for (const BenchRun& r : find_table_runs(kResults)) {
+      fs::create_directories((dir / r.path).parent_path());
+      fs::copy_file(kResults / r.path, dir / r.path);
+    }
+  for (const auto& [path, doc] : sweeps) {
+    fs::create_directories((dir / path).parent_path());
+    std::ofstream(dir / path) << doc.dump(1);
+  }
+}
+
+// Two sweeps of the tiny scene: N on FIS and k-means (written second, dated first), and the PDF
+// sharpness γ = 0, 1, 2 with its claims (γ = 0 stays off the log axis).
+std::vector<std::pair<std::string, nlohmann::ordered_json>> two_sweeps() {
+  const std::vector<std::string> generators{"fis_modified", "kmeans_3d"};
+  nlohmann::ordered_json gamma =
+      test::synthetic_sweep_json(test::synthetic_sweep({parse_axis_spec("pdf-sharpness=0,1,2")}, generators),
+                                 test::synthetic_sweep_context("GPU <&> \"B\"", "2026-03-01T00:00:00Z"));
+  gamma["claims"] =
+      nlohmann::ordered_json::array({test::synthetic_sweep_claim(false, "kmeans_3d moves less than the <band>")});
+  return {
+      {"a/sweep.json", gamma},
+      {"b/sweep.json", test::synthetic_sweep_json(test::synthetic_sweep({parse_axis_spec("vsgls=8:32:x2")}, generators),
+                                                  test::synthetic_sweep_context("GPU A", "2026-02-01T00:00:00Z"))}};
+}
+
+std::string between(const std::string& text, const std::string& from, const std::string& to) {
+  const std::size_t a = text.find(from);
+  if (a == std::string::npos) return "";
+  const std::size_t b = text.find(to, a + from.size());
+  return text.substr(a, b == std::string::npos ? std::string::npos : b - a);
+}
+
+TEST(DashboardPage, ScalingSectionDrawsEachSweepAxisWithItsFits) {
+  const test::TempDir dir("dashboard_scaling");
+  make_results(dir.path(), two_sweeps());
+  const auto runs = find_table_runs(dir.path());
+  EXPECT_EQ(runs.size(), find_table_runs(kResults).size()) << "sweep.json is not read as a table run";
+  const auto sweeps = find_sweep_runs(dir.path());
+  ASSERT_EQ(sweeps.size(), 2u);
+  EXPECT_EQ(sweeps[0].path, "b/sweep.json");  // one scene: by date
+  EXPECT_EQ(sweeps[1].path, "a/sweep.json");
+  const std::string html = dashboard_html(runs, load_paper_tables(kResults / "paper/paper_tables.json"), "results",
+                                          cli::dashboard_generators(), sweeps);
+  EXPECT_EQ(html.find("<script"), std::string::npos);
+  EXPECT_EQ(std::regex_search(html, std::regex("(src|href)=\"https?:")), false) << "the page must not fetch anything";
+  EXPECT_NE(html.find("id=\"table1\""), std::string::npos);  // the tables stay
+  ASSERT_NE(html.find("<section class=\"scaling\" id=\"scaling\">"), std::string::npos);
+  EXPECT_EQ(html.find("class=\"no-sweep\""), std::string::npos);
+  EXPECT_EQ(count(html, "<section class=\"sweep\""), 2u);
+  EXPECT_EQ(count(html, "class=\"chart loglog\""), 2u);  // one plot per axis
+
+  const std::string n = between(html, "id=\"sweep1\"", "id=\"sweep2\"");
+  EXPECT_NE(n.find("tiny, procedural: GPU A, 2026-02-01, commit 0123456 (quick)"), std::string::npos) << n;
+  EXPECT_NE(n.find("<code>b/sweep.json</code>"), std::string::npos);
+  EXPECT_EQ(count(n, "<g class=\"series\""), 4u);  // a series per generator and view
+  for (const char* s :
+       {"fis_modified camera_view", "fis_modified light_view", "kmeans_3d camera_view", "kmeans_3d light_view"})
+    EXPECT_EQ(count(n, std::string("data-series=\"") + s + "\""), 1u) << s;
+  EXPECT_EQ(count(n, "<circle class=\"point\""), 4u * 3u);
+  EXPECT_NE(n.find("cost \u221d N^1.00 ["), std::string::npos);  // FIS camera filtered sampling
+  EXPECT_NE(n.find("cost \u221d N^2.00 ["), std::string::npos);  // the light view's, flagged
+  EXPECT_GE(count(n, "<tr class=\"flagged\">"), 1u);
+  EXPECT_NE(n.find("<strong>faster</strong>"), std::string::npos);
+  EXPECT_NE(n.find("<td>filtered_sampling</td><td class=\"growth\">cost \u221d N^2.00"), std::string::npos);
+  EXPECT_NE(n.find("fit(s) exclude the growth"), std::string::npos);
+  EXPECT_EQ(n.find("class=\"claims\""), std::string::npos);  // no claims in this file
+
+  const std::string g = between(html, "id=\"sweep2\"", "</section>");
+  EXPECT_NE(g.find("GPU &lt;&amp;&gt; &quot;B&quot;"), std::string::npos) << "escaped";
+  EXPECT_EQ(html.find("GPU <&>"), std::string::npos);
+  EXPECT_EQ(count(g, "<circle class=\"point\""), 4u * 2u) << "gamma = 0 is off the log axis";
+  EXPECT_NE(g.find("<th>pdf-sharpness=0 *</th>"), std::string::npos) << "but in the table";
+  EXPECT_EQ(count(between(g, "class=\"sweep-totals\"", "</table>"), "<tr>"), 1u + 4u);
+  EXPECT_NE(g.find("class=\"claims\""), std::string::npos);
+  EXPECT_NE(g.find("<td>pdf_independence</td>"), std::string::npos);
+  EXPECT_NE(g.find("does not hold"), std::string::npos);
+  EXPECT_NE(g.find("moves less than the &lt;band&gt;"), std::string::npos);
+}
+
+TEST(DashboardPage, ScalingSectionSaysInOneLineThatThereIsNoSweep) {
+  EXPECT_TRUE(find_sweep_runs(kResults).empty());
+  const std::string html =
+      dashboard_html(find_table_runs(kResults), load_paper_tables(kResults / "paper/paper_tables.json"), "results",
+                     cli::dashboard_generators(), {});
+  const std::string section = between(html, "<section class=\"scaling\"", "</section>");
+  ASSERT_FALSE(section.empty());
+  EXPECT_EQ(count(section, "<p"), 1u);
+  EXPECT_NE(section.find("No sweep JSON"), std::string::npos) << section;
+  EXPECT_EQ(count(section, "<svg"), 0u);
+}
+
+TEST(DashboardPage, ABrokenSweepIsAnErrorNamingIt) {
+  const test::TempDir dir("dashboard_broken_sweep");
+  auto sweeps = two_sweeps();
+  sweeps[1].second["fits"][0].erase("verdict");
+  make_results(dir.path(), sweeps, false);
+  const std::string m = test::input_error([&] { find_sweep_runs(dir.path()); });
+  EXPECT_NE(m.find((dir / "b/sweep.json").string()), std::string::npos) << m;
+  EXPECT_NE(m.find("/fits/0/verdict: missing field"), std::string::npos) << m;
+  std::ofstream(dir / "b/sweep.json") << "{";
+  EXPECT_NE(test::input_error([&] { find_sweep_runs(dir.path()); }).find((dir / "b/sweep.json").string()),
+            std::string::npos);
+  const auto made = test::run_cli("dashboard " + dir.path().string() + " --out " + (dir / "site").string());
+  EXPECT_EQ(made.exit_code, 3) << made.output;
+  EXPECT_NE(made.output.find("b/sweep.json"), std::string::npos) << made.output;
 }
 
 // The headless Chromium that runs here (ci/find-chromium.sh: chromium, chromium-browser, Chrome,
@@ -136,6 +252,45 @@ TEST(DashboardPage, OpensInHeadlessChromiumWithTheChartsRendered) {
   const double variance = sum2 / static_cast<double>(n) - mean * mean;
   EXPECT_GT(variance, 100.0) << "the screenshot is (nearly) blank";
   EXPECT_GT(camera_additional, 200u) << "no bar of the paper's chart is visible";
+}
+
+// A results directory of sweeps alone: the page opens with the scaling section, every log-log
+// chart reaches the DOM, and the first series' colour (series_color(0)) is on the screenshot.
+TEST(DashboardPage, OpensInHeadlessChromiumWithTheScalingSectionRendered) {
+  std::string why;
+  const std::string browser = find_chromium(why);
+  if (browser.empty()) GTEST_SKIP() << "no headless Chromium, the page is not rendered: " << why;
+  const test::TempDir dir_temp("dashboard_scaling_chromium");
+  const fs::path& dir = dir_temp.path();
+  make_results(dir / "results", two_sweeps(), false);
+  const auto made = test::run_cli("dashboard " + (dir / "results").string() + " --out " + (dir / "site").string());
+  ASSERT_EQ(made.exit_code, 0) << made.output;
+  EXPECT_NE(made.output.find("(0 table runs, 2 sweep files)"), std::string::npos) << made.output;
+  const fs::path page = dir / "site/index.html";
+  const std::string html = read_text(page);
+  ASSERT_EQ(count(html, "class=\"chart loglog\""), 2u);
+
+  ASSERT_EQ(chromium(browser, "--dump-dom", page, dir / "profile", dir / "dom.html"), 0);
+  const std::string dom = read_text(dir / "dom.html");
+  EXPECT_EQ(count(dom, "class=\"chart loglog\""), 2u) << "every chart reached the DOM";
+  EXPECT_EQ(count(dom, "<g class=\"series\""), count(html, "<g class=\"series\""));
+  EXPECT_EQ(count(dom, "<tr class=\"flagged\">"), count(html, "<tr class=\"flagged\">"));
+  EXPECT_GE(count(dom, "<tr class=\"flagged\">"), 1u);
+
+  const fs::path shot = dir / "shot.png";
+  ASSERT_EQ(chromium(browser, "--window-size=1000,1200 --screenshot=" + shot.string(), page, dir / "profile",
+                     dir / "shot.log"),
+            0);
+  ASSERT_TRUE(fs::exists(shot));
+  const std::string bytes = read_text(shot);
+  const Rgb8Image img = decode_png(std::span<const char>(bytes.data(), bytes.size()), shot.string());
+  std::size_t first_series = 0;  // pixels of #1f77b4: the first series' line, markers and legend
+  const std::size_t pixels = static_cast<std::size_t>(img.width) * img.height;
+  for (std::size_t i = 0; i < pixels; ++i) {
+    const uint8_t r = img.rgb[3 * i], g = img.rgb[3 * i + 1], b = img.rgb[3 * i + 2];
+    if (std::abs(r - 0x1f) < 12 && std::abs(g - 0x77) < 12 && std::abs(b - 0xb4) < 12) ++first_series;
+  }
+  EXPECT_GT(first_series, 50u) << "no series of the scaling chart is visible";
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // `vsgl-bench dashboard RESULTS_DIR --out SITE` (DESIGN.md §10): SITE/index.html, one self-contained
 // page (inline SVG charts, no script, nothing fetched) from every table JSON under RESULTS_DIR,
-// beside the paper's numbers (harness/compare/dashboard_page.hpp).
+// beside the paper's numbers, and every sweep JSON's scaling (harness/compare/dashboard_page.hpp,
+// dashboard_scaling.hpp).
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -11,6 +12,7 @@
 #include "bench/cli/option_types.hpp"
 #include "harness/core/atomic_file.hpp"
 #include "harness/compare/dashboard_page.hpp"
+#include "harness/compare/dashboard_scaling.hpp"
 #include "harness/core/error.hpp"
 #include "bench/cli/dashboard_generators.hpp"
 #include "harness/report/paper_tables.hpp"
@@ -21,25 +23,33 @@ Command add_dashboard_command(CLI::App& parent) {
   CLI::App* app = parent.add_subcommand(
       "dashboard",
       "OUT/index.html: one self-contained page of inline SVG charts (no script, nothing fetched) of every table "
-      "JSON under RESULTS_DIR: phases per generator per run beside the paper, totals across runs");
+      "JSON under RESULTS_DIR: phases per generator per run beside the paper, totals across runs; and of every "
+      "sweep JSON (sweep.json of `sweep`): per axis the totals on a log-log chart and the growth fits with "
+      "their verdicts");
   struct Options {
     std::string results;
     std::string out;
     std::string paper = (std::filesystem::path(VSGL_SOURCE_DIR) / "results/paper/paper_tables.json").string();
   };
   auto o = std::make_shared<Options>();
-  app->add_option("RESULTS_DIR", o->results, "directory searched for table JSON")->required();
+  app->add_option("RESULTS_DIR", o->results,
+                  "directory searched for table JSON (tableN.json) and sweep JSON (sweep.json)")
+      ->required();
   app->add_option("--out", o->out, "output directory")->required()->type_name("DIR");
   app->add_option("--paper", o->paper, "the paper's tables")
       ->check(input_file("--paper"))
       ->default_str("results/paper/paper_tables.json");
   return {app, [o] {
             const std::vector<BenchRun> runs = find_table_runs(o->results);
+            const std::vector<SweepRun> sweeps = find_sweep_runs(o->results);
+            if (runs.empty() && sweeps.empty())
+              throw InputError(o->results + ": no table JSON (tableN.json) and no sweep JSON (sweep.json) found");
             const nlohmann::json paper = load_paper_tables(o->paper);
             std::filesystem::create_directories(o->out);
             const std::filesystem::path page = std::filesystem::path(o->out) / "index.html";
-            write_text_atomic(page, dashboard_html(runs, paper, o->results, dashboard_generators()));
-            std::fprintf(stderr, "wrote %s (%zu table runs)\n", page.string().c_str(), runs.size());
+            write_text_atomic(page, dashboard_html(runs, paper, o->results, dashboard_generators(), sweeps));
+            std::fprintf(stderr, "wrote %s (%zu table runs, %zu sweep files)\n", page.string().c_str(), runs.size(),
+                         sweeps.size());
             return 0;
           }};
 }

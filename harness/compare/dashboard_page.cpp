@@ -164,7 +164,6 @@ std::vector<BenchRun> find_table_runs(const std::filesystem::path& results_dir) 
     r.path = std::filesystem::relative(e.path(), results_dir).string();
     if (r.format == "table") runs.push_back(std::move(r));
   }
-  if (runs.empty()) throw InputError(results_dir.string() + ": no table JSON (tableN.json) found");
   std::sort(runs.begin(), runs.end(), [](const BenchRun& a, const BenchRun& b) {
     const int ta = a.tables.begin()->first, tb = b.tables.begin()->first;
     return std::tie(ta, a.date, a.git_commit, a.path) < std::tie(tb, b.date, b.git_commit, b.path);
@@ -173,7 +172,7 @@ std::vector<BenchRun> find_table_runs(const std::filesystem::path& results_dir) 
 }
 
 std::string dashboard_html(const std::vector<BenchRun>& runs, const nlohmann::json& paper, const std::string& source,
-                           const std::vector<DashboardGenerator>& generators) {
+                           const std::vector<DashboardGenerator>& generators, const std::vector<SweepRun>& sweeps) {
   std::map<std::string, std::string> series_colors;
   for (const auto& r : runs)
     for (const auto& [n, t] : r.tables)
@@ -189,10 +188,17 @@ std::string dashboard_html(const std::vector<BenchRun>& runs, const nlohmann::js
      << "svg.chart{background:#fff;border:1px solid #ddd}\n"
      << "svg .title{font-size:13px;font-weight:bold}svg .tick,svg .bar-total,svg .x-label{font-size:10px}\n"
      << "svg .bar-label,svg .legend,svg .axis-label{font-size:10px}\n"
-     << "table.runs{border-collapse:collapse;font-size:12px}table.runs td,table.runs th{border:1px solid #ccc;padding:2px 6px}\n"
+     << "svg .axis-title,svg .legend-label{font-size:11px}\n"
+     << "table.runs,table.sweep-totals,table.fits,table.claims{border-collapse:collapse;font-size:12px;margin:6px 0}\n"
+     << "table.runs td,table.runs th,table.sweep-totals td,table.sweep-totals th,table.fits td,table.fits th,"
+        "table.claims td,table.claims th{border:1px solid #ccc;padding:2px 6px}\n"
+     << "td.num,td.growth{white-space:nowrap}td.num{text-align:right}tr.flagged td{background:#fde0dc}tr.flagged "
+        "strong{color:#a31515}\n"
+     << "tr.claim.holds td{background:#e3f4e3}tr.claim.fails td{background:#fde0dc}p.note{font-size:12px;color:#555}\n"
      << "</style>\n</head>\n<body>\n";
   os << "<h1>vsgl-bench: VSGL generation timings (Tokuyoshi 2016, Tables 1 and 2)</h1>\n";
-  os << "<p>" << runs.size() << " table runs from <code>" << xml_escape(source)
+  os << "<p>" << runs.size() << " table runs and " << sweeps.size()
+     << " sweep(s) (<a href=\"#scaling\">Scaling</a>) from <code>" << xml_escape(source)
      << "</code>; medians in ms. Each chart has its own scale: the paper's GTX 970 numbers are beside, not on, "
         "the measured ones. Hover a bar segment or a point for its numbers.</p>\n";
 
@@ -224,7 +230,12 @@ std::string dashboard_html(const std::vector<BenchRun>& runs, const nlohmann::js
     os << "</div>\n</section>\n";
   }
 
-  os << "<h2>Runs</h2>\n<table class=\"runs\"><tr><th>file</th><th>device</th><th>scene</th><th>started "
+  os << scaling_section_html(sweeps, source);
+
+  os << "<h2>Runs</h2>\n";
+  if (runs.empty())
+    os << "<p>No table JSON (<code>tableN.json</code>) under <code>" << xml_escape(source) << "</code>.</p>\n";
+  os << "<table class=\"runs\"><tr><th>file</th><th>device</th><th>scene</th><th>started "
         "(UTC)</th><th>commit</th><th>notes</th></tr>\n";
   for (const auto& r : runs) {
     std::string notes = r.quick ? "--quick" : "";

@@ -7,6 +7,8 @@
 //    orders of magnitude;
 //  - per paper table and generator, the total across runs in time order (date, then commit), one
 //    line per device, median with a q1..q3 whisker, on a log axis;
+//  - the scaling section: every sweep JSON under RESULTS_DIR, a log-log chart of the totals and a
+//    table of the growth fits per axis (dashboard_scaling.hpp);
 //  - the list of runs (file, device, date, commit, flags).
 #include <filesystem>
 #include <string>
@@ -14,13 +16,15 @@
 
 #include <nlohmann/json.hpp>
 
+#include "harness/compare/dashboard_scaling.hpp"
 #include "harness/compare/regression_run.hpp"
 
 namespace vsgl {
 
 // Every table JSON under `results_dir` (recursively; files that are neither table JSON nor
-// anything else vsgl-bench reads as a run are skipped), sorted by table, date, commit, path.
-// Throws InputError for a table JSON that cannot be read (regression_run.hpp), or none at all.
+// anything else vsgl-bench reads as a run are skipped, sweep.json among them), sorted by table,
+// date, commit, path; none is an empty list (a results directory may hold sweeps alone). Throws
+// InputError for a table JSON that cannot be read (regression_run.hpp).
 std::vector<BenchRun> find_table_runs(const std::filesystem::path& results_dir);
 
 // What the page shows of a generator, from the descriptor table (generators/generator_registry.hpp;
@@ -34,8 +38,9 @@ struct DashboardGenerator {
 };
 
 // The page. `paper` is results/paper/paper_tables.json (report/paper_tables.hpp load_paper_tables);
-// `source` names where the runs came from (shown on the page).
+// `source` names where the runs came from (shown on the page); `sweeps` (find_sweep_runs) fill the
+// scaling section, which with none says so.
 std::string dashboard_html(const std::vector<BenchRun>& runs, const nlohmann::json& paper, const std::string& source,
-                           const std::vector<DashboardGenerator>& generators);
+                           const std::vector<DashboardGenerator>& generators, const std::vector<SweepRun>& sweeps = {});
 
 }  // namespace vsgl

@@ -25,7 +25,7 @@ fi
 rm -f build/fuzz-smoke-build.log
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
-for target in fuzz_capture fuzz_run_json fuzz_paper_tables fuzz_gltf fuzz_obj; do
+for target in fuzz_capture fuzz_run_json fuzz_sweep_json fuzz_paper_tables fuzz_gltf fuzz_obj; do
   corpus="tests/fuzz/corpus/$target"
   seeds=$(find "$corpus" -type f | wc -l)
   mkdir -p "$scratch/$target"

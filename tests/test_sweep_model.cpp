@@ -1,0 +1,203 @@
+// The sweep JSON read back into its typed model (harness/formats/sweep_model.hpp): a synthetic
+// sweep written by sweep_json() gives back its device, build, run, scene, axes, points and fits;
+// and a document that is not a sweep, of another version, with a key missing, a NaN or a fit that
+// points nowhere is an InputError naming the file and the JSON pointer. No device.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+
+#include "harness/core/statistics.hpp"
+#include "harness/formats/sweep_model.hpp"
+#include "input_error.hpp"
+#include "synthetic_sweep.hpp"
+#include "test_support.hpp"
+
+namespace vsgl {
+namespace {
+
+using ojson = nlohmann::ordered_json;
+
+const SweepFitModel& find_fit(const SweepModel& m, const std::string& axis, const std::string& view,
+                              const std::string& phase, const std::string& slice) {
+  for (const SweepFitModel& f : m.fits)
+    if (m.axes[f.axis].name == axis && f.view == view && f.phase == phase && sweep_slice_text(f.slice) == slice)
+      return f;
+  throw std::logic_error("no fit " + axis + " " + view + " " + phase + " " + slice);
+}
+
+TEST(SweepModel, ReaderKnowsTheVersionTheSweepWrites) { EXPECT_EQ(kReadableSweepSchemaVersion, kSweepSchemaVersion); }
+
+TEST(SweepModel, ReadsBackWhatTheSweepWrote) {
+  const std::vector<SweepAxis> axes{parse_axis_spec("vsgls=8:32:x2"), parse_axis_spec("K=1,2")};
+  const MeasuredSweep s = test::synthetic_sweep(axes, {"fis_modified", "kmeans_3d"});
+  const std::vector<SweepFit> fits = sweep_fits(s);
+  const SweepModel m =
+      read_sweep_model(sweep_json(s, fits, test::synthetic_sweep_context("GPU X", "2026-02-03T04:05:06Z")), "mem");
+
+  EXPECT_EQ(m.schema_version, 1);
+  EXPECT_EQ(m.device_name, "GPU X");
+  EXPECT_EQ(m.device["type"], "cpu");  // the whole object kept
+  ASSERT_TRUE(m.git_commit.has_value());
+  EXPECT_EQ(*m.git_commit, "0123456789abcdef");
+  EXPECT_FALSE(m.git_dirty);
+  EXPECT_EQ(m.started_utc, "2026-02-03T04:05:06Z");
+  EXPECT_TRUE(m.quick);
+  EXPECT_EQ(m.scene.name, "tiny");
+  EXPECT_EQ(m.scene.kind, SceneKind::kProcedural);
+  EXPECT_EQ(m.generators, (std::vector<std::string>{"fis_modified", "kmeans_3d"}));
+  ASSERT_TRUE(m.time_budget_s.has_value());
+  EXPECT_EQ(*m.time_budget_s, 12.0);
+
+  ASSERT_EQ(m.axes.size(), 2u);
+  EXPECT_EQ(m.axes[0].name, "vsgls");
+  EXPECT_EQ(m.axes[0].spec, "vsgls=8:32:x2");
+  EXPECT_EQ(m.axes[0].symbol, growth_symbol(SweepParameter::kVsgls));
+  EXPECT_EQ(m.axes[0].growth_x_title, growth_x_title(SweepParameter::kVsgls));
+  ASSERT_EQ(m.axes[0].values.size(), 3u);
+  EXPECT_EQ(m.axes[0].values[1].text, "16");
+  EXPECT_EQ(m.axes[0].values[1].value, 16.0);
+  EXPECT_EQ(m.axes[0].values[1].growth_x, 16.0);
+  EXPECT_EQ(m.axes[1].name, "K");
+
+  ASSERT_EQ(m.points.size(), 6u);
+  EXPECT_EQ(m.points[3].index, 3u);
+  EXPECT_EQ(m.points[3].value_index, s.points[3].value_index);
+  ASSERT_EQ(m.points[3].cases.size(), 4u);
+  const SweepCase* c = m.points[3].find("fis_modified", "light_view");
+  ASSERT_NE(c, nullptr);
+  ASSERT_EQ(c->phases.size(), 3u);
+  EXPECT_EQ(c->phases[2].name, "filtered_sampling");
+  const SampleStats expected = summarize(s.points[3].timing.cases[1].phase_ms[2]);
+  EXPECT_DOUBLE_EQ(c->phases[2].stats.median_ms, expected.median);
+  EXPECT_DOUBLE_EQ(c->phases[2].stats.q1_ms, expected.q1);
+  EXPECT_DOUBLE_EQ(c->phases[2].stats.q3_ms, expected.q3);
+  EXPECT_EQ(c->phases[2].stats.samples_ms, s.points[3].timing.cases[1].phase_ms[2]);
+  EXPECT_EQ(c->total.samples_ms, s.points[3].timing.cases[1].total_ms);
+  EXPECT_EQ(c->find("total"), &c->total);
+  EXPECT_EQ(c->find("sum"), nullptr);
+
+  ASSERT_EQ(m.fits.size(), fits.size());
+  const SweepFitModel& linear = find_fit(m, "vsgls", "camera_view", "filtered_sampling", "K=2");
+  EXPECT_EQ(linear.generator, "fis_modified");
+  EXPECT_EQ(linear.axis, 0u);
+  EXPECT_EQ(linear.points.size(), 3u);
+  EXPECT_EQ(linear.growth_x, (std::vector<double>{8, 16, 32}));
+  ASSERT_TRUE(linear.growth.has_value());
+  EXPECT_NEAR(linear.growth->slope, 1.0, 1e-6);
+  EXPECT_LE(linear.growth->low, 1.0);
+  EXPECT_GE(linear.growth->high, 1.0);
+  EXPECT_EQ(linear.growth->text.rfind("cost \u221d N^1.00 [", 0), 0u) << linear.growth->text;
+  ASSERT_TRUE(linear.expected.has_value());
+  EXPECT_EQ(linear.expected->slope, 1.0);
+  EXPECT_FALSE(linear.expected->why.empty());
+  EXPECT_EQ(linear.verdict, std::optional<std::string>("consistent"));
+  EXPECT_FALSE(linear.flagged);
+  const SweepFitModel& quadratic = find_fit(m, "vsgls", "light_view", "filtered_sampling", "K=1");
+  EXPECT_EQ(quadratic.verdict, std::optional<std::string>("faster"));
+  EXPECT_TRUE(quadratic.flagged);
+  EXPECT_FALSE(quadratic.judgement.empty());
+  const SweepFitModel& total = find_fit(m, "vsgls", "camera_view", "total", "K=1");
+  EXPECT_FALSE(total.expected.has_value());
+  EXPECT_FALSE(total.verdict.has_value());
+  EXPECT_FALSE(m.claims.has_value());
+}
+
+TEST(SweepModel, GammaZeroIsReadOffTheLogAxisAndClaimsAreKeptWhole) {
+  const MeasuredSweep s = test::synthetic_sweep({parse_axis_spec("pdf-sharpness=0,1,2")});
+  ojson doc = test::synthetic_sweep_json(s);
+  doc["claims"] = ojson::array({test::synthetic_sweep_claim(nullptr, "too few rounds"),
+                                test::synthetic_sweep_claim(true, "every change within the band")});
+  const SweepModel m = read_sweep_model(doc, "mem");
+  EXPECT_EQ(m.axes[0].values[0].growth_x, 0.0);
+  const SweepFitModel& f = find_fit(m, "pdf-sharpness", "camera_view", "filtered_sampling", "");
+  EXPECT_EQ(f.growth_x.front(), 0.0);
+  ASSERT_TRUE(f.growth.has_value());
+  ASSERT_TRUE(m.claims.has_value());
+  ASSERT_EQ(m.claims->size(), 2u);
+  const SweepClaim& inconclusive = (*m.claims)[0];
+  EXPECT_EQ(inconclusive.id, "pdf_independence");
+  EXPECT_FALSE(inconclusive.holds.has_value());
+  EXPECT_EQ(inconclusive.note, "too few rounds");
+  EXPECT_TRUE(inconclusive.informative);
+  EXPECT_EQ(inconclusive.fields["band"], 0.1);
+  EXPECT_EQ((*m.claims)[1].holds, std::optional<bool>(true));
+  EXPECT_NE((*m.claims)[1].criterion.find("\u00b110 %"), std::string::npos);
+}
+
+TEST(SweepModel, RefusesWhatIsNotASweepOfThisVersion) {
+  const MeasuredSweep s = test::synthetic_sweep({parse_axis_spec("vsgls=8:32:x2")});
+  const ojson good = test::synthetic_sweep_json(s);
+  const auto message = [](const ojson& doc) {
+    return test::input_error([&] { read_sweep_model(doc, "runs/sweep.json"); });
+  };
+
+  ojson doc = good;
+  doc["kind"] = "table";
+  std::string m = message(doc);
+  EXPECT_NE(m.find("runs/sweep.json: /kind"), std::string::npos) << m;
+  EXPECT_NE(m.find("not a sweep"), std::string::npos) << m;
+  EXPECT_NE(message(ojson{{"schema_version", 3}, {"table", 1}}).find("/kind: missing field"), std::string::npos);
+  EXPECT_NE(message(ojson::array()).find("not a JSON object"), std::string::npos);
+
+  doc = good;
+  doc["schema_version"] = 2;
+  m = message(doc);
+  EXPECT_NE(m.find("/schema_version"), std::string::npos) << m;
+  EXPECT_NE(m.find("reads sweep schema version 1"), std::string::npos) << m;
+
+  doc = good;
+  doc["fits"][0].erase("flagged");
+  m = message(doc);
+  EXPECT_NE(m.find("runs/sweep.json: /fits/0/flagged: missing field"), std::string::npos) << m;
+  doc = good;
+  doc["points"][1]["cases"][0]["total"].erase("samples_ms");
+  EXPECT_NE(message(doc).find("/points/1/cases/0/total/samples_ms: missing field"), std::string::npos);
+  doc = good;
+  doc.erase("scene");
+  EXPECT_NE(message(doc).find("/scene: missing field"), std::string::npos);
+
+  doc = good;
+  doc["points"][0]["cases"][1]["phases"][2]["stats"]["median"] = std::numeric_limits<double>::quiet_NaN();
+  m = message(doc);
+  EXPECT_NE(m.find("/points/0/cases/1/phases/2/stats/median"), std::string::npos) << m;
+  EXPECT_NE(m.find("not a finite number"), std::string::npos) << m;
+  doc = good;
+  doc["fits"][0]["growth"]["slope"] = std::numeric_limits<double>::infinity();
+  EXPECT_NE(message(doc).find("/fits/0/growth/slope: is not a finite number"), std::string::npos);
+  doc = good;
+  doc["points"][0]["cases"][0]["total"]["samples_ms"][0] = -1.0;
+  EXPECT_NE(message(doc).find("/points/0/cases/0/total/samples_ms/0: is not a positive time"), std::string::npos);
+
+  // References that point nowhere: the page would otherwise draw from nothing.
+  doc = good;
+  doc["fits"][0]["points"][1] = 99;
+  EXPECT_NE(message(doc).find("/fits/0/points/1: is 99, past the last point"), std::string::npos);
+  doc = good;
+  doc["fits"][0]["axis"] = "K";
+  EXPECT_NE(message(doc).find("/fits/0/axis"), std::string::npos);
+  doc = good;
+  doc["fits"][0]["growth_x"][0] = 1000.0;
+  EXPECT_NE(message(doc).find("/fits/0/growth_x/0"), std::string::npos);
+  doc = good;
+  doc["fits"][0]["phase"] = "no_such_phase";
+  EXPECT_NE(message(doc).find("/fits/0/points/0"), std::string::npos);
+  doc = good;
+  doc["points"][2]["values"]["vsgls"] = "17";
+  EXPECT_NE(message(doc).find("/points/2/values/vsgls: is \"17\", not a value of axis vsgls"), std::string::npos);
+}
+
+TEST(SweepModel, ReadsAFileAndNamesItWhenItCannot) {
+  const test::TempDir dir("sweep_model");
+  const MeasuredSweep s = test::synthetic_sweep({parse_axis_spec("vsgls=8:32:x2")});
+  std::ofstream(dir / "sweep.json") << test::synthetic_sweep_json(s).dump(2);
+  EXPECT_EQ(read_sweep_file(dir / "sweep.json").points.size(), 3u);
+  std::ofstream(dir / "broken.json") << "{\"kind\": \"sweep\", ";
+  const std::string m = test::input_error([&] { read_sweep_file(dir / "broken.json"); });
+  EXPECT_NE(m.find((dir / "broken.json").string()), std::string::npos) << m;
+  EXPECT_NE(m.find("not valid JSON"), std::string::npos) << m;
+}
+
+}  // namespace
+}  // namespace vsgl
