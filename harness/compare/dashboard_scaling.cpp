@@ -167,6 +167,16 @@ std::string sweep_block(const SweepRun& run, std::size_t number) {
      << (flagged == 0 ? std::string("No fit excludes the growth its algorithm predicts.")
                       : std::to_string(flagged) + " fit(s) exclude the growth their algorithm predicts (highlighted).")
      << "</p>\n";
+  if (!m.beyond_device.empty()) {
+    os << "<p class=\"beyond\">Beyond this device, not timed:</p>\n<ul class=\"beyond\">\n";
+    for (const SweepBeyondDevice& b : m.beyond_device) {
+      std::string values;
+      for (std::size_t a = 0; a < m.axes.size(); ++a)
+        values += (values.empty() ? "" : ", ") + m.axes[a].name + "=" + m.axes[a].values[b.value_index[a]].text;
+      os << "<li>" << xml_escape(values) << ": " << xml_escape(b.reason) << "</li>\n";
+    }
+    os << "</ul>\n";
+  }
   for (std::size_t a = 0; a < m.axes.size(); ++a) {
     os << "<div class=\"axis\" data-axis=\"" << xml_escape(m.axes[a].name) << "\">\n<h4>Axis "
        << xml_escape(m.axes[a].name) << " (<code>" << xml_escape(m.axes[a].spec) << "</code>)</h4>\n";

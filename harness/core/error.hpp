@@ -26,6 +26,13 @@ class DeviceError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A size the device cannot hold (a storage-buffer range, an image side, an allocation): the device
+// itself is fine, so a sweep records the point as beyond the device and goes on (DESIGN.md §10.1).
+class DeviceLimitError : public DeviceError {
+ public:
+  using DeviceError::DeviceError;
+};
+
 class UsageError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;

@@ -123,6 +123,27 @@ SweepAxisModel read_axis(const Reader& r, const ojson& a, const std::string& p) 
   return out;
 }
 
+// A point's "values": each axis's value as text, as an index into that axis's values.
+std::vector<std::size_t> read_value_index(const Reader& r, const ojson& pj, const std::string& p,
+                                          const std::vector<SweepAxisModel>& axes) {
+  const ojson& values = r.object(pj, p, "values");
+  for (const auto& [name, text] : r.string_map(values, p + "/values")) {
+    bool known = false;
+    for (const SweepAxisModel& a : axes) known = known || a.name == name;
+    if (!known) r.fail(p + "/values/" + name, "names no axis of the sweep");
+  }
+  std::vector<std::size_t> out;
+  for (const SweepAxisModel& a : axes) {
+    const std::string vp = p + "/values/" + a.name;
+    const std::string text = r.string(values, p + "/values", a.name);
+    std::size_t k = 0;
+    while (k < a.values.size() && a.values[k].text != text) ++k;
+    if (k == a.values.size()) r.fail(vp, "is " + quoted_text(text) + ", not a value of axis " + a.name);
+    out.push_back(k);
+  }
+  return out;
+}
+
 SweepPoint read_point(const Reader& r, const ojson& pj, const std::string& p, std::size_t position,
                       const std::vector<SweepAxisModel>& axes) {
   if (!pj.is_object()) r.wrong_type(pj, p, "an object");
@@ -130,20 +151,7 @@ SweepPoint read_point(const Reader& r, const ojson& pj, const std::string& p, st
   out.index = r.index(r.member(pj, p, "index"), p + "/index");
   if (out.index != position)
     r.fail(p + "/index", "is " + std::to_string(out.index) + ", not its position " + std::to_string(position));
-  const ojson& values = r.object(pj, p, "values");
-  for (const auto& [name, text] : r.string_map(values, p + "/values")) {
-    bool known = false;
-    for (const SweepAxisModel& a : axes) known = known || a.name == name;
-    if (!known) r.fail(p + "/values/" + name, "names no axis of the sweep");
-  }
-  for (const SweepAxisModel& a : axes) {
-    const std::string vp = p + "/values/" + a.name;
-    const std::string text = r.string(values, p + "/values", a.name);
-    std::size_t k = 0;
-    while (k < a.values.size() && a.values[k].text != text) ++k;
-    if (k == a.values.size()) r.fail(vp, "is " + quoted_text(text) + ", not a value of axis " + a.name);
-    out.value_index.push_back(k);
-  }
+  out.value_index = read_value_index(r, pj, p, axes);
   const ojson& cases = r.nonempty_array(pj, p, "cases");
   for (std::size_t i = 0; i < cases.size(); ++i)
     out.cases.push_back(read_case(r, cases[i], p + "/cases/" + std::to_string(i)));
@@ -298,6 +306,15 @@ SweepModel read_sweep_model(const nlohmann::ordered_json& doc, const std::string
   const ojson& points = r.nonempty_array(doc, "", "points");
   for (std::size_t i = 0; i < points.size(); ++i)
     m.points.push_back(read_point(r, points[i], "/points/" + std::to_string(i), i, m.axes));
+  if (doc.contains("beyond_device")) {
+    const ojson& beyond = r.array(doc, "", "beyond_device");
+    for (std::size_t i = 0; i < beyond.size(); ++i) {
+      const std::string p = "/beyond_device/" + std::to_string(i);
+      if (!beyond[i].is_object()) r.wrong_type(beyond[i], p, "an object");
+      m.beyond_device.push_back(
+          SweepBeyondDevice{read_value_index(r, beyond[i], p, m.axes), r.string(beyond[i], p, "reason")});
+    }
+  }
   const ojson& fits = r.array(doc, "", "fits");
   for (std::size_t i = 0; i < fits.size(); ++i) m.fits.push_back(read_fit(r, fits[i], "/fits/" + std::to_string(i), m));
   if (doc.contains("claims")) m.claims = read_claims(r, doc["claims"]);

@@ -72,6 +72,12 @@ struct SweepPoint {
   const SweepCase* find(const std::string& generator, const std::string& view) const;
 };
 
+// A point the device could not hold, not timed ("beyond_device"; absent in older files: none).
+struct SweepBeyondDevice {
+  std::vector<std::size_t> value_index;  // per axis, into SweepAxisModel::values
+  std::string reason;
+};
+
 struct SweepGrowth {
   double slope = 0;
   double low = 0, high = 0;  // the bootstrap interval
@@ -127,6 +133,7 @@ struct SweepModel {
   std::vector<SweepAxisModel> axes;
   std::optional<double> time_budget_s;
   std::vector<SweepPoint> points;  // points[i].index == i
+  std::vector<SweepBeyondDevice> beyond_device;
   std::vector<SweepFitModel> fits;
   std::optional<std::vector<SweepClaim>> claims;  // none: the file has no "claims"
 };

@@ -17,6 +17,13 @@ std::string slice_text(const std::vector<std::pair<std::string, std::string>>& s
   return out;
 }
 
+std::string point_values_text(const std::vector<SweepAxis>& axes, const std::vector<std::size_t>& value_index) {
+  std::string out;
+  for (std::size_t a = 0; a < axes.size(); ++a)
+    out += (out.empty() ? "" : ", ") + axes[a].name() + "=" + axes[a].values[value_index.at(a)].text;
+  return out;
+}
+
 const std::vector<double>& point_samples(const SweepPointResult& p, const std::string& g, const std::string& view,
                                          const std::string& phase) {
   for (const CaseTiming& c : p.timing.cases) {

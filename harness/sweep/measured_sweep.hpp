@@ -35,13 +35,21 @@ struct SweepPointResult {
   TimingResult timing;
 };
 
+// A point the device cannot hold (a DeviceLimitError while recording or timing it): kept with the
+// reason so the sweep says where it stops, instead of losing every other point.
+struct BeyondDevicePoint {
+  std::vector<std::size_t> value_index;  // one per axis
+  std::string reason;
+};
+
 struct MeasuredSweep {
   std::vector<SweepAxis> axes;
   std::vector<std::string> generators;
   SceneIdentity scene;
   int paper_table = 0;  // the paper table whose input the scene is (report/tables_run.hpp paper_table_of); 0: none
   std::optional<double> time_budget_s;
-  std::vector<SweepPointResult> points;
+  std::vector<SweepPointResult> points;          // the points timed
+  std::vector<BeyondDevicePoint> beyond_device;  // the points the device cannot hold, in sweep order
 };
 
 // One fit: a (generator, view, phase) along one axis, the other axes held at `slice`.
@@ -59,6 +67,9 @@ struct SweepFit {
 
 // "K=2, rsm=64"; "" for no other axis.
 std::string slice_text(const std::vector<std::pair<std::string, std::string>>& slice);
+
+// "gbuffer=3840x2176, K=2": each axis's value at a point.
+std::string point_values_text(const std::vector<SweepAxis>& axes, const std::vector<std::size_t>& value_index);
 
 // The samples (ms) of a case's phase or total at a point. Throws std::logic_error when absent.
 const std::vector<double>& point_samples(const SweepPointResult& point, const std::string& generator,

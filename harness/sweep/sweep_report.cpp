@@ -161,6 +161,12 @@ ojson sweep_json(const MeasuredSweep& s, const std::vector<SweepFit>& fits, cons
     }
     points.push_back(point);
   }
+  ojson beyond = ojson::array();
+  for (const BeyondDevicePoint& b : s.beyond_device) {
+    ojson values = ojson::object();
+    for (std::size_t a = 0; a < s.axes.size(); ++a) values[s.axes[a].name()] = s.axes[a].values[b.value_index[a]].text;
+    beyond.push_back(ojson{{"values", values}, {"reason", b.reason}});
+  }
   ojson fit_list = ojson::array();
   for (const SweepFit& f : fits) {
     ojson j{{"axis", s.axes[f.axis].name()},
@@ -220,6 +226,7 @@ ojson sweep_json(const MeasuredSweep& s, const std::vector<SweepFit>& fits, cons
              "held (a slice); percentile bootstrap over each point's rounds (DESIGN.md §9.1); judged "
              "against the expected slope ± tolerance"},
             {"points", points},
+            {"beyond_device", beyond},
             {"fits", fit_list}};
   if (!claims.empty()) doc["claims"] = claim_list;
   return doc;
@@ -233,6 +240,11 @@ std::string sweep_markdown(const MeasuredSweep& s, const std::vector<SweepFit>& 
   md += " (" + std::to_string(s.points.size()) + " points). Median ms (IQR) per generator, view and phase";
   if (s.time_budget_s) md += "; time budget " + number_text(*s.time_budget_s, 4) + " s split over the points";
   md += ".\n";
+  if (!s.beyond_device.empty()) {
+    md += "\n" + std::to_string(s.beyond_device.size()) + " point(s) are beyond this device and were not timed:\n\n";
+    for (const BeyondDevicePoint& b : s.beyond_device)
+      md += "- " + point_values_text(s.axes, b.value_index) + ": " + b.reason + "\n";
+  }
   std::size_t flagged = 0;
   for (const SweepFit& f : fits)
     if (f.judgement && f.judgement->flagged()) ++flagged;

@@ -102,16 +102,16 @@ SweepOutcome run_sweep(Device& device, const SweepOptions& o, const std::functio
   m.generators = o.tables.generators;
   m.time_budget_s = o.time_budget_s;
   // The capture of the last point: consecutive points of one size share it.
-  std::optional<RecordSizes> held_sizes;
+  bool holding = false;  // whether `held` is the capture of `held_sizes`
+  RecordSizes held_sizes{};
   ProvidedCapture held;
   for (std::size_t i = 0; i < points.size(); ++i) {
     TablesOptions t = o.tables;
     RecordSizes sizes = o.record_sizes;
     std::optional<double> gamma;
-    std::string where;
+    const std::string where = point_values_text(o.axes, points[i]);
     for (std::size_t a = 0; a < o.axes.size(); ++a) {
       const AxisValue& v = o.axes[a].values[points[i][a]];
-      where += (where.empty() ? "" : ", ") + o.axes[a].name() + "=" + v.text;
       const auto whole = static_cast<uint32_t>(v.value);
       switch (o.axes[a].parameter) {
         case SweepParameter::kVsgls: t.camera_vsgls = t.light_vsgls = whole; break;
@@ -131,43 +131,60 @@ SweepOutcome run_sweep(Device& device, const SweepOptions& o, const std::functio
     SweepPointResult r;
     r.value_index = points[i];
     r.time_cap_s = t.timing.time_cap_s;
-    if (!held_sizes || !same_sizes(*held_sizes, sizes)) {
-      if (o.capture) {
-        held = ProvidedCapture{load_capture(*o.capture), false, {}};  // every hash checked
-      } else {
-        const std::filesystem::path dir = sweep_capture_dir(o.captures_dir, o.scene, sizes);
-        held = provide_capture(device, *scene, sizes, dir);
-        if (!held.stale_because.empty())
-          say("re-recorded the stale capture " + dir.string() + ": " + held.stale_because, i);
-        else if (held.recorded) say("recorded the capture " + dir.string(), i);
+    try {
+      if (!holding || !same_sizes(held_sizes, sizes)) {
+        holding = false;  // until this size's capture is held
+        if (o.capture) {
+          held = ProvidedCapture{load_capture(*o.capture), false, {}};  // every hash checked
+        } else {
+          const std::filesystem::path dir = sweep_capture_dir(o.captures_dir, o.scene, sizes);
+          held = provide_capture(device, *scene, sizes, dir);
+          if (!held.stale_because.empty())
+            say("re-recorded the stale capture " + dir.string() + ": " + held.stale_because, i);
+          else if (held.recorded) say("recorded the capture " + dir.string(), i);
+        }
+        held_sizes = sizes;
+        holding = true;
       }
-      held_sizes = sizes;
+      r.capture_dir = o.capture ? o.capture->string() : sweep_capture_dir(o.captures_dir, o.scene, sizes).string();
+      if (m.points.empty()) {
+        m.scene = capture_scene_identity(held.capture.meta);
+        m.paper_table = paper_table_of(held.capture.meta);
+      }
+      std::optional<Capture> altered;
+      if (gamma) {
+        altered = sharpened_pdf_capture(held.capture, *gamma);
+        r.pdf_sharpness = gamma;
+        for (ViewKind k : {ViewKind::kCamera, ViewKind::kLight})
+          r.pdf_frequency[view_name(k)] = frequency_of(*altered, k);
+      }
+      const Capture& capture = altered ? *altered : held.capture;
+      r.capture = ojson{{"hashes", capture_hashes_json(capture)},
+                        {"gbuffer", ojson{{"width", capture.gbuffer.width}, {"height", capture.gbuffer.height}}},
+                        {"rsm", ojson{{"width", capture.rsm.width}, {"height", capture.rsm.height}}},
+                        {"pdf_altered_in_memory", altered.has_value()}};
+      r.config = config_json(t, capture, device.info());
+      say("point " + std::to_string(i + 1) + "/" + std::to_string(points.size()) + ": " + where + " (" +
+              std::to_string(2 * t.generators.size()) + " cases)",
+          i);
+      r.timing = time_capture(device, t, capture, [&](const TimingProgress& p) {
+        if (on_event) on_event(SweepEvent{"", &p, i, points.size()});
+      });
+    } catch (const DeviceLimitError& e) {
+      // A size the device cannot hold ends this point only: the device is unharmed (DESIGN.md §10.1).
+      say("point " + std::to_string(i + 1) + "/" + std::to_string(points.size()) + ": " + where +
+              " is beyond the device: " + e.what(),
+          i);
+      m.beyond_device.push_back(BeyondDevicePoint{points[i], e.what()});
+      continue;
     }
-    r.capture_dir = o.capture ? o.capture->string() : sweep_capture_dir(o.captures_dir, o.scene, sizes).string();
-    if (i == 0) {
-      m.scene = capture_scene_identity(held.capture.meta);
-      m.paper_table = paper_table_of(held.capture.meta);
-    }
-    std::optional<Capture> altered;
-    if (gamma) {
-      altered = sharpened_pdf_capture(held.capture, *gamma);
-      r.pdf_sharpness = gamma;
-      for (ViewKind k : {ViewKind::kCamera, ViewKind::kLight})
-        r.pdf_frequency[view_name(k)] = frequency_of(*altered, k);
-    }
-    const Capture& capture = altered ? *altered : held.capture;
-    r.capture = ojson{{"hashes", capture_hashes_json(capture)},
-                      {"gbuffer", ojson{{"width", capture.gbuffer.width}, {"height", capture.gbuffer.height}}},
-                      {"rsm", ojson{{"width", capture.rsm.width}, {"height", capture.rsm.height}}},
-                      {"pdf_altered_in_memory", altered.has_value()}};
-    r.config = config_json(t, capture, device.info());
-    say("point " + std::to_string(i + 1) + "/" + std::to_string(points.size()) + ": " + where + " (" +
-            std::to_string(2 * t.generators.size()) + " cases)",
-        i);
-    r.timing = time_capture(device, t, capture, [&](const TimingProgress& p) {
-      if (on_event) on_event(SweepEvent{"", &p, i, points.size()});
-    });
     m.points.push_back(std::move(r));
+  }
+  if (m.points.size() < 2) {
+    std::string why;
+    for (const BeyondDevicePoint& b : m.beyond_device) why += "\n  " + b.reason;
+    throw DeviceError("sweep: only " + std::to_string(m.points.size()) + " of " + std::to_string(points.size()) +
+                      " points fit " + device.info().name + ", and a sweep needs 2; the others are beyond it:" + why);
   }
 
   SweepOutcome out;

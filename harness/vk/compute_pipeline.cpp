@@ -176,8 +176,9 @@ BindingSet::BindingSet(Device& device, const ComputePipeline& pipeline, const st
     const VkDeviceSize range = buffers[i].range == VK_WHOLE_SIZE ? buffers[i].buffer->size() - buffers[i].offset
                                                                   : buffers[i].range;
     if (range > max_range)
-      throw DeviceError(device.info().name + " cannot bind " + std::to_string(range) + " bytes of a storage buffer to '" +
-                        name + "': the device allows " + std::to_string(max_range) + " (maxStorageBufferRange)");
+      throw DeviceLimitError(device.info().name + " cannot bind " + std::to_string(range) +
+                             " bytes of a storage buffer to '" + name + "': the device allows " +
+                             std::to_string(max_range) + " (maxStorageBufferRange)");
     infos[i] = {buffers[i].buffer->get(), buffers[i].offset, buffers[i].range};
     writes[i] = VkWriteDescriptorSet{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
     writes[i].dstSet = set_;

@@ -71,7 +71,7 @@ UniqueHandle<VkDeviceMemory> Device::allocate_memory(const VkMemoryRequirements&
     std::ostringstream os;
     os << "out of device memory allocating '" << what << "' (" << (static_cast<double>(req.size) / (1 << 20))
        << " MiB) on " << info_.name;
-    throw DeviceError(os.str());
+    throw DeviceLimitError(os.str());
   }
   VK_CHECK(r);
   set_name(memory, VK_OBJECT_TYPE_DEVICE_MEMORY, what + ".memory");

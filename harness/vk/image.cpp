@@ -63,9 +63,9 @@ MipImage::MipImage(Device& device, uint32_t size, uint32_t levels, uint32_t laye
     : format_(format), size_(size), levels_(levels), layers_(layers) {
   const DeviceLimits& limits = device.info().limits;
   if (size > limits.image_dimension_2d)
-    throw DeviceError(device.info().name + " cannot create image '" + name + "': it needs " + std::to_string(size) +
-                      " texels per side where the device allows " + std::to_string(limits.image_dimension_2d) +
-                      " (maxImageDimension2D)");
+    throw DeviceLimitError(device.info().name + " cannot create image '" + name + "': it needs " +
+                           std::to_string(size) + " texels per side where the device allows " +
+                           std::to_string(limits.image_dimension_2d) + " (maxImageDimension2D)");
   if (layers > limits.image_array_layers)
     throw DeviceError(device.info().name + " cannot create image '" + name + "': it needs " + std::to_string(layers) +
                       " array layers where the device allows " + std::to_string(limits.image_array_layers) +
