@@ -10,7 +10,7 @@
 layout(local_size_x_id = 0, local_size_y_id = 1) in;  // kBrsmGroupSize (interface/brsm.h)
 const uint TILE = gl_WorkGroupSize.x * gl_WorkGroupSize.y;  // = threads per group: each thread loads one VSGL of a tile
 
-layout(std430, binding = 0) readonly buffer View { vec4 view_texels[]; };  // the RSM, DeviceView layout
+#include "view_layers.glsl"  // the RSM, DeviceView layout
 layout(std430, binding = 1) readonly buffer CameraVsgls { Vsgl camera_vsgls[]; };
 layout(std430, binding = 2) writeonly buffer Pdf { float pdf[]; };
 layout(push_constant) uniform PushBlock { BrsmPush pc; };
@@ -20,12 +20,11 @@ shared Vsgl tile[TILE];
 void main() {
   uvec2 p = gl_GlobalInvocationID.xy;
   bool inside = p.x < pc.width && p.y < pc.height;
-  uint n = pc.width * pc.height;
   uint i = inside ? p.y * pc.width + p.x : 0u;
-  vec4 t0 = view_texels[i];
-  vec4 t1 = view_texels[n + i];
-  vec4 t2 = view_texels[2u * n + i];
-  vec4 t3 = view_texels[3u * n + i];
+  vec4 t0 = view_position_valid(i);
+  vec4 t1 = view_normal_pdf(i);
+  vec4 t2 = view_diffuse_roughness(i);
+  vec4 t3 = view_specular(i);
   VplLobe lobe = vpl_lobe(t0.xyz, t1.xyz, t2.rgb, t3.rgb, t2.w, pc.light_position.xyz);
   bool lit = inside && t0.w > 0.5 && lobe.power > 0.0;
   float importance = 0.0;

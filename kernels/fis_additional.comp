@@ -3,7 +3,7 @@
 // FIS "additional" pass writing level 0 of the storage-buffer pyramid (`--pyramid buffer`).
 // The pass: include/fis_additional.glsl.
 // The uploaded view: 4 layers of W*H texels: (P, valid), (N, pdf), (diffuse, roughness), (specular, 0).
-layout(std430, binding = 0) readonly buffer View { vec4 view_texels[]; };
+#include "view_layers.glsl"
 layout(std430, binding = 1) writeonly buffer Pyramid { vec4 pyramid_texels[]; };
 #include "fis_additional.glsl"
 

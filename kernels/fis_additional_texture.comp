@@ -2,7 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 // FIS "additional" pass writing level 0 of the sampled-image pyramid (`--pyramid texture`): the
 // three moment layers are the image's array layers. The pass: include/fis_additional.glsl.
-layout(std430, binding = 0) readonly buffer View { vec4 view_texels[]; };
+#include "view_layers.glsl"
 layout(binding = 1, rgba32f) uniform writeonly image2DArray level0;
 #include "fis_additional.glsl"
 

@@ -11,7 +11,7 @@
 
 #include "interface/kmeans.h"
 layout(local_size_x_id = 0, local_size_y_id = 1) in;  // kKmeansImageGroupSize (interface/kmeans.h)
-layout(std430, binding = 0) readonly buffer View { vec4 view_texels[]; };
+#include "view_layers.glsl"
 layout(std430, binding = 1) writeonly buffer Features { vec4 features[]; };
 layout(std430, binding = 2) writeonly buffer PdfPyramid { vec4 pdf_level0[]; };
 layout(std430, binding = 3) buffer Grid { uint grid_words[]; };
@@ -24,12 +24,11 @@ void main() {
   barrier();
   uvec2 p = gl_GlobalInvocationID.xy;
   if (p.x < pc.width && p.y < pc.height) {
-    uint n = pc.width * pc.height;
     uint i = p.y * pc.width + p.x;
-    vec4 t0 = view_texels[i];
-    vec4 t1 = view_texels[n + i];
-    vec4 t2 = view_texels[2u * n + i];
-    vec4 t3 = view_texels[3u * n + i];
+    vec4 t0 = view_position_valid(i);
+    vec4 t1 = view_normal_pdf(i);
+    vec4 t2 = view_diffuse_roughness(i);
+    vec4 t3 = view_specular(i);
     vec4 m0, m1, m2;
     texel_moments(t0.w > 0.5, t0.xyz, t1.xyz, t2.xyz, t3.xyz, t2.w, t1.w, pc.source_position.xyz,
                   pc.camera_view != 0u, m0, m1, m2);

@@ -10,7 +10,8 @@ layout(local_size_x_id = 0) in;  // kKmeansNarrowGroupSize (interface/kmeans.h)
 layout(std430, binding = 0) readonly buffer Pyramid { vec4 pyramid_texels[]; };
 #include "pyramid.glsl"
 #include "hierarchical_warp.glsl"
-layout(std430, binding = 1) readonly buffer View { vec4 view_texels[]; };
+#define VIEW_BINDING 1
+#include "view_layers.glsl"
 layout(std430, binding = 2) writeonly buffer Centres { vec4 centres[]; };
 layout(push_constant) uniform PushBlock { KmeansSeedPush pc; };
 
@@ -22,7 +23,7 @@ void main() {
   WarpedSample s = warp_sample(fibonacci_lattice(i, pc.count, pc.offset_bits));
   vec3 feature;
   if (pc.space3d != 0u)
-    feature = view_texels[uint(s.texel.y) * pc.width + uint(s.texel.x)].xyz;
+    feature = view_position_valid(uint(s.texel.y) * pc.width + uint(s.texel.x)).xyz;
   else
     feature = vec3(s.x * float(pyramid_size), 0.0);
   centres[i] = vec4(feature, 0.0);

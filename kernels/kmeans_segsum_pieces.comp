@@ -8,7 +8,7 @@
 #include "vsgl_math.glsl"
 #include "interface/kmeans.h"
 layout(local_size_x_id = 0) in;  // kKmeansNarrowGroupSize (interface/kmeans.h)
-layout(std430, binding = 0) readonly buffer View { vec4 view_texels[]; };
+#include "view_layers.glsl"
 layout(std430, binding = 1) readonly buffer Sorted { uvec2 sorted_pairs[]; };
 layout(std430, binding = 2) writeonly buffer Pieces { vec4 pieces[]; };  // 4 vec4 per slot
 #define KMEANS_READS_VIEW

@@ -7,7 +7,7 @@
 #include "vsgl_math.glsl"
 #include "interface/kmeans.h"
 layout(local_size_x_id = 0) in;  // kKmeansNarrowGroupSize (interface/kmeans.h)
-layout(std430, binding = 0) readonly buffer View { vec4 view_texels[]; };
+#include "view_layers.glsl"
 layout(std430, binding = 1) readonly buffer Sorted { uvec2 sorted_pairs[]; };
 layout(std430, binding = 2) readonly buffer Ranges { uvec2 ranges[]; };
 layout(std430, binding = 3) readonly buffer Centres { vec4 centres[]; };

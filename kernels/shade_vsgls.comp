@@ -13,7 +13,7 @@
 layout(local_size_x_id = 0, local_size_y_id = 1) in;  // kShadeGroupSize (interface/shading.h)
 const uint TILE = gl_WorkGroupSize.x * gl_WorkGroupSize.y;  // = threads per group
 
-layout(std430, binding = 0) readonly buffer View { vec4 view_texels[]; };  // the G-buffer, DeviceView layout
+#include "view_layers.glsl"  // the G-buffer, DeviceView layout
 layout(std430, binding = 1) readonly buffer Lights { Vsgl vsgls[]; };
 layout(std430, binding = 2) writeonly buffer Radiance { vec4 radiance[]; };
 layout(push_constant) uniform PushBlock { ShadePush pc; };
@@ -23,12 +23,11 @@ shared Vsgl tile[TILE];
 void main() {
   uvec2 o = gl_GlobalInvocationID.xy;
   bool inside = o.x < pc.out_width && o.y < pc.out_height;
-  uint n = pc.width * pc.height;
   uint i = inside ? (o.y * pc.stride) * pc.width + o.x * pc.stride : 0u;
-  vec4 t0 = view_texels[i];           // P, valid
-  vec4 t1 = view_texels[n + i];       // N, pdf
-  vec4 t2 = view_texels[2u * n + i];  // diffuse albedo, roughness
-  vec4 t3 = view_texels[3u * n + i];  // specular albedo, 0
+  vec4 t0 = view_position_valid(i);
+  vec4 t1 = view_normal_pdf(i);
+  vec4 t2 = view_diffuse_roughness(i);
+  vec4 t3 = view_specular(i);
   bool valid = inside && t0.w > 0.5;
   vec3 wo = normalize(pc.camera_position.xyz - t0.xyz);
   vec3 sum = vec3(0.0);

@@ -1,5 +1,7 @@
 #include "harness/generators/device_view.hpp"
 
+#include <algorithm>
+
 #include "harness/vk/device.hpp"
 #include "harness/core/error.hpp"
 
@@ -38,10 +40,26 @@ DeviceView upload_view(Device& device, const Capture& capture, ViewKind kind) {
   }
   if (out.samplable_texels == 0)
     throw InputError(what + ": all-zero PDF on the valid texels: no texel can be sampled");
-  const auto texels = interleave_view(v);
-  out.texels = Buffer(device, texels.size() * sizeof(glm::vec4), MemoryUsage::kDeviceLocal,
-                      std::string(out.label) + ".texels");
-  upload(device, out.texels, texels.data(), texels.size() * sizeof(glm::vec4));
+  out.texels = upload_layers(device, v, std::string(out.label) + ".texels");
+  return out;
+}
+
+LayeredTexels upload_layers(Device& device, const ViewImage& view, const std::string& name) {
+  const auto texels = interleave_view(view);
+  LayeredTexels out;
+  out.layer_bytes = VkDeviceSize{view.texels()} * sizeof(glm::vec4);
+  const VkDeviceSize align = std::max<VkDeviceSize>(device.info().limits.storage_buffer_offset_alignment, 1);
+  out.layer_stride = (out.layer_bytes + align - 1) / align * align;
+  out.buffer = Buffer(device, 4 * out.layer_stride, MemoryUsage::kDeviceLocal, name);
+  for (uint32_t layer = 0; layer < 4; ++layer)
+    upload(device, out.buffer, texels.data() + std::size_t{layer} * view.texels(), out.layer_bytes,
+           layer * out.layer_stride);
+  return out;
+}
+
+std::vector<BufferBinding> LayeredTexels::layers() const {
+  std::vector<BufferBinding> out;
+  for (uint32_t layer = 0; layer < 4; ++layer) out.emplace_back(buffer, layer * layer_stride, layer_bytes);
   return out;
 }
 

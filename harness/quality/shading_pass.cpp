@@ -28,9 +28,11 @@ RadianceImage shade_camera_view(Device& device, const DeviceView& camera, const 
   Buffer radiance(device, count * sizeof(glm::vec4), MemoryUsage::kDeviceLocal, "shade.radiance");
   ComputePipeline pipeline(device, {"shade_vsgls.comp", 3, sizeof(gpu::ShadePush),
                                     work_group_size_2d(gpu::kShadeGroupSize, gpu::kShadeGroupSize)});
-  BindingSet set(device, pipeline, {camera.texels, BufferBinding(vsgls, 0, VkDeviceSize{vsgl_count} * sizeof(VsglRecord)),
-                                    radiance},
-                 "shade.set");
+  BindingSet set(
+      device, pipeline,
+      buffer_bindings(
+          {camera.layers(), {BufferBinding(vsgls, 0, VkDeviceSize{vsgl_count} * sizeof(VsglRecord))}, {radiance}}),
+      "shade.set");
   const gpu::ShadePush push{camera.square.width, camera.square.height, image.width, image.height, stride, vsgl_count,
                        0, 0, glm::vec4(camera.source_position, 1.0f)};
   device.submit_and_wait(

@@ -64,13 +64,11 @@ BrsmBuild build_brsm_pdf(Device& device, Capture& capture, uint32_t camera_vsgls
   FisGenerator camera_fis(device, camera, FisVariant::kModified, params);
 
   const ViewImage& rsm = capture.rsm;
-  const auto rsm_texels = interleave_view(rsm);
-  Buffer rsm_buffer(device, rsm_texels.size() * sizeof(glm::vec4), MemoryUsage::kDeviceLocal, "brsm.rsm_texels");
-  upload(device, rsm_buffer, rsm_texels.data(), rsm_texels.size() * sizeof(glm::vec4));
+  const LayeredTexels rsm_texels = upload_layers(device, rsm, "brsm.rsm_texels");
   Buffer pdf(device, rsm.texels() * sizeof(float), MemoryUsage::kDeviceLocal, "brsm.pdf");
   ComputePipeline pipeline(device, {"brsm_pdf.comp", 3, sizeof(gpu::BrsmPush),
                                     work_group_size_2d(gpu::kBrsmGroupSize, gpu::kBrsmGroupSize)});
-  BindingSet set(device, pipeline, {rsm_buffer, camera_fis.vsgls(), pdf}, "brsm.set");
+  BindingSet set(device, pipeline, buffer_bindings({rsm_texels.layers(), {camera_fis.vsgls()}, {pdf}}), "brsm.set");
 
   std::optional<TimestampPool> timestamps;
   if (device.info().timestamps()) timestamps.emplace(device, 2, "brsm.timestamps");

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 #include <map>
+#include <numeric>
 #include <stdexcept>
 
 #include "harness/vk/buffer.hpp"
@@ -20,12 +21,20 @@ uint32_t float_bits(float f) {
   return u;
 }
 
-PipelineNeeds pipeline_needs(const ComputePipelineDesc& desc) {
+namespace {
+
+std::map<uint32_t, uint32_t> spec_values(const ComputePipelineDesc& desc) {
   std::map<uint32_t, uint32_t> spec;
   for (const auto& c : desc.constants) spec[c.id] = c.value;
+  return spec;
+}
+
+}  // namespace
+
+PipelineNeeds pipeline_needs(const ComputePipelineDesc& desc) {
   KernelInterface k;
   try {
-    k = reflect_kernel(find_shader(desc.shader), spec);
+    k = reflect_kernel(find_shader(desc.shader), spec_values(desc));
   } catch (const std::exception& e) {
     throw std::runtime_error(desc.shader + ": " + e.what());
   }
@@ -65,12 +74,19 @@ ComputePipeline::ComputePipeline(Device& device, const ComputePipelineDesc& desc
   VkDevice dev = device.get();
   const auto spirv = find_shader(desc.shader);
 
+  // A buffer binding holds as many descriptors as the kernel declares there: an array binding
+  // (the view's layers) takes one range per element.
+  buffer_counts_.assign(desc.storage_buffers, 1u);
+  for (const ReflectedDescriptor& d : reflect_kernel(spirv, spec_values(desc)).descriptors)
+    if (d.set == 0 && d.binding < desc.storage_buffers && d.type == VK_DESCRIPTOR_TYPE_STORAGE_BUFFER && d.count > 1)
+      buffer_counts_[d.binding] = d.count;
+
   std::vector<VkDescriptorSetLayoutBinding> bindings(desc.storage_buffers + desc.images.size());
   for (uint32_t i = 0; i < bindings.size(); ++i) {
     const bool buffer = i < desc.storage_buffers;
     bindings[i].binding = i;
     bindings[i].descriptorType = buffer ? VK_DESCRIPTOR_TYPE_STORAGE_BUFFER : desc.images[i - desc.storage_buffers].type;
-    bindings[i].descriptorCount = buffer ? 1 : desc.images[i - desc.storage_buffers].count;
+    bindings[i].descriptorCount = buffer ? buffer_counts_[i] : desc.images[i - desc.storage_buffers].count;
     bindings[i].stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
   }
   VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
@@ -125,6 +141,12 @@ ComputePipeline::ComputePipeline(Device& device, const ComputePipelineDesc& desc
   device.set_name(pipeline, VK_OBJECT_TYPE_PIPELINE, desc.shader);
 }
 
+std::vector<BufferBinding> buffer_bindings(std::initializer_list<std::vector<BufferBinding>> groups) {
+  std::vector<BufferBinding> out;
+  for (const auto& g : groups) out.insert(out.end(), g.begin(), g.end());
+  return out;
+}
+
 BindingSet::BindingSet(Device& device, const ComputePipeline& pipeline, std::initializer_list<BufferBinding> buffers,
                        const std::string& name)
     : BindingSet(device, pipeline, std::vector<BufferBinding>(buffers), name) {}
@@ -136,10 +158,13 @@ BindingSet::BindingSet(Device& device, const ComputePipeline& pipeline, const st
 BindingSet::BindingSet(Device& device, const ComputePipeline& pipeline, const std::vector<BufferBinding>& buffers,
                        const std::vector<ImageBinding>& images, const std::string& name) {
   VkDevice dev = device.get();
-  const uint32_t n = pipeline.desc().storage_buffers;
-  if (buffers.size() != n)
-    throw std::logic_error("binding set '" + name + "' has " + std::to_string(buffers.size()) + " buffers, " +
-                           pipeline.desc().shader + " takes " + std::to_string(n));
+  const std::vector<uint32_t>& counts = pipeline.buffer_counts();
+  const auto n = static_cast<uint32_t>(buffers.size());
+  if (n != std::accumulate(counts.begin(), counts.end(), 0u))
+    throw std::logic_error("binding set '" + name + "' has " + std::to_string(n) + " buffers, " +
+                           pipeline.desc().shader + " takes " +
+                           std::to_string(std::accumulate(counts.begin(), counts.end(), 0u)) + " in " +
+                           std::to_string(counts.size()) + " bindings");
   const auto& slots = pipeline.desc().images;
   if (images.size() != slots.size())
     throw std::logic_error("binding set '" + name + "' has " + std::to_string(images.size()) + " image bindings, " +
@@ -170,7 +195,7 @@ BindingSet::BindingSet(Device& device, const ComputePipeline& pipeline, const st
   device.set_name(set_, VK_OBJECT_TYPE_DESCRIPTOR_SET, name);
 
   std::vector<VkDescriptorBufferInfo> infos(n);
-  std::vector<VkWriteDescriptorSet> writes(n);
+  std::vector<VkWriteDescriptorSet> writes(counts.size());
   const uint32_t max_range = device.info().limits.storage_buffer_range;
   for (uint32_t i = 0; i < n; ++i) {
     const VkDeviceSize range = buffers[i].range == VK_WHOLE_SIZE ? buffers[i].buffer->size() - buffers[i].offset
@@ -180,19 +205,21 @@ BindingSet::BindingSet(Device& device, const ComputePipeline& pipeline, const st
                              " bytes of a storage buffer to '" + name + "': the device allows " +
                              std::to_string(max_range) + " (maxStorageBufferRange)");
     infos[i] = {buffers[i].buffer->get(), buffers[i].offset, buffers[i].range};
-    writes[i] = VkWriteDescriptorSet{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    writes[i].dstSet = set_;
-    writes[i].dstBinding = i;
-    writes[i].descriptorCount = 1;
-    writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    writes[i].pBufferInfo = &infos[i];
+  }
+  for (uint32_t b = 0, first = 0; b < counts.size(); first += counts[b++]) {
+    writes[b] = VkWriteDescriptorSet{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    writes[b].dstSet = set_;
+    writes[b].dstBinding = b;
+    writes[b].descriptorCount = counts[b];
+    writes[b].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    writes[b].pBufferInfo = &infos[first];
   }
   std::vector<std::vector<VkDescriptorImageInfo>> image_infos(slots.size());
   for (std::size_t k = 0; k < slots.size(); ++k) {
     for (VkImageView v : images[k].views) image_infos[k].push_back({images[k].sampler, v, VK_IMAGE_LAYOUT_GENERAL});
     VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
     w.dstSet = set_;
-    w.dstBinding = n + static_cast<uint32_t>(k);
+    w.dstBinding = static_cast<uint32_t>(counts.size() + k);
     w.descriptorCount = slots[k].count;
     w.descriptorType = slots[k].type;
     w.pImageInfo = image_infos[k].data();

@@ -60,9 +60,12 @@ class ComputePipeline {
   VkPipelineLayout layout() const { return layout_.get(); }
   VkDescriptorSetLayout set_layout() const { return set_layout_.get(); }
   const ComputePipelineDesc& desc() const { return desc_; }
+  // Descriptors per buffer binding: 1, or the length of an array the kernel declares there.
+  const std::vector<uint32_t>& buffer_counts() const { return buffer_counts_; }
 
  private:
   ComputePipelineDesc desc_;
+  std::vector<uint32_t> buffer_counts_;
   UniqueHandle<VkDescriptorSetLayout> set_layout_;
   UniqueHandle<VkPipelineLayout> layout_;
   UniqueHandle<VkPipeline> pipeline_;
@@ -77,6 +80,10 @@ struct BufferBinding {
   BufferBinding(const Buffer& b, VkDeviceSize off, VkDeviceSize r) : buffer(&b), offset(off), range(r) {}
 };
 
+// Buffer bindings in binding order from one group per binding: a buffer, or the elements of an
+// array binding (DeviceView::layers()).
+std::vector<BufferBinding> buffer_bindings(std::initializer_list<std::vector<BufferBinding>> groups);
+
 // The views (and, for a combined image sampler, the sampler) of one ImageSlot; images stay in
 // VK_IMAGE_LAYOUT_GENERAL.
 struct ImageBinding {
@@ -85,7 +92,7 @@ struct ImageBinding {
 };
 
 // One descriptor set (with its own small pool) binding buffers, then images, to a pipeline's
-// bindings in order.
+// bindings in order; an array buffer binding of c descriptors takes the next c buffers.
 class BindingSet {
  public:
   BindingSet(Device& device, const ComputePipeline& pipeline, std::initializer_list<BufferBinding> buffers,

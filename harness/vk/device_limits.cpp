@@ -32,6 +32,7 @@ DeviceLimits read_device_limits(const VkPhysicalDeviceProperties& props, uint64_
   d.image_dimension_2d = l.maxImageDimension2D;
   d.image_array_layers = l.maxImageArrayLayers;
   d.storage_buffer_range = l.maxStorageBufferRange;
+  d.storage_buffer_offset_alignment = l.minStorageBufferOffsetAlignment;
   d.max_memory_allocation_size = max_allocation;
   d.subgroup_size = subgroup_size;
   d.rgba32f_features = rgba32f_features;

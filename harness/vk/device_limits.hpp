@@ -35,6 +35,7 @@ struct DeviceLimits {
   uint32_t image_dimension_2d = 0;
   uint32_t image_array_layers = 0;
   uint32_t storage_buffer_range = 0;
+  uint64_t storage_buffer_offset_alignment = 1;  // minStorageBufferOffsetAlignment
   uint64_t max_memory_allocation_size = 0;  // VkPhysicalDeviceMaintenance3Properties (Vulkan 1.1)
   uint32_t subgroup_size = 0;
   VkFormatFeatureFlags rgba32f_features = 0;  // optimal tiling, VK_FORMAT_R32G32B32A32_SFLOAT

@@ -2,7 +2,7 @@
 #define FIS_ADDITIONAL_GLSL
 // FIS phase 1, "additional G-buffer / RSM" (paper Table 1), shared by both pyramid paths: the
 // per-texel moment layers of DESIGN.md §4/§7 for level 0 of the pyramid. One thread per texel. The
-// includer declares `view_texels` and defines store_moments(p, i, m0, m1, m2) (i = p.y W + p.x).
+// includer includes view_layers.glsl and defines store_moments(p, i, m0, m1, m2) (i = p.y W + p.x).
 #include "interface/fis.h"
 #include "vsgl_math.glsl"
 
@@ -14,12 +14,11 @@ void store_moments(uvec2 p, uint i, vec4 m0, vec4 m1, vec4 m2);
 void main() {
   uvec2 p = gl_GlobalInvocationID.xy;
   if (p.x >= pc.width || p.y >= pc.height) return;
-  uint n = pc.width * pc.height;
   uint i = p.y * pc.width + p.x;
-  vec4 t0 = view_texels[i];
-  vec4 t1 = view_texels[n + i];
-  vec4 t2 = view_texels[2u * n + i];
-  vec4 t3 = view_texels[3u * n + i];
+  vec4 t0 = view_position_valid(i);
+  vec4 t1 = view_normal_pdf(i);
+  vec4 t2 = view_diffuse_roughness(i);
+  vec4 t3 = view_specular(i);
   vec4 m0, m1, m2;
   texel_moments(t0.w > 0.5, t0.xyz, t1.xyz, t2.xyz, t3.xyz, t2.w, t1.w, pc.source_position.xyz, pc.camera_view != 0u,
                 m0, m1, m2);

@@ -2,7 +2,7 @@
 #define KMEANS_CLUSTER_GLSL
 // k-means `sum` (DESIGN.md §6.2, §7): the moments of a cluster's texels and the VSGL built from them.
 // The includer includes vsgl_math.glsl and, to read texels, defines KMEANS_READS_VIEW and declares
-// `view_texels` (the uploaded view: 4 layers of W*H vec4). Shared by the sequential sum (kmeans_sum.comp) and the segmented one.
+// view_layers.glsl (the uploaded view: 4 layers of W*H vec4). Shared by the sequential sum (kmeans_sum.comp) and the segmented one.
 #include "kmeans_common.glsl"
 
 struct ClusterMoments {
@@ -21,11 +21,10 @@ ClusterMoments cluster_moments_zero() {
 
 #ifdef KMEANS_READS_VIEW
 ClusterMoments texel_cluster_moments(uint texel, uint width, uint height, bool camera_view, vec3 source) {
-  uint n = width * height;
-  vec4 t0 = view_texels[texel];
-  vec4 t1 = view_texels[n + texel];
-  vec4 t2 = view_texels[2u * n + texel];
-  vec4 t3 = view_texels[3u * n + texel];
+  vec4 t0 = view_position_valid(texel);
+  vec4 t1 = view_normal_pdf(texel);
+  vec4 t2 = view_diffuse_roughness(texel);
+  vec4 t3 = view_specular(texel);
   ClusterMoments s;
   texel_moments(t0.w > 0.5, t0.xyz, t1.xyz, t2.xyz, t3.xyz, t2.w, t1.w, source, camera_view, s.m0, s.m1, s.m2);
   s.pixels = vec2(float(texel % width), float(texel / width)) + 0.5;

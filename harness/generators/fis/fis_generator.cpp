@@ -237,7 +237,7 @@ FisGenerator::FisGenerator(Device& device, const DeviceView& view, FisVariant va
     additional_.emplace(device, additional_pipeline(path_));
     mip_.emplace(device, mip_pipelines(path_, strategy_).front());
     filtered_sampling_.emplace(device, sampling);
-    additional_set_.emplace(device, *additional_, std::vector<BufferBinding>{view.texels, pyramid_}, base + ".additional");
+    additional_set_.emplace(device, *additional_, buffer_bindings({view.layers(), {pyramid_}}), base + ".additional");
     mip_sets_.emplace_back(device, *mip_, std::vector<BufferBinding>{pyramid_}, base + ".mipmapping");
     sampling_set_.emplace(device, *filtered_sampling_, std::vector<BufferBinding>{pyramid_, vsgls_},
                           base + ".filtered_sampling");
@@ -262,8 +262,8 @@ FisGenerator::FisGenerator(Device& device, const DeviceView& view, FisVariant va
   sampler_.emplace(device, si, base + ".sampler");
 
   additional_.emplace(device, additional_pipeline(path_));
-  additional_set_.emplace(device, *additional_, std::vector<BufferBinding>{view.texels},
-                          std::vector<ImageBinding>{{{image_->level_view(0)}}}, base + ".additional");
+  additional_set_.emplace(device, *additional_, view.layers(), std::vector<ImageBinding>{{{image_->level_view(0)}}},
+                          base + ".additional");
   filtered_sampling_.emplace(device, sampling);
   sampling_set_.emplace(device, *filtered_sampling_, std::vector<BufferBinding>{vsgls_},
                         std::vector<ImageBinding>{{{image_->view()}, sampler_->get()}}, base + ".filtered_sampling");

@@ -87,8 +87,7 @@ KmeansGenerator::ScanPlan KmeansGenerator::plan_scan(uint32_t offset, uint32_t c
   return plan;
 }
 
-KmeansGenerator::KmeansGenerator(Device& device, const DeviceView& view, KmeansSpace space,
-                                 const KmeansParams& params)
+KmeansGenerator::KmeansGenerator(Device& device, const DeviceView& view, KmeansSpace space, const KmeansParams& params)
     : device_(device),
       view_(view),
       space_(space),
@@ -133,9 +132,10 @@ KmeansGenerator::KmeansGenerator(Device& device, const DeviceView& view, KmeansS
       update_pieces_(device, kernel_1d("kmeans_update_pieces.comp", 3, sizeof(KmeansPiecesPush), kNarrow)),
       update_centres_(device, kernel_1d("kmeans_update_centres.comp", 3, sizeof(KmeansUpdatePush), kNarrow)),
       fill_grid_set_(device, fill_, {grid_}, name() + ".fill"),
-      prepare_set_(device, prepare_, {view.texels, features_, pdf_pyramid_, grid_}, name() + ".prepare"),
+      prepare_set_(device, prepare_, buffer_bindings({view.layers(), {features_}, {pdf_pyramid_}, {grid_}}),
+                   name() + ".prepare"),
       pdf_mip_set_(device, pdf_mip_, {pdf_pyramid_}, name() + ".pdf_mip"),
-      seed_set_(device, seed_, {pdf_pyramid_, view.texels, centres_}, name() + ".seed"),
+      seed_set_(device, seed_, buffer_bindings({{pdf_pyramid_}, view.layers(), {centres_}}), name() + ".seed"),
       grid_count_set_(device, grid_count_, {grid_, centres_}, name() + ".grid_count"),
       grid_fill_set_(device, grid_fill_, {grid_, centres_, cell_items_}, name() + ".grid_fill"),
       assign_set_(device, assign_, {grid_, centres_, cell_items_, features_, assignment_}, name() + ".assign"),
@@ -159,7 +159,7 @@ KmeansGenerator::KmeansGenerator(Device& device, const DeviceView& view, KmeansS
     sum_pieces_.emplace(device, bytes<glm::vec4>(4ull * pieces_), MemoryUsage::kDeviceLocal, name() + ".sum_pieces");
     segsum_pieces_.emplace(device, kernel_1d("kmeans_segsum_pieces.comp", 3, sizeof(KmeansSumPush), kNarrow));
     segsum_clusters_.emplace(device, kernel_1d("kmeans_segsum_clusters.comp", 4, sizeof(KmeansSumPush), kNarrow));
-    segsum_pieces_set_.emplace(device, *segsum_pieces_, std::initializer_list<BufferBinding>{view.texels, sorted_, *sum_pieces_},
+    segsum_pieces_set_.emplace(device, *segsum_pieces_, buffer_bindings({view.layers(), {sorted_}, {*sum_pieces_}}),
                                name() + ".segsum_pieces");
     segsum_clusters_set_.emplace(device, *segsum_clusters_,
                                  std::initializer_list<BufferBinding>{ranges_, *sum_pieces_, centres_, vsgls_},
@@ -169,7 +169,7 @@ KmeansGenerator::KmeansGenerator(Device& device, const DeviceView& view, KmeansS
   // table3: end segmented_sum
   // table3: begin sequential_sum
   sum_.emplace(device, kernel_1d("kmeans_sum.comp", 5, sizeof(KmeansSumPush), kNarrow));
-  sum_set_.emplace(device, *sum_, std::initializer_list<BufferBinding>{view.texels, sorted_, ranges_, centres_, vsgls_},
+  sum_set_.emplace(device, *sum_, buffer_bindings({view.layers(), {sorted_}, {ranges_}, {centres_}, {vsgls_}}),
                    name() + ".sum");
   // table3: end sequential_sum
 }
