@@ -165,7 +165,6 @@ TEST(DashboardPage, ScalingSectionDrawsEachSweepAxisWithItsFits) {
 }
 
 TEST(DashboardPage, ScalingSectionSaysInOneLineThatThereIsNoSweep) {
-  EXPECT_TRUE(find_sweep_runs(kResults).empty());
   const std::string html =
       dashboard_html(find_table_runs(kResults), load_paper_tables(kResults / "paper/paper_tables.json"), "results",
                      cli::dashboard_generators(), {});
@@ -174,6 +173,18 @@ TEST(DashboardPage, ScalingSectionSaysInOneLineThatThereIsNoSweep) {
   EXPECT_EQ(count(section, "<p"), 1u);
   EXPECT_NE(section.find("No sweep JSON"), std::string::npos) << section;
   EXPECT_EQ(count(section, "<svg"), 0u);
+}
+
+TEST(DashboardPage, TheCommittedSweepsLoadAndEachHasItsScalingSection) {
+  const auto sweeps = find_sweep_runs(kResults);
+  ASSERT_FALSE(sweeps.empty()) << "results/lavapipe/sweep/ is committed";
+  const std::string html =
+      dashboard_html(find_table_runs(kResults), load_paper_tables(kResults / "paper/paper_tables.json"), "results",
+                     cli::dashboard_generators(), sweeps);
+  const std::string section = between(html, "<section class=\"scaling\"", "</section>");
+  EXPECT_EQ(section.find("No sweep JSON"), std::string::npos);
+  EXPECT_GE(count(html, "<svg"), sweeps.size());
+  EXPECT_NE(html.find("<code>lavapipe/sweep/vsgls/sweep.json</code>"), std::string::npos);
 }
 
 TEST(DashboardPage, ABrokenSweepIsAnErrorNamingIt) {

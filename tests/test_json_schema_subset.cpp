@@ -115,10 +115,12 @@ const std::map<std::string, std::string>& without_schema() {
   return files;
 }
 
-// The schema a committed file conforms to: a table (tableN.json) to the table schema of its
-// schema_version (table.schema.json, or a frozen older one: table.v2.schema.json).
+// The schema a committed file conforms to: a sweep (sweep.json) to sweep.schema.json; a table
+// (tableN.json) to the table schema of its schema_version (table.schema.json, or a frozen older
+// one: table.v2.schema.json).
 std::string schema_of(const fs::path& file, const json& doc, const std::map<std::string, json>& schemas) {
   static const std::regex table(R"(table\d+\.json)");
+  if (file.filename() == "sweep.json") return "sweep.schema.json";
   if (!std::regex_match(file.filename().string(), table)) return "";
   for (const auto& [name, schema] : schemas)
     if (name.rfind("table.", 0) == 0 && doc.contains("schema_version") &&

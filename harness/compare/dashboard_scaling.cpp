@@ -173,6 +173,7 @@ std::string sweep_block(const SweepRun& run, std::size_t number) {
       std::string values;
       for (std::size_t a = 0; a < m.axes.size(); ++a)
         values += (values.empty() ? "" : ", ") + m.axes[a].name + "=" + m.axes[a].values[b.value_index[a]].text;
+      if (!b.generator.empty()) values += ", " + b.generator + " " + b.view;
       os << "<li>" << xml_escape(values) << ": " << xml_escape(b.reason) << "</li>\n";
     }
     os << "</ul>\n";

@@ -311,8 +311,12 @@ SweepModel read_sweep_model(const nlohmann::ordered_json& doc, const std::string
     for (std::size_t i = 0; i < beyond.size(); ++i) {
       const std::string p = "/beyond_device/" + std::to_string(i);
       if (!beyond[i].is_object()) r.wrong_type(beyond[i], p, "an object");
-      m.beyond_device.push_back(
-          SweepBeyondDevice{read_value_index(r, beyond[i], p, m.axes), r.string(beyond[i], p, "reason")});
+      SweepBeyondDevice b;
+      b.value_index = read_value_index(r, beyond[i], p, m.axes);
+      if (beyond[i].contains("generator")) b.generator = r.string(beyond[i], p, "generator");
+      if (beyond[i].contains("view")) b.view = r.string(beyond[i], p, "view");
+      b.reason = r.string(beyond[i], p, "reason");
+      m.beyond_device.push_back(std::move(b));
     }
   }
   const ojson& fits = r.array(doc, "", "fits");

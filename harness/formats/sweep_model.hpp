@@ -75,6 +75,7 @@ struct SweepPoint {
 // A point the device could not hold, not timed ("beyond_device"; absent in older files: none).
 struct SweepBeyondDevice {
   std::vector<std::size_t> value_index;  // per axis, into SweepAxisModel::values
+  std::string generator, view;           // the case; both empty: the whole point
   std::string reason;
 };
 

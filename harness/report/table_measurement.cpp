@@ -1,10 +1,12 @@
 #include "harness/report/table_measurement.hpp"
 
 #include <cstdio>
+#include <exception>
 #include <filesystem>
 #include <memory>
 #include <vector>
 
+#include "harness/core/error.hpp"
 #include "harness/generators/device_view.hpp"
 #include "harness/generators/generator_registry.hpp"
 #include "harness/report/run_context.hpp"
@@ -18,7 +20,8 @@
 namespace vsgl {
 
 TimingResult time_capture(Device& device, const TablesOptions& o, const Capture& capture,
-                          const std::function<void(const TimingProgress&)>& progress) {
+                          const std::function<void(const TimingProgress&)>& progress,
+                          std::vector<CaseBeyondDevice>* beyond) {
   // Inputs uploaded, generators built and recorded before any timing (DESIGN.md §9).
   const DeviceView camera = upload_view(device, capture, ViewKind::kCamera);
   const DeviceView light = upload_view(device, capture, ViewKind::kLight);
@@ -28,10 +31,19 @@ TimingResult time_capture(Device& device, const TablesOptions& o, const Capture&
     for (const DeviceView* view : {&camera, &light}) {
       GeneratorConfig cfg = o.generator;
       cfg.vsgl_count = view->kind == ViewKind::kCamera ? o.camera_vsgls : o.light_vsgls;
-      generators.push_back(make_generator(g, device, *view, cfg));
-      if (o.wrap_generator) generators.back() = o.wrap_generator(device, std::move(generators.back()));
+      try {
+        std::unique_ptr<VsglGenerator> made = make_generator(g, device, *view, cfg);
+        if (o.wrap_generator) made = o.wrap_generator(device, std::move(made));
+        generators.push_back(std::move(made));
+      } catch (const DeviceLimitError& e) {
+        if (beyond == nullptr) throw;
+        beyond->push_back(CaseBeyondDevice{g, view_name(view->kind), e.what()});
+        continue;
+      }
       runner.add(TimingCase{g, view_name(view->kind), generators.back().get()});
     }
+  if (generators.empty() && beyond != nullptr && !beyond->empty())
+    throw DeviceLimitError("no generator fits the device here: " + beyond->front().reason);
   return runner.run(progress);
 }
 

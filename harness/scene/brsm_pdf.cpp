@@ -59,9 +59,18 @@ BrsmBuild build_brsm_pdf(Device& device, Capture& capture, uint32_t camera_vsgls
   FisParams params;
   params.vsgl_count = std::min(camera_vsgls, camera.samplable_texels);
   // The BRSM PDF is recorded data: the buffer path keeps it bit-exact with the CPU reference and
-  // identical on every device (the texture path's filter precision is the device's).
+  // identical on every device (the texture path's filter precision is the device's). A G-buffer
+  // whose buffer pyramid the device cannot bind (3840x2176 needs 358 MB a moment layer, lavapipe
+  // binds 128 MiB) takes the texture path instead: recordable, no longer bit-identical across devices.
   params.pyramid = PyramidPath::kBuffer;
-  FisGenerator camera_fis(device, camera, FisVariant::kModified, params);
+  std::optional<FisGenerator> built;
+  try {
+    built.emplace(device, camera, FisVariant::kModified, params);
+  } catch (const DeviceLimitError&) {
+    params.pyramid = PyramidPath::kTexture;
+    built.emplace(device, camera, FisVariant::kModified, params);
+  }
+  FisGenerator& camera_fis = *built;
 
   const ViewImage& rsm = capture.rsm;
   const LayeredTexels rsm_texels = upload_layers(device, rsm, "brsm.rsm_texels");
@@ -90,6 +99,7 @@ BrsmBuild build_brsm_pdf(Device& device, Capture& capture, uint32_t camera_vsgls
 
   BrsmBuild out;
   out.camera_vsgls = params.vsgl_count;
+  out.pyramid = params.pyramid;
   if (timestamps) {
     const auto ticks = timestamps->read_ticks();
     out.gpu_ms = timestamps->interval_ns(ticks[0], ticks[1]) * 1e-6;

@@ -24,21 +24,34 @@ std::string point_values_text(const std::vector<SweepAxis>& axes, const std::vec
   return out;
 }
 
-const std::vector<double>& point_samples(const SweepPointResult& p, const std::string& g, const std::string& view,
-                                         const std::string& phase) {
+const std::vector<double>* find_point_samples(const SweepPointResult& p, const std::string& g, const std::string& view,
+                                              const std::string& phase) {
   for (const CaseTiming& c : p.timing.cases) {
     if (c.generator != g || c.view != view) continue;
-    if (phase == "total") return c.total_ms;
+    if (phase == "total") return &c.total_ms;
     for (std::size_t i = 0; i < c.phases.size(); ++i)
-      if (c.phases[i] == phase) return c.phase_ms[i];
+      if (c.phases[i] == phase) return &c.phase_ms[i];
   }
+  return nullptr;
+}
+
+const std::vector<double>& point_samples(const SweepPointResult& p, const std::string& g, const std::string& view,
+                                         const std::string& phase) {
+  if (const std::vector<double>* s = find_point_samples(p, g, view, phase)) return *s;
   throw std::logic_error("sweep point has no timing of " + g + " " + view + " " + phase);
 }
 
 std::vector<SweepFit> sweep_fits(const MeasuredSweep& s, const GrowthFitOptions& options) {
   std::vector<SweepFit> out;
   if (s.points.empty()) return out;
-  const std::vector<CaseTiming>& cases = s.points.front().timing.cases;
+  // Every case timed anywhere, in the order they first appear: a case beyond the device at some
+  // points is fitted over the others.
+  std::vector<CaseTiming> cases;
+  for (const SweepPointResult& p : s.points)
+    for (const CaseTiming& c : p.timing.cases)
+      if (std::none_of(cases.begin(), cases.end(),
+                       [&](const CaseTiming& k) { return k.generator == c.generator && k.view == c.view; }))
+        cases.push_back(c);
   for (std::size_t a = 0; a < s.axes.size(); ++a) {
     const SweepAxis& axis = s.axes[a];
     // Points grouped by the values of the other axes, in the order they first appear.
@@ -70,13 +83,16 @@ std::vector<SweepFit> sweep_fits(const MeasuredSweep& s, const GrowthFitOptions&
           f.generator = c.generator;
           f.view = c.view;
           f.phase = phase;
-          f.points = members;
           std::vector<GrowthPoint> growth;
           for (std::size_t i : members) {
+            const std::vector<double>* samples = find_point_samples(s.points[i], c.generator, c.view, phase);
+            if (samples == nullptr) continue;
             const double x = growth_x(axis.parameter, axis.values[s.points[i].value_index[a]]);
+            f.points.push_back(i);
             f.x.push_back(x);
-            if (x > 0) growth.push_back(GrowthPoint{x, point_samples(s.points[i], c.generator, c.view, phase)});
+            if (x > 0) growth.push_back(GrowthPoint{x, *samples});
           }
+          if (f.points.empty()) continue;
           f.expected = expected_growth(axis.parameter, family, c.view, phase);
           if (growth.size() < 2) {
             f.note = "fewer than 2 points on a log axis (" + axis.name() + " = 0 cannot be drawn on one)";

@@ -35,10 +35,12 @@ struct SweepPointResult {
   TimingResult timing;
 };
 
-// A point the device cannot hold (a DeviceLimitError while recording or timing it): kept with the
-// reason so the sweep says where it stops, instead of losing every other point.
+// A point, or one case of it, the device cannot hold (a DeviceLimitError while recording it or
+// building a generator): kept with the reason so the sweep says where it stops, instead of losing
+// every other point and case.
 struct BeyondDevicePoint {
   std::vector<std::size_t> value_index;  // one per axis
+  std::string generator, view;           // the case; both empty: the whole point
   std::string reason;
 };
 
@@ -49,7 +51,7 @@ struct MeasuredSweep {
   int paper_table = 0;  // the paper table whose input the scene is (report/tables_run.hpp paper_table_of); 0: none
   std::optional<double> time_budget_s;
   std::vector<SweepPointResult> points;          // the points timed
-  std::vector<BeyondDevicePoint> beyond_device;  // the points the device cannot hold, in sweep order
+  std::vector<BeyondDevicePoint> beyond_device;  // the points and cases the device cannot hold, in sweep order
 };
 
 // One fit: a (generator, view, phase) along one axis, the other axes held at `slice`.
@@ -57,7 +59,7 @@ struct SweepFit {
   std::size_t axis = 0;
   std::vector<std::pair<std::string, std::string>> slice;  // the other axes: name, value text
   std::string generator, view, phase;                      // phase: a phase name or "total"
-  std::vector<std::size_t> points;                         // indices into MeasuredSweep::points, by x
+  std::vector<std::size_t> points;  // indices into MeasuredSweep::points that time the case, by x
   std::vector<double> x;                                   // growth_x of each point (0: off the log axis)
   std::optional<GrowthFit> fit;
   std::string note;  // why there is no fit (fewer than 2 points on the log axis, too few rounds)
@@ -70,6 +72,11 @@ std::string slice_text(const std::vector<std::pair<std::string, std::string>>& s
 
 // "gbuffer=3840x2176, K=2": each axis's value at a point.
 std::string point_values_text(const std::vector<SweepAxis>& axes, const std::vector<std::size_t>& value_index);
+
+// The samples (ms) of a case's phase or total at a point, or nullptr where the point has no such
+// case (it was beyond the device there).
+const std::vector<double>* find_point_samples(const SweepPointResult& point, const std::string& generator,
+                                              const std::string& view, const std::string& phase);
 
 // The samples (ms) of a case's phase or total at a point. Throws std::logic_error when absent.
 const std::vector<double>& point_samples(const SweepPointResult& point, const std::string& generator,

@@ -165,7 +165,11 @@ ojson sweep_json(const MeasuredSweep& s, const std::vector<SweepFit>& fits, cons
   for (const BeyondDevicePoint& b : s.beyond_device) {
     ojson values = ojson::object();
     for (std::size_t a = 0; a < s.axes.size(); ++a) values[s.axes[a].name()] = s.axes[a].values[b.value_index[a]].text;
-    beyond.push_back(ojson{{"values", values}, {"reason", b.reason}});
+    ojson entry{{"values", values}};
+    if (!b.generator.empty()) entry["generator"] = b.generator;
+    if (!b.view.empty()) entry["view"] = b.view;
+    entry["reason"] = b.reason;
+    beyond.push_back(entry);
   }
   ojson fit_list = ojson::array();
   for (const SweepFit& f : fits) {
@@ -241,9 +245,10 @@ std::string sweep_markdown(const MeasuredSweep& s, const std::vector<SweepFit>& 
   if (s.time_budget_s) md += "; time budget " + number_text(*s.time_budget_s, 4) + " s split over the points";
   md += ".\n";
   if (!s.beyond_device.empty()) {
-    md += "\n" + std::to_string(s.beyond_device.size()) + " point(s) are beyond this device and were not timed:\n\n";
+    md += "\nBeyond this device, not timed (a case: its generator and view; else the whole point):\n\n";
     for (const BeyondDevicePoint& b : s.beyond_device)
-      md += "- " + point_values_text(s.axes, b.value_index) + ": " + b.reason + "\n";
+      md += "- " + point_values_text(s.axes, b.value_index) +
+            (b.generator.empty() ? std::string() : ", " + b.generator + " " + b.view) + ": " + b.reason + "\n";
   }
   std::size_t flagged = 0;
   for (const SweepFit& f : fits)
@@ -255,22 +260,35 @@ std::string sweep_markdown(const MeasuredSweep& s, const std::vector<SweepFit>& 
     const SweepAxis& axis = s.axes[a];
     md += "\n## Axis " + axis.name() + " (`" + axis.spec + "`)\n";
     std::string current_slice = "\x01";
+    std::vector<std::size_t> columns;
     for (const SweepFit& f : fits) {
       if (f.axis != a) continue;
       const std::string st = slice_text(f.slice);
       if (st != current_slice) {
         current_slice = st;
+        // The columns: every point any case of this slice was timed at (a case beyond the device
+        // at one of them shows "beyond" there).
+        columns.clear();
+        for (const SweepFit& g : fits)
+          if (g.axis == a && slice_text(g.slice) == st)
+            for (std::size_t i : g.points)
+              if (std::find(columns.begin(), columns.end(), i) == columns.end()) columns.push_back(i);
+        std::sort(columns.begin(), columns.end(), [&](std::size_t i, std::size_t j) {
+          return axis.values[s.points[i].value_index[a]].value < axis.values[s.points[j].value_index[a]].value;
+        });
         if (!st.empty()) md += "\n### " + st + "\n";
         md += "\n| generator | view | phase |";
-        for (std::size_t i : f.points)
+        for (std::size_t i : columns)
           md += " " + axis.name() + "=" + axis.values[s.points[i].value_index[a]].text + " |";
         md += " growth | verdict |\n|---|---|---|";
-        for (std::size_t k = 0; k < f.points.size(); ++k) md += "---:|";
+        for (std::size_t k = 0; k < columns.size(); ++k) md += "---:|";
         md += "---|---|\n";
       }
       md += "| " + f.generator + " | " + f.view + " | " + f.phase + " |";
-      for (std::size_t i : f.points)
-        md += " " + cell_text(point_samples(s.points[i], f.generator, f.view, f.phase)) + " |";
+      for (std::size_t i : columns) {
+        const std::vector<double>* samples = find_point_samples(s.points[i], f.generator, f.view, f.phase);
+        md += " " + (samples != nullptr ? cell_text(*samples) : std::string("beyond")) + " |";
+      }
       md += " " + (f.fit ? growth_text(*f.fit, growth_symbol(axis.parameter)) : std::string("–")) + " | " +
             verdict_text(f) + " |\n";
     }

@@ -167,15 +167,25 @@ SweepOutcome run_sweep(Device& device, const SweepOptions& o, const std::functio
       say("point " + std::to_string(i + 1) + "/" + std::to_string(points.size()) + ": " + where + " (" +
               std::to_string(2 * t.generators.size()) + " cases)",
           i);
-      r.timing = time_capture(device, t, capture, [&](const TimingProgress& p) {
-        if (on_event) on_event(SweepEvent{"", &p, i, points.size()});
-      });
+      std::vector<CaseBeyondDevice> cases_beyond;
+      r.timing = time_capture(
+          device, t, capture,
+          [&](const TimingProgress& p) {
+            if (on_event) on_event(SweepEvent{"", &p, i, points.size()});
+          },
+          &cases_beyond);
+      for (CaseBeyondDevice& c : cases_beyond) {
+        say("point " + std::to_string(i + 1) + "/" + std::to_string(points.size()) + ": " + where + ", " + c.generator +
+                " " + c.view + " is beyond the device: " + c.reason,
+            i);
+        m.beyond_device.push_back(BeyondDevicePoint{points[i], c.generator, c.view, c.reason});
+      }
     } catch (const DeviceLimitError& e) {
       // A size the device cannot hold ends this point only: the device is unharmed (DESIGN.md §10.1).
       say("point " + std::to_string(i + 1) + "/" + std::to_string(points.size()) + ": " + where +
               " is beyond the device: " + e.what(),
           i);
-      m.beyond_device.push_back(BeyondDevicePoint{points[i], e.what()});
+      m.beyond_device.push_back(BeyondDevicePoint{points[i], "", "", e.what()});
       continue;
     }
     m.points.push_back(std::move(r));
