@@ -113,9 +113,19 @@ for s in "${steps[@]}"; do
     dashboard)
       step dashboard "$bench" dashboard results --out results/dashboard
       if chromium=$(bash ci/find-chromium.sh 2>/dev/null); then
-        step screenshot "$chromium" --headless --no-sandbox --disable-gpu --hide-scrollbars \
-          --user-data-dir="$(mktemp -d)" --window-size=1280,1400 \
-          --screenshot=results/dashboard/screenshot.png "file://$PWD/results/dashboard/index.html"
+        shoot() {  # shoot PNG PAGE HEIGHT
+          "$chromium" --headless --no-sandbox --disable-gpu --hide-scrollbars --user-data-dir="$(mktemp -d)" \
+            --window-size=1280,"$3" --screenshot="$1" "file://$2"
+        }
+        step screenshot shoot results/dashboard/screenshot.png "$PWD/results/dashboard/index.html" 1400
+        # The scaling section sits far down the page (headless Chromium does not scroll to a
+        # fragment before its screenshot): it is shot from a page of the sweeps alone.
+        if [[ -d $out/sweep ]]; then
+          page=$(mktemp -d)
+          step "dashboard scaling" "$bench" dashboard "$out/sweep" --out "$page"
+          step "screenshot scaling" shoot results/dashboard/screenshot-scaling.png "$page/index.html" 1600
+          rm -rf "$page"
+        fi
       else
         echo "ci/lavapipe-results.sh: no headless Chromium (ci/find-chromium.sh); screenshot not refreshed" >&2
       fi ;;

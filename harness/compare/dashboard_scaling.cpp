@@ -59,7 +59,7 @@ std::string totals_plot(const SweepModel& m, std::size_t axis) {
   }
   if (series.empty()) return "<p>No value of this axis sits on a log axis: nothing to plot.</p>\n";
   LogLogPlot plot;
-  plot.title = "Total over " + a.name + " (" + scene_label(m.scene) + ", " + m.device_name + ")";
+  plot.title = "Total over " + a.name;  // the scene and device head the section
   plot.x_title = a.growth_x_title;
   plot.y_title = "ms: median, q1..q3";
   plot.width = 600;
