@@ -1,7 +1,6 @@
 #include "harness/report/table_measurement.hpp"
 
 #include <cstdio>
-#include <exception>
 #include <filesystem>
 #include <memory>
 #include <vector>

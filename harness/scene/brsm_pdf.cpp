@@ -99,7 +99,6 @@ BrsmBuild build_brsm_pdf(Device& device, Capture& capture, uint32_t camera_vsgls
 
   BrsmBuild out;
   out.camera_vsgls = params.vsgl_count;
-  out.pyramid = params.pyramid;
   if (timestamps) {
     const auto ticks = timestamps->read_ticks();
     out.gpu_ms = timestamps->interval_ns(ticks[0], ticks[1]) * 1e-6;

@@ -20,7 +20,6 @@ inline constexpr uint32_t kBrsmCameraVsgls = kPaperCameraVsgls;  // the paper's 
 struct BrsmBuild {
   double gpu_ms = 0;        // camera-view fis_modified + the BRSM pass, from timestamps
   uint32_t camera_vsgls = 0;
-  PyramidPath pyramid = PyramidPath::kBuffer;  // the camera FIS's: kTexture where the buffer one does not fit
 };
 
 // Fills capture.rsm's PDF plane (has_pdf = true) and capture.meta.brsm_build_ms. Uses

@@ -20,6 +20,13 @@ ojson stats_json(const std::vector<double>& samples) {
                {"min", s.min},     {"max", s.max},       {"mean", s.mean}, {"stdev", s.stdev}};
 }
 
+// A point's "values": each axis's name and value text.
+ojson values_json(const std::vector<SweepAxis>& axes, const std::vector<std::size_t>& value_index) {
+  ojson values = ojson::object();
+  for (std::size_t a = 0; a < axes.size(); ++a) values[axes[a].name()] = axes[a].values[value_index[a]].text;
+  return values;
+}
+
 ojson case_json(const CaseTiming& c) {
   ojson phases = ojson::array();
   for (std::size_t i = 0; i < c.phases.size(); ++i)
@@ -131,8 +138,7 @@ ojson sweep_json(const MeasuredSweep& s, const std::vector<SweepFit>& fits, cons
   ojson points = ojson::array();
   for (std::size_t i = 0; i < s.points.size(); ++i) {
     const SweepPointResult& p = s.points[i];
-    ojson values = ojson::object();
-    for (std::size_t a = 0; a < s.axes.size(); ++a) values[s.axes[a].name()] = s.axes[a].values[p.value_index[a]].text;
+    const ojson values = values_json(s.axes, p.value_index);
     ojson cases = ojson::array();
     for (const CaseTiming& c : p.timing.cases) cases.push_back(case_json(c));
     ojson point{{"index", i},
@@ -163,9 +169,7 @@ ojson sweep_json(const MeasuredSweep& s, const std::vector<SweepFit>& fits, cons
   }
   ojson beyond = ojson::array();
   for (const BeyondDevicePoint& b : s.beyond_device) {
-    ojson values = ojson::object();
-    for (std::size_t a = 0; a < s.axes.size(); ++a) values[s.axes[a].name()] = s.axes[a].values[b.value_index[a]].text;
-    ojson entry{{"values", values}};
+    ojson entry{{"values", values_json(s.axes, b.value_index)}};
     if (!b.generator.empty()) entry["generator"] = b.generator;
     if (!b.view.empty()) entry["view"] = b.view;
     entry["reason"] = b.reason;

@@ -23,21 +23,18 @@ uint32_t float_bits(float f) {
 
 namespace {
 
-std::map<uint32_t, uint32_t> spec_values(const ComputePipelineDesc& desc) {
+// The kernel's interface with desc.constants applied; a module it cannot read names the shader.
+KernelInterface reflect_desc(const ComputePipelineDesc& desc) {
   std::map<uint32_t, uint32_t> spec;
   for (const auto& c : desc.constants) spec[c.id] = c.value;
-  return spec;
-}
-
-}  // namespace
-
-PipelineNeeds pipeline_needs(const ComputePipelineDesc& desc) {
-  KernelInterface k;
   try {
-    k = reflect_kernel(find_shader(desc.shader), spec_values(desc));
+    return reflect_kernel(find_shader(desc.shader), spec);
   } catch (const std::exception& e) {
     throw std::runtime_error(desc.shader + ": " + e.what());
   }
+}
+
+PipelineNeeds needs_of(const ComputePipelineDesc& desc, const KernelInterface& k) {
   PipelineNeeds host, kernel;
   const auto add = [](PipelineNeeds& n, VkDescriptorType type, uint32_t count) {
     switch (type) {
@@ -69,15 +66,20 @@ PipelineNeeds pipeline_needs(const ComputePipelineDesc& desc) {
   return n;
 }
 
+}  // namespace
+
+PipelineNeeds pipeline_needs(const ComputePipelineDesc& desc) { return needs_of(desc, reflect_desc(desc)); }
+
 ComputePipeline::ComputePipeline(Device& device, const ComputePipelineDesc& desc) : desc_(desc) {
-  require_fits(device.info().limits, pipeline_needs(desc), device.info().name);
+  const KernelInterface kernel = reflect_desc(desc);
+  require_fits(device.info().limits, needs_of(desc, kernel), device.info().name);
   VkDevice dev = device.get();
   const auto spirv = find_shader(desc.shader);
 
   // A buffer binding holds as many descriptors as the kernel declares there: an array binding
   // (the view's layers) takes one range per element.
   buffer_counts_.assign(desc.storage_buffers, 1u);
-  for (const ReflectedDescriptor& d : reflect_kernel(spirv, spec_values(desc)).descriptors)
+  for (const ReflectedDescriptor& d : kernel.descriptors)
     if (d.set == 0 && d.binding < desc.storage_buffers && d.type == VK_DESCRIPTOR_TYPE_STORAGE_BUFFER && d.count > 1)
       buffer_counts_[d.binding] = d.count;
 
