@@ -52,6 +52,32 @@ TEST_F(BrsmPdfTest, MatchesTheCpuTwinAndIsDeterministic) {
   EXPECT_EQ(plane_hash(a.rsm.planes[kPdf]), plane_hash(b.rsm.planes[kPdf]));
 }
 
+// DESIGN.md §10.1: a device that cannot bind the buffer pyramid builds the PDF on the texture path
+// and the capture records which path it took. The limit is forced so that a G-buffer layer binds
+// (96x64 texels) and the buffer pyramid over its 128^2 square does not.
+TEST_F(BrsmPdfTest, TakesTheTexturePathWhereTheBufferPyramidCannotBind) {
+  Capture on_buffer = record("tiny", {96, 64, 32});
+  Capture on_texture = on_buffer;
+  EXPECT_EQ(build_brsm_pdf(device(), on_buffer, 512).pyramid, PyramidPath::kBuffer);
+  EXPECT_EQ(on_buffer.meta.brsm_pyramid, PyramidPath::kBuffer);
+
+  DeviceInfo forced = device().info();
+  forced.limits.storage_buffer_range = 96 * 64 * sizeof(glm::vec4);
+  Device limited(test::shared_context().instance(), forced);
+  EXPECT_EQ(build_brsm_pdf(limited, on_texture, 512).pyramid, PyramidPath::kTexture);
+  EXPECT_EQ(on_texture.meta.brsm_pyramid, PyramidPath::kTexture);
+  EXPECT_TRUE(on_texture.rsm.has_pdf);
+  // The same PDF up to the texture path's filter precision: its mass within 1 % (measured 8e-5 on
+  // lavapipe, 6e-4 on SwiftShader).
+  double buffer_mass = 0, texture_mass = 0;
+  for (std::size_t i = 0; i < on_buffer.rsm.texels(); ++i) {
+    buffer_mass += double{on_buffer.rsm.planes[kPdf][i]};
+    texture_mass += double{on_texture.rsm.planes[kPdf][i]};
+  }
+  EXPECT_GT(buffer_mass, 0.0);
+  EXPECT_NEAR(texture_mass / buffer_mass, 1.0, 0.01);
+}
+
 // The PDF follows the camera. Same light (same RSM flux), two cameras: looking down the hall at
 // the lit floor and columns, and turned around to face the end wall behind it. Importance per watt
 // of the lit texels drops when the lit area is behind the camera (measured 1.7x on lavapipe), and

@@ -94,6 +94,7 @@ Capture make_capture() {
   meta.device = "test device";
   meta.tool_version = "0.1.0-test";
   meta.brsm_build_ms = 1.25;
+  meta.brsm_pyramid = PyramidPath::kTexture;  // not the usual path, so the round trip shows it is read
   fill_view(capture.gbuffer, ViewKind::kCamera, 64, 48, 1234u);
   fill_view(capture.rsm, ViewKind::kLight, 32, 32, 5678u);
   return capture;
@@ -152,6 +153,7 @@ void expect_meta_equal(const CaptureMeta& a, const CaptureMeta& b) {
   EXPECT_EQ(a.device, b.device);
   EXPECT_EQ(a.tool_version, b.tool_version);
   EXPECT_EQ(a.brsm_build_ms, b.brsm_build_ms);
+  EXPECT_EQ(a.brsm_pyramid, b.brsm_pyramid);
   EXPECT_EQ(a.camera.position, b.camera.position);
   EXPECT_EQ(a.camera.target, b.camera.target);
   EXPECT_EQ(a.camera.up, b.camera.up);
@@ -217,6 +219,7 @@ TEST(CaptureIo, RoundTripIsBitExact) {
   EXPECT_EQ(sidecar["format"], "vsgl-capture");
   EXPECT_EQ(sidecar["units"]["intensity"], "W/sr");
   EXPECT_EQ(sidecar["rsm"]["pdf"], "brsm");
+  EXPECT_EQ(sidecar["brsm_pyramid"], "texture");
   EXPECT_EQ(sidecar["gbuffer"]["channels"]["albedo_specular.B"], written.gbuffer_hashes[kSB]);
   EXPECT_EQ(sidecar["camera"]["view"][12], static_cast<double>(capture.meta.camera_view[3][0]));
 
@@ -232,6 +235,7 @@ TEST(CaptureIo, RsmWithoutPdfRoundTripsWithoutPdfChannel) {
   TempDir temp;
   Capture capture = make_capture();
   capture.rsm.has_pdf = false;
+  capture.meta.brsm_pyramid.reset();
   std::fill(capture.rsm.planes[kPdf].begin(), capture.rsm.planes[kPdf].end(), 0.0f);
   // All-zero flux is allowed on an RSM (a light that hits nothing reflective).
   for (int c = kDR; c <= kSB; ++c) {
@@ -246,6 +250,7 @@ TEST(CaptureIo, RsmWithoutPdfRoundTripsWithoutPdfChannel) {
   EXPECT_EQ(sidecar["rsm"]["has_pdf"], false);
   EXPECT_EQ(sidecar["rsm"]["pdf"], "none");
   EXPECT_FALSE(sidecar["rsm"]["channels"].contains("pdf"));
+  EXPECT_FALSE(sidecar.contains("brsm_pyramid"));
 
   const Capture loaded = load_capture(temp.path());
   EXPECT_FALSE(loaded.rsm.has_pdf);
@@ -316,6 +321,17 @@ TEST(CaptureIo, SidecarMissingKeyOrWrongTypeIsNamed) {
   doc["gbuffer"]["channels"].erase("roughness");
   write_json(sidecar_path, doc);
   expect_load_fails(temp.path(), {"capture.json", "\"gbuffer.channels.roughness\"", "missing"});
+
+  doc = original;
+  doc["brsm_pyramid"] = "buffers";
+  write_json(sidecar_path, doc);
+  expect_load_fails(temp.path(), {"capture.json", "\"brsm_pyramid\" is \"buffers\"", "\"buffer\" or \"texture\""});
+
+  // A capture written before the path was recorded still loads; its path is unknown.
+  doc = original;
+  doc.erase("brsm_pyramid");
+  write_json(sidecar_path, doc);
+  EXPECT_FALSE(load_capture(temp.path()).meta.brsm_pyramid.has_value());
 
   doc = original;
   doc["format_version"] = 2;

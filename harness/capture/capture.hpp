@@ -11,6 +11,8 @@
 
 #include <glm/glm.hpp>
 
+#include "harness/math/fis_params.hpp"
+
 namespace vsgl {
 
 enum class ViewKind { kCamera, kLight };
@@ -92,6 +94,10 @@ struct CaptureMeta {
   std::string device;        // where it was recorded
   std::string tool_version;  // vsgl-bench version that wrote it
   double brsm_build_ms = 0;  // time to build the BRSM PDF (0 when none)
+  // The FIS pyramid path the BRSM PDF was built on (DESIGN.md §8): the buffer path (bit-identical on
+  // every device), or the texture path where the device cannot bind the buffer pyramid. None: no
+  // PDF, or a capture written before the key was recorded.
+  std::optional<PyramidPath> brsm_pyramid;
   // Filled by write_capture / checked by load_capture: "fnv1a64:<16 hex>" per channel name.
   std::array<std::string, kChannelCount> gbuffer_hashes;
   std::array<std::string, kChannelCount> rsm_hashes;

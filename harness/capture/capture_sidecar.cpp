@@ -113,6 +113,7 @@ std::string sidecar_text(const CaptureMeta& meta, const Capture& capture) {
     doc["source"] = std::move(source);
   }
   doc["brsm_build_ms"] = meta.brsm_build_ms;
+  if (meta.brsm_pyramid) doc["brsm_pyramid"] = pyramid_path_name(*meta.brsm_pyramid);
   doc["gbuffer"] = view_json(capture.gbuffer, meta.gbuffer_hashes);
   doc["rsm"] = view_json(capture.rsm, meta.rsm_hashes);
   return doc.dump(2) + "\n";
@@ -277,6 +278,12 @@ CaptureMeta read_meta(const JsonReader& reader, const json& doc) {
   }
   meta.brsm_build_ms = reader.number(doc, "", "brsm_build_ms");
   if (meta.brsm_build_ms < 0.0) reader.fail("", "key \"brsm_build_ms\" is negative");
+  if (doc.contains("brsm_pyramid")) {
+    const std::string path = reader.string(doc, "", "brsm_pyramid");
+    meta.brsm_pyramid = parse_pyramid_path(path);
+    if (!meta.brsm_pyramid)
+      reader.fail("", "key \"brsm_pyramid\" is " + quoted_text(path) + ", expected \"buffer\" or \"texture\"");
+  }
   return meta;
 }
 

@@ -74,6 +74,7 @@ TableMeasurement measure_table(Device& device, const TablesOptions& o, const Tab
                     {"recorded_on", capture.meta.device},
                     {"tool_version", capture.meta.tool_version},
                     {"brsm_build_ms", capture.meta.brsm_build_ms}};
+  if (capture.meta.brsm_pyramid) t.capture["brsm_pyramid"] = pyramid_path_name(*capture.meta.brsm_pyramid);
   if (capture.meta.source) {
     const SceneSource& src = *capture.meta.source;
     t.capture["source"] = ojson{{"format", src.format},         {"file", src.file},     {"content_hash", src.content_hash},

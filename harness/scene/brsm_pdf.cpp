@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <iostream>
 #include <optional>
 
 #include "harness/vk/buffer.hpp"
@@ -10,6 +11,7 @@
 #include "harness/vk/device.hpp"
 #include "harness/generators/device_view.hpp"
 #include "harness/core/error.hpp"
+#include "harness/core/program_name.hpp"
 #include "harness/generators/fis/fis_generator.hpp"
 #include "harness/vk/timestamp_pool.hpp"
 #include "kernels/include/interface/brsm.h"
@@ -66,9 +68,12 @@ BrsmBuild build_brsm_pdf(Device& device, Capture& capture, uint32_t camera_vsgls
   std::optional<FisGenerator> built;
   try {
     built.emplace(device, camera, FisVariant::kModified, params);
-  } catch (const DeviceLimitError&) {
+  } catch (const DeviceLimitError& e) {
     params.pyramid = PyramidPath::kTexture;
     built.emplace(device, camera, FisVariant::kModified, params);
+    std::cerr << program_name() << ": the BRSM PDF of '" << capture.meta.scene
+              << "' is built on the texture path (its PDF is then the device's, not bit-identical across devices): "
+              << e.what() << "\n";
   }
   FisGenerator& camera_fis = *built;
 
@@ -112,6 +117,7 @@ BrsmBuild build_brsm_pdf(Device& device, Capture& capture, uint32_t camera_vsgls
                      "' is zero everywhere: no texel lit by the spot light is seen by the camera");
   capture.rsm.has_pdf = true;
   capture.meta.brsm_build_ms = out.gpu_ms;
+  capture.meta.brsm_pyramid = out.pyramid = params.pyramid;
   return out;
 }
 

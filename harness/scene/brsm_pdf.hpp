@@ -20,9 +20,10 @@ inline constexpr uint32_t kBrsmCameraVsgls = kPaperCameraVsgls;  // the paper's 
 struct BrsmBuild {
   double gpu_ms = 0;        // camera-view fis_modified + the BRSM pass, from timestamps
   uint32_t camera_vsgls = 0;
+  PyramidPath pyramid = PyramidPath::kBuffer;  // the texture path where the buffer pyramid cannot bind
 };
 
-// Fills capture.rsm's PDF plane (has_pdf = true) and capture.meta.brsm_build_ms. Uses
+// Fills capture.rsm's PDF plane (has_pdf = true), capture.meta.brsm_build_ms and brsm_pyramid. Uses
 // min(kBrsmCameraVsgls, samplable G-buffer texels) camera VSGLs. Throws InputError when the
 // result is all zero (no lit texel is seen by the camera).
 BrsmBuild build_brsm_pdf(Device& device, Capture& capture, uint32_t camera_vsgls = kBrsmCameraVsgls);

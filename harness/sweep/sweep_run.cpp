@@ -163,6 +163,7 @@ SweepOutcome run_sweep(Device& device, const SweepOptions& o, const std::functio
                         {"gbuffer", ojson{{"width", capture.gbuffer.width}, {"height", capture.gbuffer.height}}},
                         {"rsm", ojson{{"width", capture.rsm.width}, {"height", capture.rsm.height}}},
                         {"pdf_altered_in_memory", altered.has_value()}};
+      if (capture.meta.brsm_pyramid) r.capture["brsm_pyramid"] = pyramid_path_name(*capture.meta.brsm_pyramid);
       r.config = config_json(t, capture, device.info());
       say("point " + std::to_string(i + 1) + "/" + std::to_string(points.size()) + ": " + where + " (" +
               std::to_string(2 * t.generators.size()) + " cases)",
