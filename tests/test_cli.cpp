@@ -67,6 +67,9 @@ TEST(Cli, RecordWritesALoadableCaptureWithItsBrsmPdf) {
   EXPECT_EQ(c.rsm.width, 32u);
   EXPECT_TRUE(c.rsm.has_pdf);
   EXPECT_GT(c.meta.brsm_build_ms, 0.0);
+  // The BRSM PDF is recorded data, built on the buffer pyramid wherever it binds (DESIGN.md §8).
+  EXPECT_EQ(c.meta.brsm_pyramid, PyramidPath::kBuffer);
+  EXPECT_NE(r.output.find("camera VSGLs on the buffer pyramid"), std::string::npos) << r.output;
 }
 
 TEST(Cli, RecordAnimatedSequenceWritesOneCapturePerFrame) {

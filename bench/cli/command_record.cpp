@@ -83,11 +83,13 @@ struct RecordOptions {
 
 void print_recorded(const std::string& name, const std::filesystem::path& dir, uint32_t f, uint32_t frames,
                     const RecordSizes& sizes, const RecordedCapture& r) {
-  std::printf("recorded %s frame %u/%u -> %s  (G-buffer %ux%u, RSM %u^2; render + BRSM PDF %.0f ms, of which "
-              "BRSM PDF %.1f ms GPU from %u camera VSGLs; write %.0f ms; %.1f MiB on disk)\n",
-              name.c_str(), f + 1, frames, dir.string().c_str(), sizes.gbuffer_width, sizes.gbuffer_height,
-              sizes.rsm_size, r.render_and_brsm_ms, r.brsm_gpu_ms, r.brsm_camera_vsgls, r.write_ms,
-              static_cast<double>(directory_bytes(dir)) / (1 << 20));
+  const std::optional<PyramidPath>& path = r.capture.meta.brsm_pyramid;
+  std::printf(
+      "recorded %s frame %u/%u -> %s  (G-buffer %ux%u, RSM %u^2; render + BRSM PDF %.0f ms, of which "
+      "BRSM PDF %.1f ms GPU from %u camera VSGLs on the %s pyramid; write %.0f ms; %.1f MiB on disk)\n",
+      name.c_str(), f + 1, frames, dir.string().c_str(), sizes.gbuffer_width, sizes.gbuffer_height, sizes.rsm_size,
+      r.render_and_brsm_ms, r.brsm_gpu_ms, r.brsm_camera_vsgls, path ? pyramid_path_name(*path) : "unrecorded",
+      r.write_ms, static_cast<double>(directory_bytes(dir)) / (1 << 20));
 }
 
 std::filesystem::path frame_dir(const std::filesystem::path& base, uint32_t f, uint32_t frames) {
