@@ -117,7 +117,7 @@ BrsmBuild build_brsm_pdf(Device& device, Capture& capture, uint32_t camera_vsgls
                      "' is zero everywhere: no texel lit by the spot light is seen by the camera");
   capture.rsm.has_pdf = true;
   capture.meta.brsm_build_ms = out.gpu_ms;
-  capture.meta.brsm_pyramid = out.pyramid = params.pyramid;
+  capture.meta.brsm_pyramid = params.pyramid;
   return out;
 }
 

@@ -20,7 +20,6 @@ inline constexpr uint32_t kBrsmCameraVsgls = kPaperCameraVsgls;  // the paper's 
 struct BrsmBuild {
   double gpu_ms = 0;        // camera-view fis_modified + the BRSM pass, from timestamps
   uint32_t camera_vsgls = 0;
-  PyramidPath pyramid = PyramidPath::kBuffer;  // the texture path where the buffer pyramid cannot bind
 };
 
 // Fills capture.rsm's PDF plane (has_pdf = true), capture.meta.brsm_build_ms and brsm_pyramid. Uses
