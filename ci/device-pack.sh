@@ -1,11 +1,14 @@
 #!/usr/bin/env bash
-# Packs what ci/device-run.sh needs on a machine without this project's build dependencies (a lent
-# GPU machine) into .device-pack/ (as tools.tar.xz): the four binaries (vsgl-bench, vsgl-gbench, vsgl-mipbench,
-# vsgl_tests), the shared libraries they link (all but the C runtime), the Khronos validation
-# layer, and where the tests were built (they hold absolute paths to the sources and binaries).
+# Packs what ci/device-run.sh needs on the GPU machine, which lacks this project's build
+# dependencies, into .device-pack/ (as tools.tar.xz): the four binaries (vsgl-bench, vsgl-gbench,
+# vsgl-mipbench, vsgl_tests) with the layer table the tests check (harness_layers.txt), the shared
+# libraries they link (all but the C runtime), the Khronos validation layer; and build.env: where
+# the tests were built (they hold absolute paths to the sources and binaries) and the commit they
+# were built from (with `dirty=true` when tracked files differed from it), which ci/device-run.sh
+# puts into its results and ci/import-device-results.sh compares with the checkout.
 #
 # The captures are not packed: the paper-size captures with surface detail are 67 + 51 MiB, over
-# the 64 MiB a lent machine's working tree may carry, so ci/device-run.sh records them there. Their
+# the 64 MiB of working tree the GPU machine takes, so ci/device-run.sh records them there. Their
 # channel hashes land in the tables' JSON, so any difference from lavapipe's bytes is on record.
 # The paper's scenes' models (37 MiB as glTF: Sponza and the Conference room) are packed instead,
 # xz-compressed (11 MiB) as scenes.tar.xz, from the first asset directory that holds both
@@ -15,7 +18,7 @@
 #
 # Usage: bash ci/device-pack.sh [BUILD_DIR]   a release build: build/release, else build/ci
 #        bash ci/device-pack.sh --gl          also fetch the Vulkan loader and GL dispatch .debs
-#                                             into .gl/ for a bare machine (needs apt here)
+#                                             into .gl/ for a bare GPU machine (needs apt here)
 #        bash ci/device-pack.sh --assets DIR  where the paper's scenes are (DIR/sponza, DIR/conference)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -42,6 +45,7 @@ binaries=(bench/vsgl-bench bench/vsgl-gbench bench/vsgl-mipbench tests/vsgl_test
 for exe in "${binaries[@]}"; do
   [[ -x $build/$exe ]] || { echo "ci/device-pack.sh: $build/$exe is missing: build every target of $build first" >&2; exit 1; }
 done
+[[ -f $build/harness_layers.txt ]] || { echo "ci/device-pack.sh: $build/harness_layers.txt is missing: configure $build with cmake first" >&2; exit 1; }
 layer_json=/usr/share/vulkan/explicit_layer.d/VkLayer_khronos_validation.json
 layer_lib=$(ldconfig -p | awk '/libVkLayer_khronos_validation.so/ {print $NF; exit}')
 [[ -f $layer_json && -n "$layer_lib" ]] || { echo "ci/device-pack.sh: the Khronos validation layer is not installed (bash ci/install-deps.sh)" >&2; exit 1; }
@@ -58,6 +62,7 @@ for exe in "${binaries[@]}"; do
   done
 done
 strip --strip-unneeded "$pack"/bin/*  # symbols only; a third of the pack
+cp "$build/harness_layers.txt" "$pack/bin/"  # beside vsgl_tests, where Layering looks for it
 cp "$layer_json" "$pack/layer/"
 cp -L "$layer_lib" "$pack/lib/"
 # The tests find the sources (seed corpora, paper tables) and vsgl-bench by the absolute paths
@@ -66,10 +71,11 @@ cp -L "$layer_lib" "$pack/lib/"
   echo "source_dir=$(pwd)"
   echo "build_dir=$build"
   echo "commit=$(git rev-parse HEAD 2>/dev/null || echo unknown)"
+  if [[ -n $(git status --porcelain --untracked-files=no 2>/dev/null) ]]; then echo "dirty=true"; else echo "dirty=false"; fi
+  echo "packed=$(date -u +%FT%TZ)"
 } > "$pack/build.env"
 if $gl; then
-  # The packages the device tool's README names for a bare machine: the loader and GL dispatch
-  # that NVIDIA's ICD links against.
+  # What a bare GPU machine lacks: the loader and the GL dispatch that NVIDIA's ICD links against.
   rm -rf .gl && mkdir -p .gl /tmp/amd64/partial
   o=(-oAPT::Architecture=amd64 -oAPT::Architectures=amd64 -oDir::State::Lists=/tmp/amd64)
   apt-get "${o[@]}" update >/dev/null
@@ -98,6 +104,6 @@ size=$(du -sm "$pack" | cut -f1)
 echo "ci/device-pack.sh: $pack holds $size MiB (from $build)"
 du -sh "$pack"/* .gl 2>/dev/null || true
 if (( size > 48 )); then
-  echo "ci/device-pack.sh: $pack is over 48 MiB; with the working tree it would pass the 64 MiB a lent machine takes" >&2
+  echo "ci/device-pack.sh: $pack is over 48 MiB; with the working tree it would pass the 64 MiB the GPU machine takes" >&2
   exit 1
 fi
