@@ -4,6 +4,7 @@
 // table is the one CMake built the libraries from, so the check and the link lines cannot drift.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -100,9 +101,27 @@ std::string joined(const std::vector<std::string>& lines) {
   return s;
 }
 
+// The layer table CMake wrote: VSGL_LAYERS_FILE from the environment when set (it must exist),
+// else where this build wrote it, else beside a test binary that travelled without its build
+// folder (ci/device-pack.sh packs the table with the tests). Empty when none is there.
+fs::path layer_table_file() {
+  if (const char* env = std::getenv("VSGL_LAYERS_FILE"); env != nullptr && *env != '\0') return env;
+  std::error_code ec;
+  if (fs::exists(VSGL_LAYERS_FILE, ec)) return VSGL_LAYERS_FILE;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  for (const fs::path& p :
+       {exe.parent_path() / "harness_layers.txt", exe.parent_path().parent_path() / "harness_layers.txt"})
+    if (!ec && fs::exists(p, ec)) return p;
+  return {};
+}
+
 TEST(Layering, NoIncludePointsUpTheLayers) {
-  std::ifstream in(VSGL_LAYERS_FILE);
-  ASSERT_TRUE(in) << "cannot read the layer table " << VSGL_LAYERS_FILE;
+  const fs::path file = layer_table_file();
+  if (file.empty())
+    GTEST_SKIP() << "no layer table: not at " << VSGL_LAYERS_FILE
+                 << " (where the build wrote it), not beside the test binary, and VSGL_LAYERS_FILE is not set";
+  std::ifstream in(file);
+  ASSERT_TRUE(in) << "cannot read the layer table " << file;
   const LayerTable table = parse_layer_table(in);
   ASSERT_GE(table.size(), 8u);
   const auto v = layering_violations(VSGL_SOURCE_DIR, table);
