@@ -85,43 +85,34 @@ TEST(JsonSchemaSubset, WalksUnderKeywordsOutsideTheSubsetAndChecksValues) {
   EXPECT_TRUE(schema_subset_problems(json::parse(R"({"$ref": "#/$defs/a", "$defs": {"a": true}})")).empty());
 }
 
-// Committed JSON under results/ that no schema in results/schema/ describes, and why. A new file
-// must be mapped to a schema below or listed here; a listed file that is gone fails too.
-const std::map<std::string, std::string>& without_schema() {
-  static const std::map<std::string, std::string> files = {
-      {"results/lavapipe/stand-ins/quality/atrium/quality.json",
-       "the quality report (vsgl-bench quality) has no schema yet"},
-      {"results/lavapipe/stand-ins/quality/conference/quality.json",
-       "the quality report (vsgl-bench quality) has no schema yet"},
-      {"results/lavapipe/stand-ins/verify_atrium.json", "vsgl-bench verify --json output has no schema yet"},
-      {"results/lavapipe/stand-ins/verify_conference.json", "vsgl-bench verify --json output has no schema yet"},
-      {"results/lavapipe/quality/sponza/quality.json", "the quality report (vsgl-bench quality) has no schema yet"},
-      {"results/lavapipe/quality/conference-room/quality.json",
-       "the quality report (vsgl-bench quality) has no schema yet"},
-      {"results/lavapipe/verify_sponza.json", "vsgl-bench verify --json output has no schema yet"},
-      {"results/lavapipe/verify_conference-room.json", "vsgl-bench verify --json output has no schema yet"},
-      {"results/nvidia-h100-80gb-hbm3/verify_atrium.json", "vsgl-bench verify --json output has no schema yet"},
-      {"results/nvidia-h100-80gb-hbm3/verify_conference.json", "vsgl-bench verify --json output has no schema yet"},
-      {"results/swiftshader/verify_atrium.json", "vsgl-bench verify --json output has no schema yet"},
-      {"results/swiftshader/verify_conference.json", "vsgl-bench verify --json output has no schema yet"},
-      {"results/nvidia-h100-80gb-hbm3/devices.json", "vsgl-bench devices --json output has no schema yet"},
-      {"results/nvidia-h100-80gb-hbm3/gbench.json", "Google Benchmark's own JSON format, not ours"},
-      {"results/paper/paper_tables.json", "the paper's numbers, an input checked by the code that loads it"},
-      {"results/nvidia-h100-80gb-hbm3/table1.json",
-       "a schema_version 1 table, recorded before table.schema.json version 2; no version 1 schema is committed"},
-      {"results/nvidia-h100-80gb-hbm3/table2.json",
-       "a schema_version 1 table, recorded before table.schema.json version 2; no version 1 schema is committed"},
-  };
-  return files;
+// The kinds of results file (tests/data/result_kinds.json, which ci/import-device-results.sh
+// and tests/validate_results.py read too): a kind's schema, or why it has none. A committed file
+// of no kind fails, as does a listed exception that is gone.
+struct ResultKind {
+  std::string kind;
+  std::regex path;
+  std::string schema;  // a file of results/schema/, "by schema_version", or empty: `none` says why
+  std::string none;
+};
+
+const json& result_kinds_file() {
+  static const json spec = read_json(kSource / "tests/data/result_kinds.json");
+  return spec;
 }
 
-// The schema a committed file conforms to: a sweep (sweep.json) to sweep.schema.json; a table
-// (tableN.json) to the table schema of its schema_version (table.schema.json, or a frozen older
-// one: table.v2.schema.json).
-std::string schema_of(const fs::path& file, const json& doc, const std::map<std::string, json>& schemas) {
-  static const std::regex table(R"(table\d+\.json)");
-  if (file.filename() == "sweep.json") return "sweep.schema.json";
-  if (!std::regex_match(file.filename().string(), table)) return "";
+std::vector<ResultKind> result_kinds() {
+  std::vector<ResultKind> kinds;
+  for (const json& k : result_kinds_file().at("kinds"))
+    kinds.push_back({k.at("kind").get<std::string>(), std::regex("(^|/)(" + k.at("path").get<std::string>() + ")$"),
+                     k.value("schema", ""), k.value("none", "")});
+  return kinds;
+}
+
+// The schema a file of kind `kind` conforms to: its kind's, or for a table (tableN.json) the
+// table schema of its schema_version (table.schema.json, or a frozen older one:
+// table.v2.schema.json). Empty when there is none.
+std::string schema_of(const ResultKind& kind, const json& doc, const std::map<std::string, json>& schemas) {
+  if (kind.schema != "by schema_version") return kind.schema;
   for (const auto& [name, schema] : schemas)
     if (name.rfind("table.", 0) == 0 && doc.contains("schema_version") &&
         schema["properties"]["schema_version"]["const"] == doc["schema_version"])
@@ -129,10 +120,16 @@ std::string schema_of(const fs::path& file, const json& doc, const std::map<std:
   return "";
 }
 
-TEST(CommittedResults, EveryJsonFileConformsToItsSchemaOrIsListedWithoutOne) {
+TEST(CommittedResults, EveryJsonFileConformsToItsSchemaOrIsOfAKindWithoutOne) {
   std::map<std::string, json> schemas;
   for (const auto& entry : fs::directory_iterator(kSource / "results/schema"))
     schemas[entry.path().filename().string()] = read_json(entry.path());
+  const auto kinds = result_kinds();
+  ASSERT_GE(kinds.size(), 2u);
+  const json& exceptions = result_kinds_file().at("exceptions");
+  for (const ResultKind& k : kinds)
+    EXPECT_TRUE(k.schema.empty() ? !k.none.empty() : k.schema == "by schema_version" || schemas.count(k.schema))
+        << k.kind << ": names neither a committed schema nor why it has none";
   std::set<std::string> seen;
   int validated = 0;
   for (const auto& entry : fs::recursive_directory_iterator(kSource / "results")) {
@@ -142,18 +139,46 @@ TEST(CommittedResults, EveryJsonFileConformsToItsSchemaOrIsListedWithoutOne) {
     SCOPED_TRACE(rel);
     seen.insert(rel);
     const json doc = read_json(entry.path());  // throws, failing the test, when it does not parse
-    if (without_schema().count(rel)) continue;
-    const std::string schema = schema_of(entry.path(), doc, schemas);
+    if (exceptions.contains(rel)) continue;
+    const auto kind =
+        std::find_if(kinds.begin(), kinds.end(), [&](const ResultKind& k) { return std::regex_search(rel, k.path); });
+    if (kind == kinds.end()) {
+      ADD_FAILURE() << "of no kind: add its kind to tests/data/result_kinds.json (a schema, or why it has none)";
+      continue;
+    }
+    if (kind->schema.empty()) continue;  // a kind without a schema, and why, is listed
+    const std::string schema = schema_of(*kind, doc, schemas);
     if (schema.empty() || !schemas.count(schema)) {
-      ADD_FAILURE() << "no schema describes it: map it to one in schema_of() or list it in without_schema()";
+      ADD_FAILURE() << "a " << kind->kind
+                    << " whose schema is not committed: list it under exceptions in tests/data/result_kinds.json";
       continue;
     }
     const auto errors = validate_against_schema(doc, schemas.at(schema));
     EXPECT_TRUE(errors.empty()) << "against " << schema << ":" << joined(errors);
     ++validated;
   }
-  for (const auto& [rel, why] : without_schema()) EXPECT_TRUE(seen.count(rel)) << rel << ": listed but not committed";
+  for (const auto& [rel, why] : exceptions.items()) EXPECT_TRUE(seen.count(rel)) << rel << ": listed but not committed";
   EXPECT_GE(validated, 2);  // results/lavapipe/table{1,2}.json at least
+}
+
+// The kinds' paths are what a GPU-machine run writes (ci/device-run.sh) as filed by
+// ci/import-device-results.sh: each file lands on the kind it is.
+TEST(CommittedResults, DeviceRunFilesHaveTheirKinds) {
+  const auto kinds = result_kinds();
+  const auto kind_of = [&](const std::string& rel) {
+    for (const ResultKind& k : kinds)
+      if (std::regex_search(rel, k.path)) return k.kind;
+    return std::string("(none)");
+  };
+  EXPECT_EQ(kind_of("results/some-gpu/texture/table1.json"), "table");
+  EXPECT_EQ(kind_of("results/some-gpu/sweep/sweep.json"), "sweep");
+  EXPECT_EQ(kind_of("results/some-gpu/devices.json"), "devices");
+  EXPECT_EQ(kind_of("results/some-gpu/verify_sponza.json"), "verify");
+  EXPECT_EQ(kind_of("results/some-gpu/gbench.json"), "google-benchmark");
+  EXPECT_EQ(kind_of("results/some-gpu/mipbench.json"), "google-benchmark");
+  EXPECT_EQ(kind_of("results/some-gpu/tests/FisGeneratorTest.json"), "googletest");
+  EXPECT_EQ(kind_of("results/some-gpu/mytable1.json"), "(none)");
+  EXPECT_EQ(kind_of("results/some-gpu/notes.json"), "(none)");
 }
 
 json mutated(json doc, const json& mutation) {
