@@ -243,7 +243,8 @@ list_devices() {
 }
 list_devices
 if ! devices_ok; then
-  say "   the loader found no usable GPU: searching the usual places for NVIDIA's ICD and its library"
+  say "   the loader found no usable GPU (devices: $(grep -o '"name": "[^"]*"\|"type": "[^"]*"' "$run/devices.json" 2>/dev/null | sed 's/"[a-z]*": //' | tr '\n' ' ')$($quick || echo '; only --quick rehearses on a CPU device'))"
+  say "   searching the usual places for NVIDIA's ICD and its library"
   found_icds=$(timeout 30 find "${icd_dirs[@]}" /usr/local/nvidia /etc /usr/share /opt -maxdepth 6 -name 'nvidia_icd*.json' 2>/dev/null | sort -u)
   found_libs=$(timeout 30 find /usr/local/nvidia /usr/lib /usr/lib64 /lib /opt /run/nvidia -maxdepth 5 -name 'libGLX_nvidia.so.*' 2>/dev/null | sort -u)
   say "   ICD files found: ${found_icds:-none}"
@@ -262,7 +263,8 @@ if ! devices_ok; then
   if ! devices_ok; then
     say "   still no usable GPU: the loader's own account (VK_LOADER_DEBUG=all) is in loader_debug.txt"
     VK_LOADER_DEBUG=all timeout 30 "$bin/vsgl-bench" devices > "$run/loader_debug.txt" 2>&1
-    grep -iE 'error|warn|fail|icd|driver' "$run/loader_debug.txt" | tail -n 25 | sed 's/^/   | /' >> "$log"
+    grep -E 'ERROR|WARNING|Found ICD manifest|ICD drivers named|[Ff]ailed|[Cc]ould not|[Uu]nable' "$run/loader_debug.txt" |
+      awk '!seen[$0]++' | head -n 30 | sed 's/^/   | /' >> "$log"
     describe_loader > "$run/loader.txt" 2>&1
     say "   stopping: the remaining steps need the device"
     exit 1
