@@ -54,7 +54,7 @@ bench=${VSGL_BENCH:-}
 if [[ -z $bench ]]; then
   for b in "$repo/build/release/bench/vsgl-bench" "$repo/build/ci/bench/vsgl-bench"; do [[ -x $b ]] && { bench=$b; break; }; done
 fi
-[[ -n $bench && -x $bench ]] || refuse "no vsgl-bench to draw the dashboard with: build one (cmake --preset release && cmake --build build/release) or set VSGL_BENCH"
+[[ -n $bench && -x $bench ]] && bench=$(cd "$(dirname "$bench")" && pwd)/$(basename "$bench") || refuse "no vsgl-bench to draw the dashboard with: build one (cmake --preset release && cmake --build build/release) or set VSGL_BENCH"
 
 stage=$(mktemp -d)
 trap 'rm -rf "$stage"' EXIT
@@ -124,7 +124,9 @@ old=$stage/replaced  # outside DIR, so the dashboard does not read it
 cp -r "$run" "$incoming"
 [[ ! -e $dest ]] || mv "$dest" "$old"
 mv "$incoming" "$dest"
-if ! "$bench" dashboard "$results" --out "$results/dashboard" --paper "$repo/results/paper/paper_tables.json" 2> "$stage/dashboard.err"; then
+# From beside DIR, so the page names it by its own name (results), never by a path of this machine.
+if ! (cd "$(dirname "$results")" && "$bench" dashboard "$(basename "$results")" --out "$(basename "$results")/dashboard" \
+  --paper "$repo/results/paper/paper_tables.json") 2> "$stage/dashboard.err"; then
   rm -rf "$dest"
   [[ ! -e $old ]] || mv "$old" "$dest"
   refuse "vsgl-bench dashboard failed, so nothing was filed:"$'\n'"$(cat "$stage/dashboard.err")"

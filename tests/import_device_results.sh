@@ -61,6 +61,7 @@ done
 [[ -f $res/dashboard/index.html ]] || fail "import: no dashboard"
 grep -qF "$slug/texture/table1.json" "$res/dashboard/index.html" 2>/dev/null || fail "import: the dashboard does not show $slug/texture/table1.json"
 [[ -z $(find "$res" -name '.incoming-*') ]] || fail "import: left its incoming folder"
+! grep -qF "$scratch" "$res/dashboard/index.html" || fail "import: the dashboard names a path of this machine ($scratch)"
 expect "a second run of the device" 1 "already exists" bash "$import" "$scratch/run.tar.gz" --results "$res"
 expect "--replace" 0 "filed" bash "$import" "$scratch/run.tar.gz" --results "$res" --replace
 expect "--slug" 0 "as $res/beside" bash "$import" "$scratch/run.tar.gz" --results "$res" --slug beside
