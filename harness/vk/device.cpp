@@ -3,9 +3,23 @@
 #include <sstream>
 
 #include "harness/core/error.hpp"
+#include "harness/vk/extension_choice.hpp"
 #include "harness/vk/vk_check.hpp"
 
 namespace vsgl {
+namespace {
+
+std::vector<std::string> device_extensions(VkPhysicalDevice physical) {
+  uint32_t count = 0;
+  VK_CHECK(vkEnumerateDeviceExtensionProperties(physical, nullptr, &count, nullptr));
+  std::vector<VkExtensionProperties> exts(count);
+  VK_CHECK(vkEnumerateDeviceExtensionProperties(physical, nullptr, &count, exts.data()));
+  std::vector<std::string> names;
+  for (uint32_t i = 0; i < count; ++i) names.emplace_back(exts[i].extensionName);
+  return names;
+}
+
+}  // namespace
 
 Device::Device(const Instance& instance, const DeviceInfo& info) : instance_(instance), info_(info) {
   const float priority = 1.0f;
@@ -20,9 +34,14 @@ Device::Device(const Instance& instance, const DeviceInfo& info) : instance_(ins
   enabled.pipelineStatisticsQuery = supported.pipelineStatisticsQuery;
   pipeline_statistics_ = supported.pipelineStatisticsQuery == VK_TRUE;
 
+  // VK_KHR_portability_subset where the device lists it (MoltenVK): the specification requires it.
+  const std::vector<const char*> extensions = choose_device_extensions(device_extensions(info.handle));
+
   VkDeviceCreateInfo create{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
   create.queueCreateInfoCount = 1;
   create.pQueueCreateInfos = &queue_info;
+  create.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
+  create.ppEnabledExtensionNames = extensions.data();
   create.pEnabledFeatures = &enabled;
   VK_CHECK(vkCreateDevice(info.handle, &create, nullptr, &device_));
   vkGetDeviceQueue(device_, info.compute_queue_family, 0, &queue_);

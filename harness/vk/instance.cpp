@@ -5,6 +5,7 @@
 
 #include "harness/core/error.hpp"
 #include "harness/core/version.hpp"
+#include "harness/vk/extension_choice.hpp"
 #include "harness/vk/vk_check.hpp"
 
 namespace vsgl {
@@ -22,14 +23,14 @@ bool has_layer(const char* name) {
   return false;
 }
 
-bool has_extension(const char* name) {
+std::vector<std::string> instance_extensions() {
   uint32_t count = 0;
   VK_CHECK(vkEnumerateInstanceExtensionProperties(nullptr, &count, nullptr));
   std::vector<VkExtensionProperties> exts(count);
   VK_CHECK(vkEnumerateInstanceExtensionProperties(nullptr, &count, exts.data()));
-  for (const auto& e : exts)
-    if (std::strcmp(e.extensionName, name) == 0) return true;
-  return false;
+  std::vector<std::string> names;
+  for (uint32_t i = 0; i < count; ++i) names.emplace_back(exts[i].extensionName);
+  return names;
 }
 
 }  // namespace
@@ -42,7 +43,6 @@ Instance::Instance(const InstanceOptions& options) : validation_(options.validat
                       "; vsgl-bench needs Vulkan 1.2 (install libvulkan1 >= 1.2)");
 
   std::vector<const char*> layers;
-  std::vector<const char*> extensions;
   if (validation_) {
     if (!has_layer(kValidationLayer))
       throw DeviceError(
@@ -50,13 +50,11 @@ Instance::Instance(const InstanceOptions& options) : validation_(options.validat
           "installed: install the Debian package vulkan-validationlayers");
     layers.push_back(kValidationLayer);
   }
-  debug_utils_ = has_extension(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
-  if (debug_utils_) extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+  // Debug utils where offered; portability enumeration (MoltenVK's devices) where offered.
+  const InstanceExtensionChoice choice = choose_instance_extensions(instance_extensions());
+  debug_utils_ = choice.debug_utils;
   if (validation_ && !debug_utils_)
     throw DeviceError("--validate needs VK_EXT_debug_utils to receive validation messages");
-  // Lets the loader show portability (e.g. MoltenVK) devices too.
-  const bool portability = has_extension(VK_KHR_PORTABILITY_ENUMERATION_EXTENSION_NAME);
-  if (portability) extensions.push_back(VK_KHR_PORTABILITY_ENUMERATION_EXTENSION_NAME);
 
   VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
   app.pApplicationName = "vsgl-bench";
@@ -91,12 +89,12 @@ Instance::Instance(const InstanceOptions& options) : validation_(options.validat
 
   VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
   info.pNext = validation_ ? &features : nullptr;
-  info.flags = portability ? VK_INSTANCE_CREATE_ENUMERATE_PORTABILITY_BIT_KHR : 0;
+  info.flags = choice.flags;
   info.pApplicationInfo = &app;
   info.enabledLayerCount = static_cast<uint32_t>(layers.size());
   info.ppEnabledLayerNames = layers.data();
-  info.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
-  info.ppEnabledExtensionNames = extensions.data();
+  info.enabledExtensionCount = static_cast<uint32_t>(choice.extensions.size());
+  info.ppEnabledExtensionNames = choice.extensions.data();
   const VkResult r = vkCreateInstance(&info, nullptr, &instance_);
   if (r == VK_ERROR_INCOMPATIBLE_DRIVER)
     throw DeviceError("no Vulkan driver found (VK_ERROR_INCOMPATIBLE_DRIVER): install a Vulkan driver, e.g. "
