@@ -16,8 +16,8 @@ install(TARGETS ${VSGL_INSTALLED_PROGRAMS} RUNTIME DESTINATION ${CMAKE_INSTALL_B
 # The repository has no licence file; the README is the only document to install.
 install(FILES ${PROJECT_SOURCE_DIR}/README.md DESTINATION ${VSGL_INSTALL_DOCDIR})
 
-# The address the repository's commits carry; whoever publishes the package sets their own.
-set(VSGL_PACKAGE_MAINTAINER "vsgl-bench maintainers <maintainers@users.noreply.h-seed-896792c8.example>"
+# A placeholder address (RFC 2606): whoever publishes the package sets their own.
+set(VSGL_PACKAGE_MAINTAINER "vsgl-bench maintainers <maintainers@vsgl-bench.example>"
     CACHE STRING "Maintainer field of the Debian package: \"Name <address>\"")
 
 set(CPACK_PACKAGE_NAME ${VSGL_PACKAGE_NAME})
