@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -28,6 +29,8 @@
 #include "harness/core/error.hpp"
 #include "harness/capture/exr_io.hpp"
 #include "harness/core/json_schema_subset.hpp"
+#include "harness/formats/sweep_model.hpp"
+#include "harness/formats/table_model.hpp"
 #include "test_support.hpp"
 
 namespace vsgl {
@@ -150,7 +153,9 @@ TEST(KillDuringWrite, TablesOutputsAreOldOrNewNeverPartial) {
       "--rsm", "64", "--camera-vsgls", "48", "--light-vsgls", "24", "--generators", "fis_tok15",
       "--repetitions", "2", "--max-repetitions", "2", "--no-progress", "--device", test_device()};
   ASSERT_EQ(run_to_end(args, root / "first.log"), 0) << slurp(root / "first.log");
-  const std::vector<std::string> outputs = {"table1.json", "table1.md", "table2.json", "table2.md"};  // write order
+  // The order of first writes (each table as soon as it is measured; table1.* is written again,
+  // with the Table 1 -> 2 change, after table2.*).
+  const std::vector<std::string> outputs = {"table1.json", "table1.md", "table2.json", "table2.md"};
 
   const fs::path notify = root / "paused";
   // Every point once, on files early and late in the write order.
@@ -188,6 +193,105 @@ TEST(KillDuringWrite, TablesOutputsAreOldOrNewNeverPartial) {
   ASSERT_EQ(run_to_end(args, root / "last.log"), 0) << slurp(root / "last.log");
   for (const auto& f : outputs) EXPECT_TRUE(complete_table_file(out / f)) << f;
   EXPECT_TRUE(temporaries(out).empty()) << temporaries(out).front();
+}
+
+// A command line's arguments, split at spaces (the paths of these tests have none).
+std::vector<std::string> words(const std::string& line) {
+  std::vector<std::string> out;
+  std::istringstream in(line);
+  for (std::string w; in >> w;) out.push_back(w);
+  return out;
+}
+
+// `tables` writes each table as soon as it is measured: killed while writing Table 2, it leaves
+// Table 1's JSON and markdown complete, without the Table 1 -> 2 change (Table 2 was not there to
+// compare with) and readable by the table model; killed once Table 1 was rewritten with the change,
+// both tables are there and agree.
+TEST(KillDuringWrite, TablesKeepEachTableTheyFinished) {
+  const test::TempDir root_temp("kill_tables_each");
+  const fs::path& root = root_temp.path();
+  const fs::path out = root / "out";
+  // Two small captures of the paper tables' procedural stand-ins (the paper's models may be
+  // found beside the checkout, and recording those takes long).
+  for (const char* scene : {"atrium", "conference"}) {
+    const std::vector<std::string> record =
+        words(std::string("record --scene ") + scene + " --gbuffer 96x64 --rsm 64 --out " + (root / scene).string() +
+              " --device " + test_device());
+    ASSERT_EQ(run_to_end(record, root / "record.log"), 0) << slurp(root / "record.log");
+  }
+  const std::vector<std::string> args =
+      words("tables --quick --capture " + (root / "atrium").string() + " --capture " + (root / "conference").string() +
+            " --out " + out.string() +
+            " --camera-vsgls 48 --light-vsgls 24 --generators fis_tok15 --repetitions 2 --max-repetitions 2"
+            " --copy-mib 1 --no-progress --device " +
+            test_device());
+  const fs::path notify = root / "paused";
+  const auto table = [&](const std::string& name) {
+    return table_model_from_json(nlohmann::ordered_json::parse(slurp(out / name)), name);
+  };
+
+  kill_at_pause(start(args, root / "killed.log", "partial:table2.json", notify), notify);
+  for (const char* f : {"table1.json", "table1.md"}) EXPECT_TRUE(complete_table_file(out / f)) << f;
+  EXPECT_FALSE(fs::exists(out / "table2.json"));
+  EXPECT_FALSE(fs::exists(out / "table2.md"));
+  TableModel t1 = table("table1.json");
+  EXPECT_EQ(t1.table, std::optional<int>(1));
+  ASSERT_TRUE(t1.ratios.has_value());
+  EXPECT_FALSE(t1.ratios->table1_to_table2.has_value()) << "no Table 2 yet to compare with";
+  EXPECT_EQ(slurp(out / "table1.md").find("Table 2 / Table 1"), std::string::npos);
+
+  // The second write of table1.json (the rewrite with the change) is in place.
+  kill_at_pause(start(args, root / "killed.log", "renamed:table1.json:2", notify), notify);
+  for (const char* f : {"table1.json", "table2.json", "table2.md"}) EXPECT_TRUE(complete_table_file(out / f)) << f;
+  t1 = table("table1.json");
+  EXPECT_EQ(table("table2.json").table, std::optional<int>(2));
+  ASSERT_TRUE(t1.ratios.has_value());
+  EXPECT_TRUE(t1.ratios->table1_to_table2.has_value());
+  EXPECT_EQ(nlohmann::json::parse(slurp(out / "table1.json"))["ratios"]["table1_to_table2"],
+            nlohmann::json::parse(slurp(out / "table2.json"))["ratios"]["table1_to_table2"]);
+  // Its markdown is rewritten after it: still the one without the change.
+  EXPECT_EQ(slurp(out / "table1.md").find("Table 2 / Table 1"), std::string::npos);
+}
+
+// `sweep` rewrites sweep.json after each point: killed once its second point's file is in place,
+// the sweep leaves a sweep.json that conforms to the schema and reads as an incomplete sweep of
+// those two points, with fits over them and no markdown yet; killed while writing the complete
+// sweep.json, the markdown is there but the file still says "complete": false.
+TEST(KillDuringWrite, SweepKeepsThePointsItFinished) {
+  const test::TempDir root_temp("kill_sweep");
+  const fs::path& root = root_temp.path();
+  const fs::path out = root / "out";
+  const std::vector<std::string> args = words(
+      "sweep --scene tiny --gbuffer 96x64 --rsm 64 --captures " + (root / "captures").string() + " --out " +
+      out.string() + " --generators fis_modified --quick --no-progress --axis vsgls=8,16,32 --device " + test_device());
+  const fs::path notify = root / "paused";
+  std::ifstream schema_in(VSGL_SOURCE_DIR "/results/schema/sweep.schema.json");
+  const nlohmann::json schema = nlohmann::json::parse(schema_in);
+
+  kill_at_pause(start(args, root / "killed.log", "renamed:sweep.json:2", notify), notify);
+  const nlohmann::json doc = nlohmann::json::parse(slurp(out / "sweep.json"));
+  const auto problems = validate_against_schema(doc, schema);
+  EXPECT_TRUE(problems.empty()) << problems.front();
+  EXPECT_EQ(doc["complete"], false);
+  const SweepModel m = read_sweep_file(out / "sweep.json");
+  EXPECT_FALSE(m.complete);
+  ASSERT_EQ(m.points.size(), 2u);
+  EXPECT_EQ(m.planned_points(), 3u);
+  EXPECT_EQ(m.reached_points(), 2u);
+  EXPECT_EQ(m.axes[0].values[m.points[1].value_index[0]].text, "16");
+  ASSERT_FALSE(m.fits.empty());
+  for (const SweepFitModel& f : m.fits) EXPECT_EQ(f.points.size(), 2u);
+  EXPECT_FALSE(m.claims.has_value());
+  EXPECT_FALSE(fs::exists(out / "sweep.md")) << "the markdown is the complete sweep's";
+
+  // Writes 1-3 follow the points; the 4th is the complete sweep.json, after the markdown and plots.
+  kill_at_pause(start(args, root / "killed.log", "complete:sweep.json:4", notify), notify);
+  EXPECT_TRUE(fs::exists(out / "sweep.md"));
+  EXPECT_TRUE(fs::exists(out / "sweep_vsgls_total.svg"));
+  const SweepModel all = read_sweep_file(out / "sweep.json");
+  EXPECT_FALSE(all.complete);
+  EXPECT_EQ(all.points.size(), 3u);
+  EXPECT_EQ(all.reached_points(), 3u);
 }
 
 TEST(KillDuringWrite, RecordOutputsAreOldOrNewNeverPartial) {

@@ -164,6 +164,30 @@ TEST(DashboardPage, ScalingSectionDrawsEachSweepAxisWithItsFits) {
   EXPECT_NE(g.find("moves less than the &lt;band&gt;"), std::string::npos);
 }
 
+// A sweep.json written while its run went on (DESIGN.md §10.1) is drawn from the points it has,
+// and marked: in its heading and in a line that says what is missing.
+TEST(DashboardPage, AnIncompleteSweepIsMarkedAndStillDrawn) {
+  const test::TempDir dir("dashboard_incomplete_sweep");
+  MeasuredSweep s = test::synthetic_sweep({parse_axis_spec("vsgls=8:64:x2")}, {"fis_modified"});
+  s.points.resize(2);
+  s.complete = false;
+  auto sweeps = two_sweeps();
+  sweeps.emplace_back("c/sweep.json", test::synthetic_sweep_json(s, test::synthetic_sweep_context("GPU C")));
+  make_results(dir.path(), sweeps, false);
+  const auto runs = find_sweep_runs(dir.path());
+  ASSERT_EQ(runs.size(), 3u);
+  const std::string html = scaling_section_html(runs, "results");
+  EXPECT_EQ(count(html, "<section class=\"sweep\""), 3u);
+  EXPECT_EQ(count(html, "class=\"incomplete\""), 2u) << "the heading and the line of one sweep only";
+  const std::string c = between(html, "GPU C", "</section>");
+  EXPECT_NE(c.find("<span class=\"incomplete\">incomplete: 2 of 4 points</span></h3>"), std::string::npos) << c;
+  EXPECT_NE(c.find("after 2 of 4 points"), std::string::npos) << c;
+  EXPECT_NE(c.find("(2 points)"), std::string::npos) << c;
+  EXPECT_EQ(count(c, "class=\"chart loglog\""), 1u);
+  EXPECT_EQ(count(c, "<circle class=\"point\""), 2u * 2u);  // two points of each view's series
+  EXPECT_NE(c.find("cost \u221d N^"), std::string::npos) << "fitted over the two points";
+}
+
 TEST(DashboardPage, ScalingSectionSaysInOneLineThatThereIsNoSweep) {
   const std::string html =
       dashboard_html(find_table_runs(kResults), load_paper_tables(kResults / "paper/paper_tables.json"), "results",
@@ -185,6 +209,9 @@ TEST(DashboardPage, TheCommittedSweepsLoadAndEachHasItsScalingSection) {
   EXPECT_EQ(section.find("No sweep JSON"), std::string::npos);
   EXPECT_GE(count(html, "<svg"), sweeps.size());
   EXPECT_NE(html.find("<code>lavapipe/sweep/vsgls/sweep.json</code>"), std::string::npos);
+  // Written before "complete" existed: read as complete, no mark.
+  for (const SweepRun& r : sweeps) EXPECT_TRUE(r.model.complete) << r.path;
+  EXPECT_EQ(section.find("class=\"incomplete\""), std::string::npos);
 }
 
 TEST(DashboardPage, ABrokenSweepIsAnErrorNamingIt) {

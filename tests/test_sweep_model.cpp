@@ -8,6 +8,7 @@
 #include <fstream>
 #include <limits>
 
+#include "harness/core/json_schema_subset.hpp"
 #include "harness/core/statistics.hpp"
 #include "harness/formats/sweep_model.hpp"
 #include "input_error.hpp"
@@ -186,6 +187,54 @@ TEST(SweepModel, RefusesWhatIsNotASweepOfThisVersion) {
   doc = good;
   doc["points"][2]["values"]["vsgls"] = "17";
   EXPECT_NE(message(doc).find("/points/2/values/vsgls: is \"17\", not a value of axis vsgls"), std::string::npos);
+}
+
+// The sweep.json written after each point (DESIGN.md §10.1): "complete": false, the points so far
+// (one is enough), the fits over them; it conforms to the schema and reads back as incomplete. A
+// file without the mark (written before it existed) is complete, and a complete sweep needs 2 points.
+TEST(SweepModel, AnIncompleteSweepReadsBackWithThePointsItHas) {
+  MeasuredSweep s = test::synthetic_sweep({parse_axis_spec("vsgls=8:32:x2"), parse_axis_spec("K=1,2")});
+  ASSERT_EQ(s.points.size(), 6u);
+  s.points.resize(1);
+  s.beyond_device.push_back(BeyondDevicePoint{{0, 1}, "", "", "too large"});
+  s.complete = false;
+  const ojson doc = test::synthetic_sweep_json(s);
+  EXPECT_EQ(doc["complete"], false);
+  const nlohmann::json schema =
+      test::read_json(std::filesystem::path(VSGL_SOURCE_DIR) / "results/schema/sweep.schema.json");
+  const auto problems = validate_against_schema(nlohmann::json::parse(doc.dump()), schema);
+  EXPECT_TRUE(problems.empty()) << problems.front();
+  const SweepModel m = read_sweep_model(doc, "mem");
+  EXPECT_FALSE(m.complete);
+  EXPECT_EQ(m.points.size(), 1u);
+  EXPECT_EQ(m.planned_points(), 6u);
+  EXPECT_EQ(m.reached_points(), 2u);  // the point timed and the one beyond the device
+  ASSERT_FALSE(m.fits.empty());
+  for (const SweepFitModel& f : m.fits) {
+    EXPECT_EQ(f.points, std::vector<std::size_t>{0});
+    EXPECT_FALSE(f.growth.has_value());
+    EXPECT_EQ(f.note, "fewer than 2 points on a log axis") << "no point was left off the axis";
+  }
+
+  const ojson complete = test::synthetic_sweep_json(test::synthetic_sweep({parse_axis_spec("vsgls=8:32:x2")}));
+  EXPECT_EQ(complete["complete"], true);
+  EXPECT_TRUE(read_sweep_model(complete, "mem").complete);
+  ojson older = complete;
+  older.erase("complete");
+  EXPECT_TRUE(validate_against_schema(nlohmann::json::parse(older.dump()), schema).empty());
+  const SweepModel o = read_sweep_model(older, "mem");
+  EXPECT_TRUE(o.complete);
+  EXPECT_EQ(o.reached_points(), o.planned_points());
+
+  ojson wrong = doc;
+  wrong["complete"] = true;
+  std::string msg = test::input_error([&] { read_sweep_model(wrong, "runs/sweep.json"); });
+  EXPECT_NE(msg.find("runs/sweep.json: /points: has 1 point, and a complete sweep has at least 2"), std::string::npos)
+      << msg;
+  wrong["complete"] = "no";
+  msg = test::input_error([&] { read_sweep_model(wrong, "runs/sweep.json"); });
+  EXPECT_NE(msg.find("/complete"), std::string::npos) << msg;
+  EXPECT_FALSE(validate_against_schema(nlohmann::json::parse(wrong.dump()), schema).empty());
 }
 
 TEST(SweepModel, ReadsAFileAndNamesItWhenItCannot) {

@@ -86,12 +86,16 @@ TEST_F(SweepRunTest, CasesAndPointsBeyondTheDeviceAreRecordedAndTheRestIsTimed) 
   const auto problems = validate_against_schema(test::read_json(file), test::read_json(o.schema));
   EXPECT_TRUE(problems.empty()) << problems.front();
   const SweepModel model = read_sweep_file(file);
+  EXPECT_TRUE(model.complete);
+  EXPECT_EQ(out.document["complete"], true);
   ASSERT_EQ(model.beyond_device.size(), 3u);
   EXPECT_EQ(model.beyond_device[0].generator, "fis_tok15");
   EXPECT_TRUE(model.beyond_device[2].generator.empty());
 }
 
-TEST_F(SweepRunTest, ASweepWithFewerThanTwoPointsOnTheDeviceIsADeviceErrorAndWritesNothing) {
+// The error stays; sweep.json keeps the one point timed, marked incomplete (DESIGN.md §10.1), and
+// nothing of a complete sweep (sweep.md, plots) is written.
+TEST_F(SweepRunTest, ASweepWithFewerThanTwoPointsOnTheDeviceIsADeviceErrorAndStaysIncomplete) {
   const test::TempDir temp("sweep_beyond_all");
   SweepOptions o = tiny_sweep(temp.path(), "vsgls=8,16");
   o.tables.wrap_generator = [](Device&, std::unique_ptr<VsglGenerator> g) -> std::unique_ptr<VsglGenerator> {
@@ -105,8 +109,16 @@ TEST_F(SweepRunTest, ASweepWithFewerThanTwoPointsOnTheDeviceIsADeviceErrorAndWri
     const std::string m = e.what();
     EXPECT_NE(m.find("only 1 of 2 points fit"), std::string::npos) << m;
     EXPECT_NE(m.find("simulated: too large"), std::string::npos) << m;
+    EXPECT_NE(m.find("sweep.json keeps the point timed, marked \"complete\": false"), std::string::npos) << m;
   }
-  EXPECT_FALSE(fs::exists(o.out_dir / "sweep.json"));
+  const fs::path file = o.out_dir / "sweep.json";
+  const auto problems = validate_against_schema(test::read_json(file), test::read_json(o.schema));
+  EXPECT_TRUE(problems.empty()) << problems.front();
+  const SweepModel model = read_sweep_file(file);
+  EXPECT_FALSE(model.complete);
+  EXPECT_EQ(model.points.size(), 1u);
+  EXPECT_EQ(model.reached_points(), 2u);
+  EXPECT_FALSE(fs::exists(o.out_dir / "sweep.md"));
 }
 
 }  // namespace

@@ -112,7 +112,8 @@ Command add_sweep_command(CLI::App& parent) {
       "axes (cost ∝ x^slope with a 95 % bootstrap interval over the rounds) and judged against what the algorithm "
       "predicts (e.g. filtered_sampling linear in N). Writes OUT/sweep.json (schema results/schema/sweep.schema.json: "
       "every point's statistics and raw samples, every fit), OUT/sweep.md (a table per axis) and "
-      "OUT/sweep_<axis>_<phase>.svg (log-log, median and IQR band per generator and view)");
+      "OUT/sweep_<axis>_<phase>.svg (log-log, median and IQR band per generator and view); until the last point, "
+      "OUT/sweep.json is rewritten after each point with the points so far and \"complete\": false");
   auto o = std::make_shared<SweepCommandOptions>();
   app->add_option("--axis", o->axes,
                   "NAME=VALUES: NAME one of vsgls (N on both views), camera-vsgls, light-vsgls, K, kmeans-iterations, "

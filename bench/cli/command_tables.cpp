@@ -126,9 +126,10 @@ Command add_tables_command(CLI::App& parent) {
           "OUT/tableN.json (schema results/schema/table.schema.json: the statistics and raw samples, the paper's "
           "value beside each, its ratios, the modified - Tok15 overhead paired by round with a 95 % Wilcoxon "
           "interval, the copy bandwidth measured in the same run, the Table 3 analog, the paper's claims checked) "
-          "and OUT/tableN.md. Table 1 runs on the paper's Crytek Sponza (scene sponza) and Table 2 on its conference "
-          "room (conference-room) when their models are found (--assets), else on the procedural stand-ins atrium and "
-          "conference, which the JSON names. On a CPU device the default generators are the paper's four");
+          "and OUT/tableN.md, each table as soon as it is measured. Table 1 runs on the paper's Crytek Sponza "
+          "(scene sponza) and Table 2 on its conference room (conference-room) when their models are found "
+          "(--assets), else on the procedural stand-ins atrium and conference, which the JSON names. On a CPU device "
+          "the default generators are the paper's four");
   auto o = std::make_shared<TablesCommandOptions>();
   auto* tables =
       add_list_option(*app, "--tables", o->tables,

@@ -195,6 +195,7 @@ std::string dashboard_html(const std::vector<BenchRun>& runs, const nlohmann::js
      << "td.num,td.growth{white-space:nowrap}td.num{text-align:right}tr.flagged td{background:#fde0dc}tr.flagged "
         "strong{color:#a31515}\n"
      << "tr.claim.holds td{background:#e3f4e3}tr.claim.fails td{background:#fde0dc}p.note{font-size:12px;color:#555}\n"
+     << ".incomplete{background:#fff1c2;color:#6b4e00;padding:1px 4px}\n"
      << "</style>\n</head>\n<body>\n";
   os << "<h1>vsgl-bench: VSGL generation timings (Tokuyoshi 2016, Tables 1 and 2)</h1>\n";
   os << "<p>" << runs.size() << " table runs and " << sweeps.size()

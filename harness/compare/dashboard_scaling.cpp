@@ -149,6 +149,13 @@ std::string claims_table(const SweepModel& m) {
   return os.str();
 }
 
+// The heading's mark of a sweep.json written while its run went on (DESIGN.md §10.1); "" when complete.
+std::string incomplete_mark(const SweepModel& m) {
+  if (m.complete) return "";
+  return " <span class=\"incomplete\">incomplete: " + std::to_string(m.reached_points()) + " of " +
+         std::to_string(m.planned_points()) + " points</span>";
+}
+
 std::string sweep_block(const SweepRun& run, std::size_t number) {
   const SweepModel& m = run.model;
   std::size_t flagged = 0;
@@ -161,7 +168,12 @@ std::string sweep_block(const SweepRun& run, std::size_t number) {
   std::ostringstream os;
   os << "<section class=\"sweep\" id=\"sweep" << number << "\">\n<h3>" << xml_escape(scene_label(m.scene)) << ": "
      << xml_escape(m.device_name) << ", " << xml_escape(day(m.started_utc)) << ", commit "
-     << xml_escape(short_commit(m)) << (m.quick ? " (quick)" : "") << "</h3>\n";
+     << xml_escape(short_commit(m)) << (m.quick ? " (quick)" : "") << incomplete_mark(m) << "</h3>\n";
+  if (!m.complete)
+    os << "<p class=\"incomplete\">This sweep did not finish: its run stopped, or is still running, after "
+       << m.reached_points() << " of " << m.planned_points()
+       << " points. The fits are over the points timed so far; the paper's claims are judged only on a complete "
+          "sweep.</p>\n";
   os << "<p><code>" << xml_escape(run.path) << "</code>: " << xml_escape(axes) << " (" << m.points.size()
      << " points), " << xml_escape(generators) << ", started " << xml_escape(m.started_utc) << ". "
      << (flagged == 0 ? std::string("No fit excludes the growth its algorithm predicts.")

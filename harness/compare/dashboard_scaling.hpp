@@ -1,7 +1,8 @@
 #pragma once
 // The dashboard's scaling section (DESIGN.md §10, §10.1): every sweep JSON under RESULTS_DIR
 // (`sweep.json`, written by `vsgl-bench sweep`), one block per file, labelled by device, scene,
-// commit, date and path, and per axis:
+// commit, date and path (and, for one written while its run went on, "incomplete: N of M
+// points"), and per axis:
 //  - a log-log chart of each generator's total per view (and slice of the other axes): median
 //    over the q1..q3 band; points whose growth x is 0 (γ = 0) are left off the log axis;
 //  - a table of those totals at every value of the axis, γ = 0 included;

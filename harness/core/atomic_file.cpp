@@ -110,6 +110,7 @@ void sync_directory(const std::filesystem::path& dir) {
 }  // namespace
 
 void write_file_atomic(const std::filesystem::path& path, std::span<const char> bytes) {
+  test_pause_count_write(path);  // TEST-ONLY (harness/core/test_pause.hpp)
   remove_stale_temporaries(path);
   const std::filesystem::path temporary = temporary_path_for(path);
   try {

@@ -253,6 +253,18 @@ const SweepCase* SweepPoint::find(const std::string& generator, const std::strin
   return nullptr;
 }
 
+std::size_t SweepModel::planned_points() const {
+  std::size_t n = axes.empty() ? 0 : 1;
+  for (const SweepAxisModel& a : axes) n *= a.values.size();
+  return n;
+}
+
+std::size_t SweepModel::reached_points() const {
+  std::size_t n = points.size();
+  for (const SweepBeyondDevice& b : beyond_device) n += b.generator.empty() ? 1 : 0;
+  return n;
+}
+
 std::string sweep_slice_text(const std::vector<std::pair<std::string, std::string>>& slice) {
   std::string s;
   for (const auto& [name, value] : slice) s += (s.empty() ? "" : ", ") + name + "=" + value;
@@ -273,6 +285,7 @@ SweepModel read_sweep_model(const nlohmann::ordered_json& doc, const std::string
   if (m.schema_version != kReadableSweepSchemaVersion)
     r.fail("/schema_version", "is " + std::to_string(m.schema_version) + "; this build reads sweep schema version " +
                                   std::to_string(kReadableSweepSchemaVersion));
+  if (doc.contains("complete")) m.complete = r.boolean(doc, "", "complete");
   if (const std::string unit = r.string(doc, "", "unit"); unit != "ms")
     r.fail("/unit", "is " + quoted_text(unit) + ", not \"ms\"");
 
@@ -306,6 +319,8 @@ SweepModel read_sweep_model(const nlohmann::ordered_json& doc, const std::string
   const ojson& points = r.nonempty_array(doc, "", "points");
   for (std::size_t i = 0; i < points.size(); ++i)
     m.points.push_back(read_point(r, points[i], "/points/" + std::to_string(i), i, m.axes));
+  if (m.complete && m.points.size() < 2)
+    r.fail("/points", "has 1 point, and a complete sweep has at least 2 (\"complete\": false marks one cut short)");
   if (doc.contains("beyond_device")) {
     const ojson& beyond = r.array(doc, "", "beyond_device");
     for (std::size_t i = 0; i < beyond.size(); ++i) {

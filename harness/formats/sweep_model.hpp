@@ -121,6 +121,10 @@ struct SweepClaim {
 
 struct SweepModel {
   int schema_version = kReadableSweepSchemaVersion;
+  // "complete" (absent in files written before it: true). False: the sweep.json of a run that
+  // stopped, or is still running, after some points (DESIGN.md §10.1): the points so far, the fits
+  // over them, no claims. A complete sweep has at least 2 points.
+  bool complete = true;
   nlohmann::ordered_json device = nlohmann::ordered_json::object();
   std::string device_name;
   nlohmann::ordered_json build = nlohmann::ordered_json::object();
@@ -137,6 +141,10 @@ struct SweepModel {
   std::vector<SweepBeyondDevice> beyond_device;
   std::vector<SweepFitModel> fits;
   std::optional<std::vector<SweepClaim>> claims;  // none: the file has no "claims"
+
+  // The points of the axes' product, and those the run reached: timed, or wholly beyond the device.
+  std::size_t planned_points() const;
+  std::size_t reached_points() const;
 };
 
 // "K=2, rsm=64"; "" for no other axis.

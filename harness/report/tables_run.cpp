@@ -50,6 +50,48 @@ void check_options(const TablesOptions& o) {
   o.copy_bandwidth.check();
 }
 
+// The other paper table measured so far, for table i's Table 1 -> 2 change; nullptr when none.
+const MeasuredTable* other_paper_table(const std::vector<TableMeasurement>& measured, std::size_t i) {
+  const MeasuredTable* other = nullptr;
+  for (std::size_t j = 0; j < measured.size(); ++j)
+    if (j != i && measured[i].table.number != 0 && measured[j].table.number != 0 &&
+        measured[j].table.number != measured[i].table.number)
+      other = &measured[j].table;
+  return other;
+}
+
+// Writes one table's JSON and markdown atomically, each complete and schema-valid first, and keeps
+// them as documents[index] and markdown[index] of `out`.
+void write_table(const TableMeasurement& m, const MeasuredTable* other, const RunContext& run, const TablesOptions& o,
+                 TablesOutcome& out, std::size_t index) {
+  const std::string stem = table_file_stem(m.table.number, m.table.scene);
+  ReportContext table_ctx = run.report;
+  table_ctx.config = m.config;
+  ojson doc;
+  try {
+    doc = table_json(m.table, other, table_ctx);
+    require_finite_numbers(doc);
+  } catch (const std::invalid_argument& e) {
+    throw DeviceError("table " + stem + ": " + e.what());
+  }
+  const auto problems = validate_against_schema(nlohmann::json::parse(doc.dump()), run.schema);
+  if (!problems.empty()) {
+    std::string all;
+    for (const auto& p : problems) all += "\n  " + p;
+    throw std::logic_error("table " + stem + " does not conform to " + o.schema.string() + ":" + all);
+  }
+  std::vector<std::pair<std::filesystem::path, std::string>> files;
+  files.emplace_back(o.out_dir / (stem + ".json"), doc.dump(2) + "\n");
+  out.markdown[index] = table_markdown(doc);
+  if (!o.json_only) files.emplace_back(o.out_dir / (stem + ".md"), out.markdown[index]);
+  out.documents[index] = std::move(doc);
+  std::filesystem::create_directories(o.out_dir);
+  for (const auto& [path, text] : files) {
+    write_text_atomic(path, text);
+    if (std::find(out.written.begin(), out.written.end(), path) == out.written.end()) out.written.push_back(path);
+  }
+}
+
 }  // namespace
 
 int paper_table_of(const CaptureMeta& meta) {
@@ -130,46 +172,31 @@ TablesOutcome run_tables(Device& device, const TablesOptions& o, const std::func
   require_timestamps(device.info());  // before minutes of recording
   // 1. Everything that is not a measurement, checked before any timing.
   const RunContext run = make_run_context(device.info(), o);
-  // 2. Each table: its capture, its generators, their interleaved timing.
+  // 2. Each table: its capture, its generators, their interleaved timing; then its files, at once,
+  // so a run cut short keeps the tables it finished (DESIGN.md §10). A paper table is written
+  // without the Table 1 -> 2 change until the other paper table is measured; then the new one is
+  // written and the earlier one rewritten with it, so a complete run ends with the same files as
+  // when everything was written at the end.
   const std::vector<TableInput> inputs = table_inputs(o);
   std::vector<TableMeasurement> measured;
-  for (const TableInput& input : inputs) measured.push_back(measure_table(device, o, input, on_event));
-  // 3. The documents, each complete and schema-valid before anything is written.
+  measured.reserve(inputs.size());
+  std::vector<const MeasuredTable*> written_with;  // the `other` of each table's files on disk
   TablesOutcome out;
-  std::filesystem::create_directories(o.out_dir);
-  std::vector<std::pair<std::filesystem::path, std::string>> files;
-  for (std::size_t i = 0; i < measured.size(); ++i) {
-    const MeasuredTable* other = nullptr;  // the other paper table, for the Table 1 -> 2 change
-    for (std::size_t j = 0; j < measured.size(); ++j)
-      if (j != i && measured[i].table.number != 0 && measured[j].table.number != 0 &&
-          measured[j].table.number != measured[i].table.number)
-        other = &measured[j].table;
-    ReportContext table_ctx = run.report;
-    table_ctx.config = measured[i].config;
-    ojson doc;
-    try {
-      doc = table_json(measured[i].table, other, table_ctx);
-      require_finite_numbers(doc);
-    } catch (const std::invalid_argument& e) {
-      throw DeviceError("table " + table_file_stem(measured[i].table.number, measured[i].table.scene) + ": " + e.what());
+  for (const TableInput& input : inputs) {
+    measured.push_back(measure_table(device, o, input, on_event));
+    const std::size_t latest = measured.size() - 1;
+    written_with.push_back(nullptr);
+    out.documents.emplace_back();
+    out.markdown.emplace_back();
+    // The new table first, then those whose change it completes.
+    std::vector<std::size_t> order{latest};
+    for (std::size_t i = 0; i < latest; ++i) order.push_back(i);
+    for (std::size_t i : order) {
+      const MeasuredTable* other = other_paper_table(measured, i);
+      if (i != latest && other == written_with[i]) continue;
+      write_table(measured[i], other, run, o, out, i);
+      written_with[i] = other;
     }
-    const auto problems = validate_against_schema(nlohmann::json::parse(doc.dump()), run.schema);
-    if (!problems.empty()) {
-      std::string all;
-      for (const auto& p : problems) all += "\n  " + p;
-      throw std::logic_error("table " + table_file_stem(measured[i].table.number, measured[i].table.scene) +
-                             " does not conform to " + o.schema.string() + ":" + all);
-    }
-    const std::string stem = table_file_stem(measured[i].table.number, measured[i].table.scene);
-    files.emplace_back(o.out_dir / (stem + ".json"), doc.dump(2) + "\n");
-    out.markdown.push_back(table_markdown(doc));
-    if (!o.json_only) files.emplace_back(o.out_dir / (stem + ".md"), out.markdown.back());
-    out.documents.push_back(std::move(doc));
-  }
-  // Nothing is written until every table is complete and valid.
-  for (const auto& [path, text] : files) {
-    write_text_atomic(path, text);
-    out.written.push_back(path);
   }
   return out;
 }

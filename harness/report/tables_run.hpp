@@ -2,7 +2,9 @@
 // `vsgl-bench tables` as a library function (the CLI and the tests call it): provide the captures
 // (record the paper's scenes when missing, else load and validate them), time every generator on
 // both views of each table with the protocol of timing_runner.hpp, and write OUT/tableN.json
-// (validated against results/schema/table.schema.json) and OUT/tableN.md, atomically. With
+// (validated against results/schema/table.schema.json) and OUT/tableN.md, atomically, each table
+// as soon as it is measured (a paper table written before the other one is rewritten with the
+// Table 1 -> 2 change once the other is measured; DESIGN.md §10). With
 // `captures` (--capture DIR ...) it times those captures instead, one table each: a capture of a
 // paper table's scene is that table (tableN.*, the paper's numbers beside it), any other capture
 // (a glTF file's, the tiny scene's) is OUT/<scene>.json and .md with "table": null.
@@ -100,7 +102,7 @@ struct TablesEvent {
 struct TablesOutcome {
   std::vector<nlohmann::ordered_json> documents;  // one per table, in the order asked
   std::vector<std::string> markdown;
-  std::vector<std::filesystem::path> written;
+  std::vector<std::filesystem::path> written;  // each path once, in the order first written
 };
 
 // Throws UsageError for bad options, InputError for bad captures / paper file / schema,

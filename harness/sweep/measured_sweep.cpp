@@ -95,7 +95,10 @@ std::vector<SweepFit> sweep_fits(const MeasuredSweep& s, const GrowthFitOptions&
           if (f.points.empty()) continue;
           f.expected = expected_growth(axis.parameter, family, c.view, phase);
           if (growth.size() < 2) {
-            f.note = "fewer than 2 points on a log axis (" + axis.name() + " = 0 cannot be drawn on one)";
+            // The reason in brackets only where a point was left off the axis (a sweep still running
+            // or one with points beyond the device may have just one point to fit).
+            f.note = "fewer than 2 points on a log axis" +
+                     (growth.size() < f.points.size() ? " (" + axis.name() + " = 0 cannot be drawn on one)" : "");
           } else {
             GrowthFitOptions o = options;
             o.subject = c.generator + " " + c.view + " " + phase + " over " + axis.name();

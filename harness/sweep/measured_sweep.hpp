@@ -52,6 +52,9 @@ struct MeasuredSweep {
   std::optional<double> time_budget_s;
   std::vector<SweepPointResult> points;          // the points timed
   std::vector<BeyondDevicePoint> beyond_device;  // the points and cases the device cannot hold, in sweep order
+  // Every point of the axes' product was reached (timed or beyond the device). False in the
+  // sweep.json written after each point while the sweep runs (DESIGN.md §10.1).
+  bool complete = true;
 };
 
 // One fit: a (generator, view, phase) along one axis, the other axes held at `slice`.

@@ -218,6 +218,7 @@ ojson sweep_json(const MeasuredSweep& s, const std::vector<SweepFit>& fits, cons
   ojson budget = s.time_budget_s ? ojson(*s.time_budget_s) : ojson(nullptr);
   ojson doc{{"schema_version", kSweepSchemaVersion},
             {"kind", "sweep"},
+            {"complete", s.complete},
             {"unit", "ms"},
             {"device", ctx.device},
             {"build", ctx.build},

@@ -71,6 +71,37 @@ bool same_sizes(const RecordSizes& a, const RecordSizes& b) {
   return a.gbuffer_width == b.gbuffer_width && a.gbuffer_height == b.gbuffer_height && a.rsm_size == b.rsm_size;
 }
 
+// The sweep's JSON, complete and schema-valid, or an error; nothing written.
+ojson checked_sweep_json(const MeasuredSweep& m, const std::vector<SweepFit>& fits, const SweepContext& ctx,
+                         const std::vector<PdfIndependence>& claims, const nlohmann::json& schema,
+                         const SweepOptions& o) {
+  ojson doc;
+  try {
+    doc = sweep_json(m, fits, ctx, claims);
+    require_finite_numbers(doc);
+  } catch (const std::invalid_argument& e) {
+    throw DeviceError(std::string("sweep: ") + e.what());
+  }
+  const auto problems = validate_against_schema(nlohmann::json::parse(doc.dump()), schema);
+  if (!problems.empty()) {
+    std::string all;
+    for (const auto& p : problems) all += "\n  " + p;
+    throw std::logic_error("the sweep does not conform to " + o.schema.string() + ":" + all);
+  }
+  return doc;
+}
+
+// After each point (DESIGN.md §10.1): OUT/sweep.json with the points so far, "complete": false, the
+// fits over those points and no claims (they need every value of γ), so a run cut short keeps
+// what it measured. Nothing before the first point is timed.
+void write_partial_sweep(const MeasuredSweep& m, const SweepContext& ctx, const nlohmann::json& schema,
+                         const SweepOptions& o) {
+  if (m.points.empty()) return;
+  const ojson doc = checked_sweep_json(m, sweep_fits(m), ctx, {}, schema, o);
+  std::filesystem::create_directories(o.out_dir);
+  write_text_atomic(o.out_dir / "sweep.json", doc.dump(2) + "\n");
+}
+
 }  // namespace
 
 std::filesystem::path sweep_capture_dir(const std::filesystem::path& root, const std::string& scene,
@@ -101,6 +132,7 @@ SweepOutcome run_sweep(Device& device, const SweepOptions& o, const std::functio
   m.axes = o.axes;
   m.generators = o.tables.generators;
   m.time_budget_s = o.time_budget_s;
+  m.complete = false;  // until every point is reached
   // The capture of the last point: consecutive points of one size share it.
   bool holding = false;  // whether `held` is the capture of `held_sizes`
   RecordSizes held_sizes{};
@@ -187,38 +219,35 @@ SweepOutcome run_sweep(Device& device, const SweepOptions& o, const std::functio
               " is beyond the device: " + e.what(),
           i);
       m.beyond_device.push_back(BeyondDevicePoint{points[i], "", "", e.what()});
+      write_partial_sweep(m, ctx, schema, o);
       continue;
     }
     m.points.push_back(std::move(r));
+    write_partial_sweep(m, ctx, schema, o);
   }
   if (m.points.size() < 2) {
     std::string why;
     for (const BeyondDevicePoint& b : m.beyond_device) why += "\n  " + b.reason;
     throw DeviceError("sweep: only " + std::to_string(m.points.size()) + " of " + std::to_string(points.size()) +
-                      " points fit " + device.info().name + ", and a sweep needs 2; the others are beyond it:" + why);
+                      " points fit " + device.info().name + ", and a sweep needs 2; the others are beyond it:" + why +
+                      (m.points.empty() ? std::string()
+                                        : "\n" + (o.out_dir / "sweep.json").string() +
+                                              " keeps the point timed, marked \"complete\": false"));
   }
 
+  m.complete = true;
   SweepOutcome out;
   out.fits = sweep_fits(m);
   out.claims = judge_pdf_independence(m, out.fits);
-  try {
-    out.document = sweep_json(m, out.fits, ctx, out.claims);
-    require_finite_numbers(out.document);
-  } catch (const std::invalid_argument& e) {
-    throw DeviceError(std::string("sweep: ") + e.what());
-  }
-  const auto problems = validate_against_schema(nlohmann::json::parse(out.document.dump()), schema);
-  if (!problems.empty()) {
-    std::string all;
-    for (const auto& p : problems) all += "\n  " + p;
-    throw std::logic_error("the sweep does not conform to " + o.schema.string() + ":" + all);
-  }
+  out.document = checked_sweep_json(m, out.fits, ctx, out.claims, schema, o);
   out.markdown = sweep_markdown(m, out.fits, out.claims);
+  // The markdown and plots first, the complete sweep.json last: "complete": true on disk means
+  // every file of the sweep is written.
   std::vector<std::pair<std::filesystem::path, std::string>> files;
-  files.emplace_back(o.out_dir / "sweep.json", out.document.dump(2) + "\n");
   files.emplace_back(o.out_dir / "sweep.md", out.markdown);
   for (auto& [name, svg] : sweep_plots(m, out.fits, &ctx.paper)) files.emplace_back(o.out_dir / name, std::move(svg));
-  // Nothing is written until every file is complete and valid.
+  files.emplace_back(o.out_dir / "sweep.json", out.document.dump(2) + "\n");
+  // Nothing of the complete sweep is written until every file is complete and valid.
   std::filesystem::create_directories(o.out_dir);
   for (const auto& [path, text] : files) {
     write_text_atomic(path, text);

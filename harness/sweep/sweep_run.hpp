@@ -3,7 +3,8 @@
 // capture provisioning, uploads, recorded cases and interleaved timing, report/table_measurement.hpp)
 // at every point of the product of one or more axes, then the growth fits, and OUT/sweep.json
 // (validated against results/schema/sweep.schema.json), OUT/sweep.md and the SVG plots, written
-// atomically and only once everything is complete.
+// atomically once everything is complete. Before that, OUT/sweep.json is rewritten after each point
+// with the points so far and "complete": false, so a run cut short keeps what it measured.
 #include <filesystem>
 #include <functional>
 #include <optional>
