@@ -7,6 +7,7 @@
 #include "harness/capture/capture_sidecar.hpp"
 #include "harness/core/atomic_file.hpp"
 #include "harness/core/error.hpp"
+#include "harness/core/embedded_files.hpp"
 #include "harness/core/json_schema_subset.hpp"
 #include "harness/generators/generator_registry.hpp"
 #include "harness/report/run_context.hpp"
@@ -96,8 +97,9 @@ TableScene table_scene(int table, const SceneLibrary& library) {
   if (table != 1 && table != 2)
     throw UsageError("there is no paper table " + std::to_string(table) + " with timings (tables are 1 and 2)");
   const std::string stand_in = table == 1 ? "atrium" : "conference";
-  for (const std::string& name : scene_preset_names(library.preset_dir)) {
-    const ScenePreset preset = read_scene_preset(library.preset_dir / (name + ".json"));
+  for (const ScenePresetFile& file : library.presets) {
+    const ScenePreset preset = parse_scene_preset(file);
+    const std::string& name = preset.name;
     if (preset.paper_table != static_cast<uint32_t>(table)) continue;
     try {
       find_preset_model(preset, library.assets);
@@ -158,7 +160,7 @@ TablesOutcome run_tables(Device& device, const TablesOptions& o, const std::func
       std::string all;
       for (const auto& p : problems) all += "\n  " + p;
       throw std::logic_error("table " + table_file_stem(measured[i].table.number, measured[i].table.scene) +
-                             " does not conform to " + o.schema.string() + ":" + all);
+                             " does not conform to " + file_or_built_in_name(o.schema, kTableSchemaFile) + ":" + all);
     }
     const std::string stem = table_file_stem(measured[i].table.number, measured[i].table.scene);
     files.emplace_back(o.out_dir / (stem + ".json"), doc.dump(2) + "\n");
