@@ -115,7 +115,9 @@ TEST(RunProvenance, TheJsonAndVersionNameTheBuildsCommitAndCompiler) {
   EXPECT_EQ(j.at("git_dirty"), b.git_dirty);
   EXPECT_EQ(j.at("compiler"), compiler_description());
   EXPECT_FALSE(b.git_commit.empty());
-  if (b.git_commit == "unknown") EXPECT_FALSE(b.git_note.empty());
+  if (b.git_commit == "unknown") {
+    EXPECT_FALSE(b.git_note.empty());
+  }
   const std::string v = version_text("vsgl-bench");
   EXPECT_NE(v.find("commit " + b.git_commit), std::string::npos) << v;
   EXPECT_NE(v.find("compiler " + compiler_description()), std::string::npos) << v;
