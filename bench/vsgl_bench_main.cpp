@@ -13,13 +13,15 @@
 #include "bench/cli/exit_codes.hpp"
 #include "harness/core/error.hpp"
 #include "harness/core/program_name.hpp"
-#include "harness/core/version.hpp"
+#include "harness/core/build_info.hpp"
 
 namespace {
 
 int dispatch(int argc, char** argv) {
   CLI::App app("vsgl-bench: GPU timing of VSGL generators (Tokuyoshi 2016, Tables 1-3)", "vsgl-bench");
-  app.set_version_flag("--version", std::string("vsgl-bench ") + vsgl::kVersionString);
+  // The version, the commit the build was made from (and whether it was dirty) and the compiler,
+  // as fixed at build time (harness/core/build_info.hpp): true wherever the binary was copied.
+  app.set_version_flag("--version", vsgl::version_text("vsgl-bench"));
   app.footer(vsgl::cli::exit_codes_help());  // inherited by every command's help
   // A repeated single-value option keeps its last value, as before; list options say so.
   app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);

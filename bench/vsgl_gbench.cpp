@@ -48,7 +48,7 @@
 #include "harness/generators/generator_registry.hpp"
 #include "harness/timing/run_provenance.hpp"
 #include "harness/report/capture_scene_identity.hpp"
-#include "harness/report/checkout_scenes.hpp"
+#include "harness/scene/named_scene.hpp"
 #include "harness/report/tables_run.hpp"
 #include "harness/timing/timing_runner.hpp"
 
@@ -124,7 +124,7 @@ int run(int argc, char** argv) {
   Device& device = session.device();
   const DeviceInfo& info = device.info();
   require_timestamps(info);
-  const nlohmann::json build = build_json(VSGL_SOURCE_DIR);
+  const nlohmann::json build = build_json();
   benchmark::AddCustomContext("vsgl_device", info.name);
   benchmark::AddCustomContext("vsgl_device_type", device_type_name(info.type));
   benchmark::AddCustomContext("vsgl_driver", info.driver_name + " " + driver_version_string(info) + " " + info.driver_info);
@@ -145,7 +145,7 @@ int run(int argc, char** argv) {
 
   // The inputs: the paper's tables (recorded when missing), or the captures given (loaded).
   std::vector<std::unique_ptr<TableState>> tables;
-  const SceneLibrary library = checkout_scene_library({o.assets.begin(), o.assets.end()});
+  const SceneLibrary library = default_scene_library({o.assets.begin(), o.assets.end()});
   std::vector<std::tuple<int, std::filesystem::path, TableScene>> inputs;
   for (int number : o.tables) {
     TableScene scene = table_scene(number, library);

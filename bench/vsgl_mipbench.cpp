@@ -30,7 +30,7 @@
 #include "harness/core/program_name.hpp"
 #include "harness/generators/device_view.hpp"
 #include "harness/generators/fis/fis_generator.hpp"
-#include "harness/report/checkout_scenes.hpp"
+#include "harness/scene/named_scene.hpp"
 #include "harness/report/tables_run.hpp"
 #include "harness/scene/capture_provisioning.hpp"
 #include "harness/timing/run_provenance.hpp"
@@ -100,14 +100,14 @@ int run(int argc, char** argv) {
   require_timestamps(info);
   if (const std::string why = texture_path_unsupported_reason(info); !why.empty())
     throw DeviceError("the texture path cannot run on " + info.name + ": " + why);
-  const nlohmann::json build = build_json(VSGL_SOURCE_DIR);
+  const nlohmann::json build = build_json();
   benchmark::AddCustomContext("vsgl_device", info.name);
   benchmark::AddCustomContext("vsgl_device_type", device_type_name(info.type));
   benchmark::AddCustomContext("vsgl_driver", info.driver_name + " " + driver_version_string(info) + " " + info.driver_info);
   benchmark::AddCustomContext("vsgl_git_commit", build["git_commit"].get<std::string>());
   benchmark::AddCustomContext("vsgl_default_mipmapping", mip_strategy_name(default_mip_strategy(info)));
 
-  const SceneLibrary library = checkout_scene_library({assets.begin(), assets.end()});
+  const SceneLibrary library = default_scene_library({assets.begin(), assets.end()});
   std::vector<std::unique_ptr<TableState>> states;
   for (int number : tables) {
     auto t = std::make_unique<TableState>();

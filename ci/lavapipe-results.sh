@@ -18,7 +18,9 @@
 # the sweeps named.
 # Usage: bash ci/lavapipe-results.sh [--stand-ins] [STEP...]   steps: record verify tables quality
 #        shade compare sweep dashboard (default: all, in that order). VSGL_BENCH=path/to/vsgl-bench to pick
-#        a build; --assets DIR is passed on to record (repeatable).
+#        a build; --assets DIR is passed on to record and sweep (repeatable): the paper's scenes' models
+#        are looked for there and in VSGL_ASSETS, never beside the checkout, so one of the two is
+#        needed unless --stand-ins.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bench=${VSGL_BENCH:-build/release/bench/vsgl-bench}
@@ -36,6 +38,10 @@ while [[ $# -gt 0 ]]; do
   shift
 done
 [[ ${#steps[@]} -gt 0 ]] || steps=(record verify tables quality shade compare sweep dashboard)
+if [[ $out == results/lavapipe && ${#assets[@]} -eq 0 && -z ${VSGL_ASSETS:-} && " ${steps[*]} " =~ " "(record|sweep)" " ]]; then
+  echo "ci/lavapipe-results.sh: where are the paper's scenes? pass --assets DIR or set VSGL_ASSETS (DIR/sponza, DIR/conference), or use --stand-ins" >&2
+  exit 2
+fi
 [[ -x "$bench" ]] || { echo "ci/lavapipe-results.sh: no $bench (build it: cmake --preset release && cmake --build --preset release)" >&2; exit 2; }
 # Only lavapipe: these are the lavapipe results (a GPU run goes to results/<its slug>).
 export VK_ICD_FILENAMES=${VK_ICD_FILENAMES:-/usr/share/vulkan/icd.d/lvp_icd.x86_64.json}

@@ -13,4 +13,8 @@ cmake --preset release
 cmake --build --preset release --target vsgl-bench   # the tests are ci/test.sh's job
 bin=build/release/bench/vsgl-bench
 "$bin" devices
+# The models are looked for under --assets and VSGL_ASSETS (and assets/ here), never beside the checkout.
+if [[ -z ${VSGL_ASSETS:-} && " $* " != *" --assets"* && ! -d assets ]]; then
+  echo "ci/reproduce.sh: no --assets DIR and no VSGL_ASSETS: without the paper's scene models the tables time the procedural stand-ins" >&2
+fi
 "$bin" tables "$@"

@@ -1,6 +1,7 @@
 // Scene presets (harness/scene/scene_preset.hpp), the asset search path, and the capture cache of
-// named scenes: parsing and refusals without a device; the paper scenes recorded at reduced size
-// when their models are beside the checkout (../shared/scenes), else skipped by name.
+// named scenes: parsing and refusals without a device; the presets built in are the checkout's;
+// the paper scenes recorded at reduced size when their models are on VSGL_ASSETS (ctest sets it
+// from VSGL_TEST_ASSETS), else skipped by name.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -9,8 +10,9 @@
 
 #include "gpu_test.hpp"
 #include "harness/capture/capture_files.hpp"
+#include "harness/core/embedded_files.hpp"
 #include "harness/core/error.hpp"
-#include "harness/report/checkout_scenes.hpp"
+#include "harness/scene/named_scene.hpp"
 #include "harness/report/tables_run.hpp"
 #include "harness/scene/asset_search.hpp"
 #include "harness/scene/capture_provisioning.hpp"
@@ -50,7 +52,8 @@ std::string input_error_of(const std::function<void()>& f) {
 }
 
 TEST(ScenePresets, TheCommittedPresetsParseAndNameThePaperTables) {
-  EXPECT_EQ(scene_preset_names(kPresetDir), (std::vector<std::string>{"conference-room", "sponza"}));
+  EXPECT_EQ(scene_preset_names(scene_preset_files(kPresetDir)),
+            (std::vector<std::string>{"conference-room", "sponza"}));
   const ScenePreset sponza = read_scene_preset(kPresetDir / "sponza.json");
   EXPECT_EQ(sponza.paper_table, 1u);
   EXPECT_EQ(sponza.sizes.gbuffer_width, 1920u);
@@ -58,6 +61,21 @@ TEST(ScenePresets, TheCommittedPresetsParseAndNameThePaperTables) {
   const ScenePreset room = read_scene_preset(kPresetDir / "conference-room.json");
   EXPECT_EQ(room.paper_table, 2u);
   EXPECT_FLOAT_EQ(*room.light.cone_half_angle_deg, 35.0f);
+}
+
+// The programs read the presets built into them, never the checkout: the same files, byte for byte
+// (a stale build fails here), found by name without any directory.
+TEST(ScenePresets, TheBuiltInPresetsAreTheCheckoutsFiles) {
+  const std::vector<ScenePresetFile> built_in = built_in_scene_presets();
+  const std::vector<ScenePresetFile> checkout = scene_preset_files(kPresetDir);
+  ASSERT_EQ(scene_preset_names(built_in), scene_preset_names(checkout));
+  for (std::size_t i = 0; i < built_in.size(); ++i) {
+    EXPECT_EQ(built_in[i].text, checkout[i].text) << built_in[i].name << ": rebuild to embed the edited preset";
+    EXPECT_EQ(built_in[i].origin, "harness/scene/presets/" + built_in[i].name + ".json (built in)");
+  }
+  const ScenePreset sponza = find_scene_preset(default_scene_library({}).presets, "sponza");
+  EXPECT_EQ(sponza.paper_table, 1u);
+  EXPECT_EQ(sponza.origin, "harness/scene/presets/sponza.json (built in)");
 }
 
 TEST(ScenePresets, UnknownKeysAndBadValuesAreRefusedNamingTheKey) {
@@ -87,13 +105,15 @@ TEST(ScenePresets, UnknownKeysAndBadValuesAreRefusedNamingTheKey) {
 TEST(ScenePresets, AMissingModelListsEveryPlaceLookedAndWhereToGetIt) {
   test::TempDir tmp("assets");
   const ScenePreset p = read_scene_preset(write_preset(tmp.path() / "presets", "x", preset_text("x")));
-  const AssetSearch search = make_asset_search({tmp.path() / "a"}, "/nowhere/b::/nowhere/c", tmp.path() / "checkout");
-  ASSERT_EQ(search.dirs.size(), 5u);
+  const AssetSearch search = make_asset_search({tmp.path() / "a"}, "/nowhere/b::/nowhere/c");
+  // Nothing beside the checkout: --assets, VSGL_ASSETS, then assets/ in the current directory.
+  ASSERT_EQ(search.dirs.size(), 4u);
   EXPECT_EQ(search.dirs[1].origin, "VSGL_ASSETS");
-  EXPECT_EQ(search.dirs[4].dir, (tmp.path() / "shared" / "scenes").lexically_normal());
+  EXPECT_EQ(search.dirs[3].dir, fs::path("assets"));
+  EXPECT_EQ(search.dirs[3].origin, "assets/ in the current directory");
   const std::string what = input_error_of([&] { find_preset_model(p, search); });
-  for (const char* place : {"/a/m/room.obj", "/nowhere/b/m/room.obj", "/nowhere/c/m/room.obj", "checkout/assets/m",
-                            "shared/scenes/m/room.obj", "the test writes it"})
+  for (const char* place :
+       {"/a/m/room.obj", "/nowhere/b/m/room.obj", "/nowhere/c/m/room.obj", "assets/m/room.obj", "the test writes it"})
     EXPECT_NE(what.find(place), std::string::npos) << place << " in: " << what;
   // Found in the second directory once it is there.
   fs::create_directories(tmp.path() / "a" / "m");
@@ -102,14 +122,14 @@ TEST(ScenePresets, AMissingModelListsEveryPlaceLookedAndWhereToGetIt) {
 }
 
 TEST(ScenePresets, UnknownSceneNamesListTheProceduralScenesAndThePresets) {
-  const std::string what = input_error_of([] { find_scene_preset(kPresetDir, "nosuch"); });
+  const std::string what = input_error_of([] { find_scene_preset(built_in_scene_presets(), "nosuch"); });
   for (const char* name : {"atrium", "tiny", "sponza", "conference-room"})
     EXPECT_NE(what.find(name), std::string::npos) << what;
 }
 
 TEST(ScenePresets, ATableUsesItsStandInWhenThePaperModelIsMissing) {
   test::TempDir tmp("standin");
-  const SceneLibrary nowhere{kPresetDir, AssetSearch{{{tmp.path() / "empty", "--assets"}}}};
+  const SceneLibrary nowhere{built_in_scene_presets(), AssetSearch{{{tmp.path() / "empty", "--assets"}}}};
   const TableScene t1 = table_scene(1, nowhere);
   EXPECT_EQ(t1.scene, "atrium");
   EXPECT_FALSE(t1.paper);
@@ -135,13 +155,14 @@ TEST_F(ScenePresetsTest, AStaleCaptureIsReRecordedAndAFreshOneReused) {
 }
 
 TEST_F(ScenePresetsTest, BothPaperScenesRecordAtReducedSizeWhenTheirModelsAreHere) {
-  const SceneLibrary library = checkout_scene_library({});
+  const SceneLibrary library = default_scene_library({});
   for (const char* name : {"sponza", "conference-room"}) {
-    const ScenePreset preset = find_scene_preset(library.preset_dir, name);
+    const ScenePreset preset = find_scene_preset(library.presets, name);
     try {
       find_preset_model(preset, library.assets);
     } catch (const InputError&) {
-      GTEST_SKIP() << "the paper scene " << name << " is not beside this checkout (../shared/scenes)";
+      GTEST_SKIP() << "the paper scene " << name
+                   << "'s model is not on VSGL_ASSETS (ctest sets it from the cache variable VSGL_TEST_ASSETS)";
     }
     test::TempDir tmp(name);
     const NamedScene scene = load_named_scene(name, library);

@@ -14,7 +14,7 @@
 #include "harness/core/json_schema_subset.hpp"
 #include "harness/formats/sweep_model.hpp"
 #include "harness/generators/vsgl_generator.hpp"
-#include "harness/report/checkout_scenes.hpp"
+#include "harness/scene/named_scene.hpp"
 #include "harness/sweep/sweep_run.hpp"
 
 namespace vsgl {
@@ -28,7 +28,7 @@ SweepOptions tiny_sweep(const fs::path& root, const std::string& axis) {
   SweepOptions o;
   o.axes = {parse_axis_spec(axis)};
   o.scene = "tiny";
-  o.scenes = checkout_scene_library({});
+  o.scenes = default_scene_library({});
   o.captures_dir = root / "captures";
   o.record_sizes = RecordSizes{96, 64, 64};
   o.out_dir = root / "out";
@@ -83,7 +83,8 @@ TEST_F(SweepRunTest, CasesAndPointsBeyondTheDeviceAreRecordedAndTheRestIsTimed) 
   EXPECT_NE(out.markdown.find(" beyond |"), std::string::npos) << "the missing cell is said, the columns stay aligned";
 
   const fs::path file = o.out_dir / "sweep.json";
-  const auto problems = validate_against_schema(test::read_json(file), test::read_json(o.schema));
+  const auto problems =
+      validate_against_schema(test::read_json(file), test::read_json(fs::path(VSGL_SOURCE_DIR) / kSweepSchemaFile));
   EXPECT_TRUE(problems.empty()) << problems.front();
   const SweepModel model = read_sweep_file(file);
   EXPECT_TRUE(model.complete);

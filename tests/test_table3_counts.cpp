@@ -2,16 +2,20 @@
 // harness/core/source_lines.hpp (nested, alternatives, unbalanced, unknown, malformed), the line
 // diff of harness/core/line_diff.hpp, the real generators' counts (the FIS variants differ by a
 // few lines, the default path leaves the other paths' regions out) and the per-iteration split of
-// the k-means dispatches. The split on recorded commands: tests/test_timing_runner.cpp.
+// the k-means dispatches, and the sources built into the program (what `tables` counts) being
+// exactly the checkout's files that some config counts. The split on recorded commands:
+// tests/test_timing_runner.cpp.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <stdexcept>
 #include <string>
 
 #include "test_support.hpp"
+#include "harness/core/embedded_files.hpp"
 #include "harness/core/error.hpp"
 #include "harness/core/line_diff.hpp"
 #include "harness/core/source_lines.hpp"
@@ -191,6 +195,50 @@ TEST(Table3Counts, DefaultPathLeavesTheOtherPathsRegionsOut) {
   for (const auto& g : generator_names())
     for (const GeneratorConfig* c : {&blit, &buffer})
       EXPECT_GT(count_generator_lines(generator_sources(g, *c), VSGL_SOURCE_DIR).total, 100u) << g;
+}
+
+// `tables` counts the files built in (core/embedded_files.hpp), so that a copied binary needs no
+// checkout: under every config each generator's count from them equals the checkout's, line for
+// line (a stale build fails here), and the files built in for Table 3 (harness/CMakeLists.txt,
+// VSGL_TABLE3_FILES) are exactly those some config counts, none missing and none extra.
+TEST(Table3Counts, TheBuiltInSourcesAreExactlyTheCountedCheckoutFiles) {
+  std::vector<GeneratorConfig> configs;
+  for (const PyramidPath path : {PyramidPath::kTexture, PyramidPath::kBuffer})
+    for (const MipStrategy mip : {MipStrategy::kSinglePass, MipStrategy::kPerLevel, MipStrategy::kBlit}) {
+      GeneratorConfig c;
+      c.pyramid = path;
+      c.mipmapping = mip;
+      configs.push_back(c);
+    }
+  const SourceTree built_in = built_in_source_tree();
+  std::set<std::string> counted;
+  for (const auto& g : generator_names())
+    for (const GeneratorConfig& c : configs) {
+      const GeneratorLines checkout = count_generator_lines(generator_sources(g, c), VSGL_SOURCE_DIR);
+      const GeneratorLines embedded = count_generator_lines(generator_sources(g, c), built_in);
+      EXPECT_EQ(embedded.total, checkout.total) << g << ": rebuild to embed the edited sources";
+      EXPECT_EQ(embedded.host, checkout.host) << g;
+      EXPECT_EQ(embedded.shader, checkout.shader) << g;
+      EXPECT_EQ(embedded.code, checkout.code) << g;
+      for (const CountedFile& f : checkout.files) counted.insert(f.path);
+    }
+  std::set<std::string> embedded;
+  for (const char* under : {"harness/", "kernels/"})
+    for (const std::string& name : embedded_file_names(under))
+      if (name.rfind("harness/scene/presets/", 0) != 0) embedded.insert(name);
+  for (const std::string& f : counted)
+    EXPECT_TRUE(embedded.count(f)) << f << " is counted but not in VSGL_TABLE3_FILES";
+  for (const std::string& f : embedded)
+    EXPECT_TRUE(counted.count(f)) << f << " is in VSGL_TABLE3_FILES but never counted";
+  // A file that was not built in is an InputError that names it, not a zero.
+  SourceSet missing = generator_sources("fis_modified");
+  missing.host.push_back("harness/generators/no_such_file.cpp");
+  try {
+    (void)count_generator_lines(missing, built_in);
+    ADD_FAILURE() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("no_such_file.cpp (built in)"), std::string::npos) << e.what();
+  }
 }
 
 TEST(Table3Dispatches, IterationsTimesPerIterationPlusOutsideIsTheTotal) {

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,22 +30,23 @@ Command add_dashboard_command(CLI::App& parent) {
   struct Options {
     std::string results;
     std::string out;
-    std::string paper = (std::filesystem::path(VSGL_SOURCE_DIR) / "results/paper/paper_tables.json").string();
+    std::optional<std::string> paper;  // none: the copy built in
   };
   auto o = std::make_shared<Options>();
   app->add_option("RESULTS_DIR", o->results,
                   "directory searched for table JSON (tableN.json) and sweep JSON (sweep.json)")
       ->required();
   app->add_option("--out", o->out, "output directory")->required()->type_name("DIR");
-  app->add_option("--paper", o->paper, "the paper's tables")
+  add_optional(*app, "--paper", o->paper, "the paper's tables (default: the copy built into vsgl-bench)")
       ->check(input_file("--paper"))
-      ->default_str("results/paper/paper_tables.json");
+      ->default_str("built-in results/paper/paper_tables.json");
   return {app, [o] {
             const std::vector<BenchRun> runs = find_table_runs(o->results);
             const std::vector<SweepRun> sweeps = find_sweep_runs(o->results);
             if (runs.empty() && sweeps.empty())
               throw InputError(o->results + ": no table JSON (tableN.json) and no sweep JSON (sweep.json) found");
-            const nlohmann::json paper = load_paper_tables(o->paper);
+            const nlohmann::json paper =
+                paper_tables_or_built_in(o->paper ? std::optional<std::filesystem::path>(*o->paper) : std::nullopt);
             std::filesystem::create_directories(o->out);
             const std::filesystem::path page = std::filesystem::path(o->out) / "index.html";
             write_text_atomic(page, dashboard_html(runs, paper, o->results, dashboard_generators(), sweeps));

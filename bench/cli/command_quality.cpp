@@ -34,7 +34,6 @@ int run_quality_command(QualityOptions& o) {
   const std::string* capture_arg = &o.capture;
   QualityConfig& config = o.config;
   const std::filesystem::path out_root = o.out;
-  config.source_dir = VSGL_SOURCE_DIR;
   config.k_sweep.clear();
   for (const auto& item : o.k_sweep) config.k_sweep.push_back(std::stof(item));
   if (config.sequence) (void)sequence_frames(*config.sequence, config.frames);  // fail before the long work

@@ -15,7 +15,7 @@
 #include "bench/cli/gpu_session.hpp"
 #include "harness/core/error.hpp"
 #include "harness/scene/capture_provisioning.hpp"
-#include "harness/report/checkout_scenes.hpp"
+#include "harness/scene/named_scene.hpp"
 #include "harness/scene/gltf_scene.hpp"
 #include "harness/scene/model_scene.hpp"
 #include "harness/scene/scene_preset.hpp"
@@ -141,7 +141,7 @@ int record_model_file(RecordOptions& o, GpuSession& session, const std::string& 
 int run_record(RecordOptions& o) {
   // Every named scene is resolved (presets read, models found) before the device is opened, so a
   // missing model is an input error that writes nothing.
-  const SceneLibrary library = checkout_scene_library({o.assets.begin(), o.assets.end()});
+  const SceneLibrary library = default_scene_library({o.assets.begin(), o.assets.end()});
   const auto names = o.scenes.empty() ? std::vector<std::string>{"atrium"} : o.scenes;
   if (!o.gltf && !o.model)
     for (const auto& name : names)
@@ -178,8 +178,7 @@ Command add_record_command(CLI::App& parent) {
       "builds the BRSM PDF of the RSM from " + std::to_string(kBrsmCameraVsgls) + " camera-view VSGLs");
   auto o = std::make_shared<RecordOptions>();
   std::string presets;
-  for (const auto& name : scene_preset_names(checkout_scene_library({}).preset_dir))
-    presets += (presets.empty() ? "" : ", ") + name;
+  for (const auto& name : scene_preset_names(built_in_scene_presets())) presets += (presets.empty() ? "" : ", ") + name;
   auto* scene = add_list_option(*app, "--scene", o->scenes,
                                 "scene(s): the paper's scenes as presets (" + presets +
                                     "; models found through --assets) or the procedural stand-ins atrium (Table 1), "

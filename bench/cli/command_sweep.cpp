@@ -16,7 +16,7 @@
 #include "bench/cli/option_types.hpp"
 #include "harness/core/error.hpp"
 #include "harness/generators/generator_registry.hpp"
-#include "harness/report/checkout_scenes.hpp"
+#include "harness/scene/named_scene.hpp"
 #include "harness/sweep/sweep_run.hpp"
 #include "harness/timing/run_provenance.hpp"
 
@@ -56,7 +56,7 @@ int run_sweep_command(const SweepCommandOptions& c) {
                        "--capture");
   if (c.capture) o.capture = std::filesystem::path(*c.capture);
   if (c.scene) o.scene = *c.scene;
-  o.scenes = checkout_scene_library({c.assets.begin(), c.assets.end()});
+  o.scenes = default_scene_library({c.assets.begin(), c.assets.end()});
   o.captures_dir = c.captures;
   o.record_sizes = RecordSizes{c.gbuffer.first, c.gbuffer.second, c.rsm};
   o.time_budget_s = c.time_budget;
@@ -169,9 +169,9 @@ Command add_sweep_command(CLI::App& parent) {
   CLI::App* generators = app->add_option_group("generators", "what is timed (an axis overrides its parameter)");
   add_generator_options(*generators, o->gen);
   app->add_flag("--clocks-locked", o->clocks_locked, "record that you locked the GPU clocks (Vulkan cannot)");
-  add_optional(*app, "--schema", o->schema, "the sweep JSON schema")
+  add_optional(*app, "--schema", o->schema, "the sweep JSON schema (default: the copy built into vsgl-bench)")
       ->check(input_file("--schema"))
-      ->default_str("results/schema/sweep.schema.json");
+      ->default_str("built-in results/schema/sweep.schema.json");
   app->add_flag("--no-progress", o->no_progress, "no progress line (it is off anyway when stderr is not a terminal)");
   add_device_options(*app, o->device);
   (void)scene;

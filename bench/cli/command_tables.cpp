@@ -16,7 +16,7 @@
 #include "harness/core/error.hpp"
 #include "harness/timing/run_provenance.hpp"
 #include "harness/generators/generator_registry.hpp"
-#include "harness/report/checkout_scenes.hpp"
+#include "harness/scene/named_scene.hpp"
 #include "harness/report/tables_run.hpp"
 
 namespace vsgl::cli {
@@ -49,7 +49,7 @@ int run_tables_command(const TablesCommandOptions& c) {
   TablesOptions o;
   const bool quick = c.quick;
   o.captures_dir = c.captures;
-  o.scenes = checkout_scene_library({c.assets.begin(), c.assets.end()});
+  o.scenes = default_scene_library({c.assets.begin(), c.assets.end()});
   o.record_sizes = RecordSizes{c.gbuffer.first, c.gbuffer.second, c.rsm};
   for (const auto& d : c.capture_dirs) o.captures.emplace_back(d);
   o.tables.clear();
@@ -177,12 +177,12 @@ Command add_tables_command(CLI::App& parent) {
   add_generator_options(*generators, o->gen);
   app->add_flag("--json-only", o->json_only, "write no markdown file (the console still shows the tables)");
   app->add_flag("--clocks-locked", o->clocks_locked, "record that you locked the GPU clocks (Vulkan cannot)");
-  add_optional(*app, "--paper", o->paper, "the paper's tables")
+  add_optional(*app, "--paper", o->paper, "the paper's tables (default: the copy built into vsgl-bench)")
       ->check(input_file("--paper"))
-      ->default_str("results/paper/paper_tables.json");
-  add_optional(*app, "--schema", o->schema, "the table JSON schema")
+      ->default_str("built-in results/paper/paper_tables.json");
+  add_optional(*app, "--schema", o->schema, "the table JSON schema (default: the copy built into vsgl-bench)")
       ->check(input_file("--schema"))
-      ->default_str("results/schema/table.schema.json");
+      ->default_str("built-in results/schema/table.schema.json");
   app->add_flag("--no-progress", o->no_progress, "no progress line (it is off anyway when stderr is not a terminal)");
   add_list_option(*app, "--debug-slow", o->debug_slow,
                   "TEST-ONLY: extra work in these generators' last phase (to test `compare`; marked in the JSON)",

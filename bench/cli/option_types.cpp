@@ -159,8 +159,8 @@ CLI::Option* add_list_option(CLI::App& app, const std::string& name, std::vector
 
 CLI::Option* add_assets_option(CLI::App& app, std::vector<std::string>& target, const OptionNames& names) {
   return add_list_option(app, names("assets"), target,
-                         "also look for the scene presets' models here, before VSGL_ASSETS, assets/ and "
-                         "../shared/scenes (repeatable)",
+                         "look for the scene presets' models here, before VSGL_ASSETS and assets/ in the current "
+                         "directory (repeatable)",
                          CLI::Validator([](std::string&) { return std::string(); }, "DIR"));
 }
 

@@ -17,10 +17,14 @@ nlohmann::ordered_json read_json_file(const std::filesystem::path& path, const s
   if (!in) throw InputError(path.string() + ": cannot read " + what + hint);
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   if (in.bad()) throw InputError(path.string() + ": cannot read " + what + hint);
+  return parse_json_text(text, path.string(), what);
+}
+
+nlohmann::ordered_json parse_json_text(std::string_view text, const std::string& name, const std::string& what) {
   try {
     return nlohmann::ordered_json::parse(text);
   } catch (const nlohmann::json::exception& e) {
-    throw InputError(path.string() + ": " + what + " is not valid JSON (truncated or corrupt?): " + printable_text(e.what()));
+    throw InputError(name + ": " + what + " is not valid JSON (truncated or corrupt?): " + printable_text(e.what()));
   }
 }
 

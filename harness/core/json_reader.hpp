@@ -17,6 +17,9 @@ namespace vsgl {
 // schema"); `hint` is appended to a read failure (" (use --paper FILE)"). Throws InputError.
 nlohmann::ordered_json read_json_file(const std::filesystem::path& path, const std::string& what, const std::string& hint = "");
 
+// Parses text already read (an embedded file, core/embedded_files.hpp); `name` says where it came from.
+nlohmann::ordered_json parse_json_text(std::string_view text, const std::string& name, const std::string& what);
+
 // How a place in a document is written in messages: dotted keys (`key "camera.position[2]"`,
 // the sidecar's) or JSON pointers (`/generators/fis_tok15/total`, the runs').
 enum class JsonPathStyle { kDottedKey, kPointer };

@@ -6,6 +6,7 @@
 #include <set>
 #include <sstream>
 
+#include "harness/core/embedded_files.hpp"
 #include "harness/core/error.hpp"
 
 namespace vsgl {
@@ -95,12 +96,11 @@ std::string known_regions(const std::map<std::string, bool>& regions) {
   return s;
 }
 
-std::string read_source(const std::filesystem::path& source_dir, const std::string& rel) {
-  std::ifstream in(source_dir / rel, std::ios::binary);
-  if (!in) throw InputError((source_dir / rel).string() + ": cannot read a source file of a generator (Table 3 lines of code)");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+std::string read_source(const SourceTree& tree, const std::string& rel) {
+  std::optional<std::string> text = tree.read(rel);
+  if (!text)
+    throw InputError(rel + " (" + tree.where + "): cannot read a source file of a generator (Table 3 lines of code)");
+  return std::move(*text);
 }
 
 }  // namespace
@@ -162,14 +162,38 @@ std::vector<std::string> counted_code_lines(std::string_view text, const std::st
   return out;
 }
 
+SourceTree checkout_source_tree(const std::filesystem::path& dir) {
+  return SourceTree{[dir](const std::string& rel) -> std::optional<std::string> {
+                      std::ifstream in(dir / rel, std::ios::binary);
+                      if (!in) return std::nullopt;
+                      std::ostringstream ss;
+                      ss << in.rdbuf();
+                      return ss.str();
+                    },
+                    dir.string()};
+}
+
+SourceTree built_in_source_tree() {
+  return SourceTree{[](const std::string& rel) -> std::optional<std::string> {
+                      const std::optional<std::string_view> text = embedded_file(rel);
+                      if (!text) return std::nullopt;
+                      return std::string(*text);
+                    },
+                    "built in"};
+}
+
 GeneratorLines count_generator_lines(const SourceSet& sources, const std::filesystem::path& source_dir) {
+  return count_generator_lines(sources, checkout_source_tree(source_dir));
+}
+
+GeneratorLines count_generator_lines(const SourceSet& sources, const SourceTree& tree) {
   GeneratorLines out;
   // Includes reached from the kernels' counted lines, transitively, found as glslang finds them:
   // beside the including file first (interface/*.h include "interop.h"), then in kernels/include/.
   static const std::regex include_re(R"re(^#\s*include\s*"([^"]+)")re");
   std::set<std::string> includes;
   for (const auto& rel : sources.host) {
-    const std::vector<std::string> code = counted_code_lines(read_source(source_dir, rel), rel, sources.regions);
+    const std::vector<std::string> code = counted_code_lines(read_source(tree, rel), rel, sources.regions);
     out.files.push_back({rel, static_cast<uint32_t>(code.size()), false});
     out.host += static_cast<uint32_t>(code.size());
     out.code.insert(out.code.end(), code.begin(), code.end());
@@ -181,14 +205,15 @@ GeneratorLines count_generator_lines(const SourceSet& sources, const std::filesy
     pending.pop_back();
     const bool is_include = rel.rfind("kernels/include/", 0) == 0 &&
                             std::find(sources.kernels.begin(), sources.kernels.end(), rel) == sources.kernels.end();
-    std::vector<std::string> code = counted_code_lines(read_source(source_dir, rel), rel, sources.regions);
+    std::vector<std::string> code = counted_code_lines(read_source(tree, rel), rel, sources.regions);
     for (const std::string& line : code) {
       std::smatch m;
       if (!std::regex_search(line, m, include_re)) continue;
       const std::filesystem::path beside = std::filesystem::path(rel).parent_path() / m[1].str();
-      const std::string inc = std::filesystem::exists(source_dir / beside) && rel.rfind("kernels/include/", 0) == 0
-                                  ? beside.lexically_normal().generic_string()
-                                  : "kernels/include/" + m[1].str();
+      const std::string inc =
+          rel.rfind("kernels/include/", 0) == 0 && tree.read(beside.lexically_normal().generic_string())
+              ? beside.lexically_normal().generic_string()
+              : "kernels/include/" + m[1].str();
       if (includes.insert(inc).second) pending.push_back(inc);
     }
     (is_include ? included : kernels).emplace_back(rel, std::move(code));

@@ -14,7 +14,9 @@
 // comments and count for nothing.
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -64,9 +66,23 @@ struct GeneratorLines {
   std::vector<std::string> code;  // the counted lines in the order of `files` (counted_code_lines)
 };
 
+// Where the counted files are read from, by their path relative to the source tree.
+struct SourceTree {
+  // The text of the file `rel`; nullopt: no such file.
+  std::function<std::optional<std::string>(const std::string& rel)> read;
+  std::string where;  // for messages: a directory, or "built in"
+};
+
+// The files of a checkout at `dir` (the tests count the checkout to catch a stale embed).
+SourceTree checkout_source_tree(const std::filesystem::path& dir);
+// The files embedded at build time (core/embedded_files.hpp): what `tables` counts, so a copied
+// binary counts the sources it was built from without the checkout.
+SourceTree built_in_source_tree();
+
 // Counts the generator's files plus every kernels/include/*.glsl reached by `#include "..."` from
 // the counted lines of its kernels, transitively. Throws InputError naming a file that cannot be
-// read (e.g. --source-dir pointing at a tree without the kernels) or a bad marker.
+// read (a tree without the kernels, a build that did not embed one) or a bad marker.
+GeneratorLines count_generator_lines(const SourceSet& sources, const SourceTree& tree);
 GeneratorLines count_generator_lines(const SourceSet& sources, const std::filesystem::path& source_dir);
 
 }  // namespace vsgl

@@ -399,7 +399,7 @@ void write_header(QualityModel& out, Device& device, const Capture& capture, con
   out.capture_hashes = capture_hashes_json(capture);
   out.device_name = device.info().name;
   out.device_driver = device.info().driver_name + " " + device.info().driver_info;
-  out.build = build_json(config.source_dir);
+  out.build = build_json();
   out.version = out.build.at("vsgl_bench_version").get<std::string>();
   out.git_commit = out.build.at("git_commit").get<std::string>();
   out.git_dirty = out.build.at("git_dirty").get<bool>();

@@ -47,7 +47,6 @@ struct QualityConfig {
   std::vector<float> k_sweep = {1.0f, 2.0f, 4.0f, 8.0f};
   uint32_t coverage_picture_side = 512;
   std::optional<std::filesystem::path> sequence;  // DIR with frame_NNNN captures (vsgl-bench record --frames F)
-  std::filesystem::path source_dir;               // for the git commit in the JSON
 };
 
 struct QualityPicture {

@@ -18,6 +18,11 @@ namespace vsgl {
 // Throws InputError naming the file, the key (escaped, core/printable_text.hpp) and the problem.
 nlohmann::json load_paper_tables(const std::filesystem::path& path);
 
+// The paper's tables from `file` (--paper), or without one the copy of kPaperTablesFile built into
+// the program (core/embedded_files.hpp), checked the same way.
+inline constexpr const char* kPaperTablesFile = "results/paper/paper_tables.json";
+nlohmann::json paper_tables_or_built_in(const std::optional<std::filesystem::path>& file);
+
 // The same checks on a parsed document; `what` names it in messages.
 void check_paper_tables(const nlohmann::json& doc, const std::string& what);
 

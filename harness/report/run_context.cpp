@@ -2,6 +2,7 @@
 
 #include <ctime>
 
+#include "harness/core/embedded_files.hpp"
 #include "harness/core/json_reader.hpp"
 #include "harness/generators/fis/fis_generator.hpp"
 #include "harness/generators/generator_registry.hpp"
@@ -42,15 +43,15 @@ RunContext make_run_context(const DeviceInfo& device, const TablesOptions& o) {
   RunContext out;
   ReportContext& ctx = out.report;
   ctx.device = device;
-  ctx.paper = load_paper_tables(o.paper_tables);
-  ctx.paper_path = o.paper_tables.string();
-  out.schema = read_json_file(o.schema, "the table schema", " (use --schema FILE)");
-  ctx.build = build_json(o.source_dir);
+  ctx.paper = paper_tables_or_built_in(o.paper_tables);
+  ctx.paper_path = file_or_built_in_name(o.paper_tables, kPaperTablesFile);
+  out.schema = json_file_or_built_in(o.schema, kTableSchemaFile, "the table schema", " (use --schema FILE)");
+  ctx.build = build_json();
   ctx.run = run_json(o);
   // Table 3 counts the sources of the path this run takes (FIS: pyramid path and mip strategy).
   const GeneratorConfig resolved = resolve_fis_config(device, o.generator);
-  for (const auto& g : generator_names())
-    ctx.lines[g] = count_generator_lines(generator_sources(g, resolved), o.source_dir);
+  const SourceTree sources = o.source_dir ? checkout_source_tree(*o.source_dir) : built_in_source_tree();
+  for (const auto& g : generator_names()) ctx.lines[g] = count_generator_lines(generator_sources(g, resolved), sources);
   for (const auto& g : o.generators)
     ctx.shaders[g] = static_cast<uint32_t>(generator_sources(g, resolved).kernels.size());
   return out;

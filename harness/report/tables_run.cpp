@@ -7,6 +7,7 @@
 #include "harness/capture/capture_sidecar.hpp"
 #include "harness/core/atomic_file.hpp"
 #include "harness/core/error.hpp"
+#include "harness/core/embedded_files.hpp"
 #include "harness/core/json_schema_subset.hpp"
 #include "harness/generators/generator_registry.hpp"
 #include "harness/report/run_context.hpp"
@@ -78,7 +79,7 @@ void write_table(const TableMeasurement& m, const MeasuredTable* other, const Ru
   if (!problems.empty()) {
     std::string all;
     for (const auto& p : problems) all += "\n  " + p;
-    throw std::logic_error("table " + stem + " does not conform to " + o.schema.string() + ":" + all);
+    throw std::logic_error("table " + stem + " does not conform to " + file_or_built_in_name(o.schema, kTableSchemaFile) + ":" + all);
   }
   std::vector<std::pair<std::filesystem::path, std::string>> files;
   files.emplace_back(o.out_dir / (stem + ".json"), doc.dump(2) + "\n");
@@ -138,8 +139,9 @@ TableScene table_scene(int table, const SceneLibrary& library) {
   if (table != 1 && table != 2)
     throw UsageError("there is no paper table " + std::to_string(table) + " with timings (tables are 1 and 2)");
   const std::string stand_in = table == 1 ? "atrium" : "conference";
-  for (const std::string& name : scene_preset_names(library.preset_dir)) {
-    const ScenePreset preset = read_scene_preset(library.preset_dir / (name + ".json"));
+  for (const ScenePresetFile& file : library.presets) {
+    const ScenePreset preset = parse_scene_preset(file);
+    const std::string& name = preset.name;
     if (preset.paper_table != static_cast<uint32_t>(table)) continue;
     try {
       find_preset_model(preset, library.assets);

@@ -10,6 +10,7 @@
 // (a glTF file's, the tiny scene's) is OUT/<scene>.json and .md with "table": null.
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,11 +28,13 @@ namespace vsgl {
 
 class Device;
 
+inline constexpr const char* kTableSchemaFile = "results/schema/table.schema.json";
+
 struct TablesOptions {
   // Table N's capture is DIR/<its scene>: the preset that reproduces it (sponza, conference-room)
   // when `scenes` finds its model, else the procedural stand-in (atrium, conference).
   std::filesystem::path captures_dir = "captures";
-  SceneLibrary scenes;  // none by default: the stand-ins; the CLI passes checkout_scene_library()
+  SceneLibrary scenes;  // none by default: the stand-ins; the CLI passes default_scene_library()
   std::filesystem::path out_dir;                     // required
   std::vector<int> tables{1, 2};
   std::vector<std::filesystem::path> captures;     // --capture: time these instead (never recorded here)
@@ -42,9 +45,11 @@ struct TablesOptions {
   TimingOptions timing;
   CopyBandwidthOptions copy_bandwidth;  // the physical limit beside the passes (DESIGN.md §9), per table
   RecordSizes record_sizes;      // for captures recorded because they were missing
-  std::filesystem::path source_dir = VSGL_SOURCE_DIR;  // lines of code, git commit
-  std::filesystem::path paper_tables = std::filesystem::path(VSGL_SOURCE_DIR) / "results/paper/paper_tables.json";
-  std::filesystem::path schema = std::filesystem::path(VSGL_SOURCE_DIR) / "results/schema/table.schema.json";
+  // Inputs that are not measured; none: the copies built into the program (core/embedded_files.hpp),
+  // so that a copied binary reads nothing from its checkout.
+  std::optional<std::filesystem::path> source_dir;    // Table 3's lines of code (the tests: a checkout)
+  std::optional<std::filesystem::path> paper_tables;  // --paper; built in: results/paper/paper_tables.json
+  std::optional<std::filesystem::path> schema;        // --schema; built in: kTableSchemaFile
   bool json_only = false;       // no markdown file
   bool quick = false;           // recorded in the JSON: a CI preset, not the DESIGN.md §9 protocol
   bool validation = false;      // recorded in the JSON

@@ -8,8 +8,7 @@
 
 namespace vsgl {
 
-AssetSearch make_asset_search(const std::vector<std::filesystem::path>& cli_dirs, const char* env_assets,
-                              const std::filesystem::path& checkout) {
+AssetSearch make_asset_search(const std::vector<std::filesystem::path>& cli_dirs, const char* env_assets) {
   AssetSearch out;
   for (const auto& d : cli_dirs) out.dirs.push_back({d, "--assets"});
   std::string_view env = env_assets == nullptr ? std::string_view() : std::string_view(env_assets);
@@ -19,9 +18,7 @@ AssetSearch make_asset_search(const std::vector<std::filesystem::path>& cli_dirs
     if (!part.empty()) out.dirs.push_back({std::filesystem::path(part), "VSGL_ASSETS"});
     env = colon == std::string_view::npos ? std::string_view() : env.substr(colon + 1);
   }
-  out.dirs.push_back({checkout / "assets", "assets/ in the checkout"});
-  out.dirs.push_back(
-      {(checkout / ".." / "shared" / "scenes").lexically_normal(), "../shared/scenes beside the checkout"});
+  out.dirs.push_back({"assets", "assets/ in the current directory"});
   return out;
 }
 

@@ -1,8 +1,8 @@
 #pragma once
 // Where a scene preset's model file is looked for (DESIGN.md §3.4), in order: every --assets DIR
-// as given, then the directories of VSGL_ASSETS (separated by ':'), then assets/ inside the
-// checkout and ../shared/scenes/ beside it. Models are data: they are read from there and never
-// part of the repository.
+// as given, then the directories of VSGL_ASSETS (separated by ':'), then assets/ in the current
+// directory. Nothing depends on where the program was built, so a copied binary searches the same
+// places. Models are data: they are read from there and never part of the repository.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -20,10 +20,9 @@ struct AssetSearch {
   std::vector<AssetDirectory> dirs;  // in search order
 };
 
-// The search path from the command line's directories, the value of VSGL_ASSETS (nullptr or empty:
-// none) and the source checkout.
-AssetSearch make_asset_search(const std::vector<std::filesystem::path>& cli_dirs, const char* env_assets,
-                              const std::filesystem::path& checkout);
+// The search path from the command line's directories and the value of VSGL_ASSETS (nullptr or
+// empty: none), then assets/ in the current directory.
+AssetSearch make_asset_search(const std::vector<std::filesystem::path>& cli_dirs, const char* env_assets);
 
 // The first of the preset's model candidates that exists as a regular file, over the directories in
 // order. Throws InputError (exit 3, nothing written) when none does: it lists every place looked and

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 
 #include "harness/core/error.hpp"
 #include "harness/scene/model_scene.hpp"
@@ -37,9 +38,13 @@ Scene NamedScene::frame(uint32_t f, uint32_t frames) const {
   return import ? gltf_frame(*import, f, frames) : make_scene(name, f, frames);
 }
 
+SceneLibrary default_scene_library(const std::vector<std::filesystem::path>& assets) {
+  return SceneLibrary{built_in_scene_presets(), make_asset_search(assets, std::getenv("VSGL_ASSETS"))};
+}
+
 bool is_named_scene(const std::string& name, const SceneLibrary& library) {
   if (procedural(name)) return true;
-  const auto presets = scene_preset_names(library.preset_dir);
+  const auto presets = scene_preset_names(library.presets);
   return std::find(presets.begin(), presets.end(), name) != presets.end();
 }
 
@@ -47,7 +52,7 @@ NamedScene load_named_scene(const std::string& name, const SceneLibrary& library
   NamedScene out;
   out.name = name;
   if (procedural(name)) return out;
-  out.preset = find_scene_preset(library.preset_dir, name);
+  out.preset = find_scene_preset(library.presets, name);
   const std::filesystem::path model = find_preset_model(*out.preset, library.assets);
   const auto t0 = std::chrono::steady_clock::now();
   out.import = import_model(model, out.preset->camera, out.preset->light);

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "harness/capture/capture.hpp"
 #include "harness/scene/asset_search.hpp"
@@ -16,11 +17,15 @@
 
 namespace vsgl {
 
-// Where named scenes come from.
+// Where named scenes come from: the presets (none by default) and where their models are looked for.
 struct SceneLibrary {
-  std::filesystem::path preset_dir;
+  std::vector<ScenePresetFile> presets;
   AssetSearch assets;
 };
+
+// What the programs use (DESIGN.md §3.4): the presets built in, the models found through
+// --assets (`assets`), VSGL_ASSETS and assets/ in the current directory.
+SceneLibrary default_scene_library(const std::vector<std::filesystem::path>& assets);
 
 struct NamedScene {
   std::string name;

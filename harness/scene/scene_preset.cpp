@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <iterator>
 
+#include "harness/core/embedded_files.hpp"
 #include "harness/core/error.hpp"
 #include "harness/core/json_reader.hpp"
 #include "harness/core/printable_text.hpp"
@@ -11,6 +14,8 @@ namespace vsgl {
 namespace {
 
 using json = nlohmann::json;
+
+constexpr const char* kBuiltInPresetDir = "harness/scene/presets/";
 
 glm::vec3 read_vec3(const JsonReader& r, const json& object, const std::string& parent, const char* key) {
   const json& a = r.array(object, parent, key, 3);
@@ -94,18 +99,18 @@ void read_motion(const JsonReader& r, const json& doc, ScenePreset& p) {
 
 }  // namespace
 
-ScenePreset read_scene_preset(const std::filesystem::path& file) {
-  const json doc = json::parse(read_json_file(file, "the scene preset").dump());
-  const JsonReader r("scene preset " + printable_text(file.string(), std::string_view::npos),
-                     JsonPathStyle::kDottedKey);
+ScenePreset parse_scene_preset(const ScenePresetFile& file) {
+  const std::string origin = printable_text(file.origin, std::string_view::npos);
+  const json doc = json::parse(parse_json_text(file.text, origin, "the scene preset").dump());
+  const JsonReader r("scene preset " + origin, JsonPathStyle::kDottedKey);
   if (!doc.is_object()) r.wrong_type(doc, "", "an object");
   r.only_keys(doc, "",
               {"name", "description", "paper_table", "model", "where_to_get", "camera", "light", "sizes", "motion"});
   ScenePreset p;
-  p.file = file;
+  p.origin = file.origin;
   p.name = r.string(doc, "", "name");
-  if (p.name != file.stem().string())
-    r.fail("name", "is " + quoted_text(p.name) + ", expected the file's stem " + quoted_text(file.stem().string()));
+  if (p.name != file.name)
+    r.fail("name", "is " + quoted_text(p.name) + ", expected the file's stem " + quoted_text(file.name));
   p.description = r.string(doc, "", "description");
   p.paper_table = r.uint32(doc, "", "paper_table");
   if (p.paper_table > 2) r.fail("paper_table", "is " + std::to_string(p.paper_table) + ", expected 0, 1 or 2");
@@ -118,27 +123,62 @@ ScenePreset read_scene_preset(const std::filesystem::path& file) {
   return p;
 }
 
-std::vector<std::string> scene_preset_names(const std::filesystem::path& dir) {
-  std::vector<std::string> names;
+namespace {
+
+std::string read_text(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError(file.string() + ": cannot read the scene preset");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) throw InputError(file.string() + ": cannot read the scene preset");
+  return text;
+}
+
+}  // namespace
+
+ScenePreset read_scene_preset(const std::filesystem::path& file) {
+  return parse_scene_preset(ScenePresetFile{file.stem().string(), file.string(), read_text(file)});
+}
+
+std::vector<ScenePresetFile> built_in_scene_presets() {
+  std::vector<ScenePresetFile> out;
+  for (const std::string& name : embedded_file_names(kBuiltInPresetDir)) {
+    const std::filesystem::path rel(name);
+    if (rel.extension() != ".json" || rel.parent_path() != std::filesystem::path(kBuiltInPresetDir).parent_path())
+      continue;
+    out.push_back({rel.stem().string(), embedded_file_label(name), std::string(*embedded_file(name))});
+  }
+  return out;  // embedded_file_names() is sorted, and so are the stems of one directory's files
+}
+
+std::vector<ScenePresetFile> scene_preset_files(const std::filesystem::path& dir) {
+  std::vector<ScenePresetFile> out;
   std::error_code ec;
-  if (!std::filesystem::is_directory(dir, ec)) return names;
+  if (!std::filesystem::is_directory(dir, ec)) return out;
   for (const auto& e : std::filesystem::directory_iterator(dir))
-    if (e.is_regular_file() && e.path().extension() == ".json") names.push_back(e.path().stem().string());
-  std::sort(names.begin(), names.end());
+    if (e.is_regular_file() && e.path().extension() == ".json")
+      out.push_back({e.path().stem().string(), e.path().string(), read_text(e.path())});
+  std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
+  return out;
+}
+
+std::vector<std::string> scene_preset_names(const std::vector<ScenePresetFile>& presets) {
+  std::vector<std::string> names;
+  for (const ScenePresetFile& p : presets) names.push_back(p.name);
   return names;
 }
 
-ScenePreset find_scene_preset(const std::filesystem::path& dir, const std::string& name) {
-  const auto names = scene_preset_names(dir);
-  if (std::find(names.begin(), names.end(), name) == names.end()) {
+ScenePreset find_scene_preset(const std::vector<ScenePresetFile>& presets, const std::string& name) {
+  const auto it =
+      std::find_if(presets.begin(), presets.end(), [&](const ScenePresetFile& p) { return p.name == name; });
+  if (it == presets.end()) {
     std::string known;
     for (const auto& n : scene_names()) known += (known.empty() ? "" : ", ") + n;
-    std::string presets;
-    for (const auto& n : names) presets += (presets.empty() ? "" : ", ") + n;
+    std::string names;
+    for (const auto& p : presets) names += (names.empty() ? "" : ", ") + p.name;
     throw InputError("no scene named " + quoted_text(name) + ": the procedural scenes are " + known +
-                     ", and the scene presets in " + dir.string() + " are " + (presets.empty() ? "none" : presets));
+                     ", and the scene presets are " + (names.empty() ? "none" : names));
   }
-  return read_scene_preset(dir / (name + ".json"));
+  return parse_scene_preset(*it);
 }
 
 }  // namespace vsgl

@@ -8,6 +8,7 @@
 #include "harness/core/atomic_file.hpp"
 #include "harness/core/error.hpp"
 #include "harness/core/json_reader.hpp"
+#include "harness/core/embedded_files.hpp"
 #include "harness/core/json_schema_subset.hpp"
 #include "harness/core/text_format.hpp"
 #include "harness/generators/device_view.hpp"
@@ -86,7 +87,7 @@ ojson checked_sweep_json(const MeasuredSweep& m, const std::vector<SweepFit>& fi
   if (!problems.empty()) {
     std::string all;
     for (const auto& p : problems) all += "\n  " + p;
-    throw std::logic_error("the sweep does not conform to " + o.schema.string() + ":" + all);
+    throw std::logic_error("the sweep does not conform to " + file_or_built_in_name(o.schema, kSweepSchemaFile) + ":" + all);
   }
   return doc;
 }
@@ -118,12 +119,13 @@ SweepOutcome run_sweep(Device& device, const SweepOptions& o, const std::functio
     if (on_event) on_event(SweepEvent{msg, nullptr, point, points.size()});
   };
   // Everything that is not a measurement first, so a bad schema or scene fails in seconds.
-  const nlohmann::json schema = read_json_file(o.schema, "the sweep schema", " (use --schema FILE)");
+  const nlohmann::json schema =
+      json_file_or_built_in(o.schema, kSweepSchemaFile, "the sweep schema", " (use --schema FILE)");
   SweepContext ctx;
   ctx.device = to_json(device.info());
-  ctx.build = build_json(o.tables.source_dir);
+  ctx.build = build_json();
   ctx.run = run_json(o.tables);
-  ctx.paper = load_paper_tables(o.tables.paper_tables);
+  ctx.paper = paper_tables_or_built_in(o.tables.paper_tables);
   ctx.informative = device.info().type == VK_PHYSICAL_DEVICE_TYPE_CPU;
   std::optional<NamedScene> scene;
   if (!o.scene.empty()) scene = load_named_scene(o.scene, o.scenes);

@@ -22,6 +22,8 @@ namespace vsgl {
 
 class Device;
 
+inline constexpr const char* kSweepSchemaFile = "results/schema/sweep.schema.json";
+
 struct SweepOptions {
   std::vector<SweepAxis> axes;
   // The input: a capture on disk, or a named scene recorded into `captures_dir` (needed by the
@@ -36,7 +38,7 @@ struct SweepOptions {
   TablesOptions tables;
   std::optional<double> time_budget_s;  // split evenly over the points
   std::filesystem::path out_dir;        // required
-  std::filesystem::path schema = std::filesystem::path(VSGL_SOURCE_DIR) / "results/schema/sweep.schema.json";
+  std::optional<std::filesystem::path> schema;  // --schema; none: kSweepSchemaFile as built in
 };
 
 struct SweepEvent {
