@@ -113,7 +113,8 @@ TEST_F(SweepRunTest, ASweepWithFewerThanTwoPointsOnTheDeviceIsADeviceErrorAndSta
     EXPECT_NE(m.find("sweep.json keeps the point timed, marked \"complete\": false"), std::string::npos) << m;
   }
   const fs::path file = o.out_dir / "sweep.json";
-  const auto problems = validate_against_schema(test::read_json(file), test::read_json(o.schema));
+  const auto problems =
+      validate_against_schema(test::read_json(file), test::read_json(fs::path(VSGL_SOURCE_DIR) / kSweepSchemaFile));
   EXPECT_TRUE(problems.empty()) << problems.front();
   const SweepModel model = read_sweep_file(file);
   EXPECT_FALSE(model.complete);
