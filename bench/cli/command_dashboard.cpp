@@ -10,6 +10,7 @@
 
 #include "bench/cli/commands.hpp"
 #include "bench/cli/option_types.hpp"
+#include "harness/core/platform_path.hpp"
 #include "harness/core/atomic_file.hpp"
 #include "harness/compare/dashboard_page.hpp"
 #include "harness/compare/dashboard_scaling.hpp"
@@ -40,13 +41,13 @@ Command add_dashboard_command(CLI::App& parent) {
       ->check(input_file("--paper"))
       ->default_str("results/paper/paper_tables.json");
   return {app, [o] {
-            const std::vector<BenchRun> runs = find_table_runs(o->results);
-            const std::vector<SweepRun> sweeps = find_sweep_runs(o->results);
+            const std::vector<BenchRun> runs = find_table_runs(path_from_utf8(o->results));
+            const std::vector<SweepRun> sweeps = find_sweep_runs(path_from_utf8(o->results));
             if (runs.empty() && sweeps.empty())
               throw InputError(o->results + ": no table JSON (tableN.json) and no sweep JSON (sweep.json) found");
             const nlohmann::json paper = load_paper_tables(o->paper);
-            std::filesystem::create_directories(o->out);
-            const std::filesystem::path page = std::filesystem::path(o->out) / "index.html";
+            std::filesystem::create_directories(path_from_utf8(o->out));
+            const std::filesystem::path page = path_from_utf8(o->out) / "index.html";
             write_text_atomic(page, dashboard_html(runs, paper, o->results, dashboard_generators(), sweeps));
             std::fprintf(stderr, "wrote %s (%zu table runs, %zu sweep files)\n", page.string().c_str(), runs.size(),
                          sweeps.size());
