@@ -23,4 +23,9 @@ else
   swift="SwiftShader gpu tests skipped: $swiftshader_icd not found (install Debian's chromium)"
   echo "ci/test.sh: $swift"
 fi
-echo "ci/test.sh: build $((built - start)) s, tests $((tested - built)) s, $swift"
+# The Windows build, run under Wine on lavapipe (DESIGN.md §13); skipped, saying why, without
+# mingw-w64, Wine or Xvfb.
+windows_start=$(date +%s)
+bash ci/windows-test.sh
+windows="Windows step $(( $(date +%s) - windows_start )) s"
+echo "ci/test.sh: build $((built - start)) s, tests $((tested - built)) s, $swift, $windows"
