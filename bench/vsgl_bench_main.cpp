@@ -12,6 +12,8 @@
 #include "bench/cli/commands.hpp"
 #include "bench/cli/exit_codes.hpp"
 #include "harness/core/error.hpp"
+#include "harness/core/platform_arguments.hpp"
+#include "harness/core/platform_console.hpp"
 #include "harness/core/program_name.hpp"
 #include "harness/core/build_info.hpp"
 
@@ -48,5 +50,7 @@ int dispatch(int argc, char** argv) {
 
 int main(int argc, char** argv) {
   vsgl::set_program_name("vsgl-bench");
-  return vsgl::cli::run_reporting_errors([&] { return dispatch(argc, argv); });
+  vsgl::use_utf8_console();
+  vsgl::Utf8Arguments args(argc, argv);  // file names beyond the ANSI code page on Windows
+  return vsgl::cli::run_reporting_errors([&] { return dispatch(args.argc(), args.argv()); });
 }

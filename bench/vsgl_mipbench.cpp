@@ -27,6 +27,8 @@
 #include "bench/cli/option_types.hpp"
 #include "bench/cli/gpu_session.hpp"
 #include "harness/core/error.hpp"
+#include "harness/core/platform_arguments.hpp"
+#include "harness/core/platform_console.hpp"
 #include "harness/core/program_name.hpp"
 #include "harness/generators/device_view.hpp"
 #include "harness/generators/fis/fis_generator.hpp"
@@ -155,5 +157,7 @@ int run(int argc, char** argv) {
 
 int main(int argc, char** argv) {
   vsgl::set_program_name("vsgl-mipbench");
-  return vsgl::cli::run_reporting_errors([&] { return run(argc, argv); });
+  vsgl::use_utf8_console();
+  vsgl::Utf8Arguments args(argc, argv);  // file names beyond the ANSI code page on Windows
+  return vsgl::cli::run_reporting_errors([&] { return run(args.argc(), args.argv()); });
 }

@@ -1,7 +1,16 @@
 #!/usr/bin/env bash
 # Installs the Debian packages vsgl-bench needs, only those that are missing. Idempotent.
-# Usage: bash ci/install-deps.sh        (as root, or as a user with sudo)
+# Usage: bash ci/install-deps.sh             (as root, or as a user with sudo)
+#        bash ci/install-deps.sh --windows   also the Windows cross build's tools and Wine
+#                                            (windows-cross preset, ci/windows-test.sh)
 set -euo pipefail
+windows=false
+for arg in "$@"; do
+  case "$arg" in
+    --windows) windows=true ;;
+    *) echo "ci/install-deps.sh: unknown option '$arg' (--windows)" >&2; exit 2 ;;
+  esac
+done
 
 packages=(
   cmake ninja-build g++ pkg-config        # build
@@ -20,6 +29,14 @@ packages=(
   python3-jsonschema                      # second validator of the committed results (tests/validate_results.py)
   clang-format                            # ci/check-format.sh: the changed lines follow .clang-format
 )
+if $windows; then
+  packages+=(
+    # The Windows build (windows-cross preset, ci/windows-deps.sh) and its run under Wine (ci/windows-test.sh)
+    g++-mingw-w64-x86-64-posix mingw-w64-tools libz-mingw-w64-dev  # cross compiler, gendef, zlib
+    dpkg-dev                              # apt-get source unpacks OpenEXR, Imath, Benchmark
+    wine wine64 xvfb xauth                # Wine runs the .exe files; its Vulkan needs an X display
+  )
+fi
 
 # Headless Chromium renders results/dashboard in the dashboard test. Debian's `chromium` is a real
 # browser; Ubuntu's `chromium` / `chromium-browser` are transitional packages that install a snap,
@@ -50,12 +67,20 @@ for p in "${packages[@]}"; do
   status=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)
   [[ "$status" == "install ok installed" ]] || missing+=("$p")
 done
-if [[ ${#missing[@]} -eq 0 ]]; then
+# ci/windows-deps.sh builds OpenEXR, Imath and Google Benchmark for Windows from Debian's source
+# packages, which `apt-get source` fetches only with a deb-src line for Debian's main archive.
+deb_src_file=/etc/apt/sources.list.d/vsgl-deb-src.sources
+need_deb_src=false
+if $windows && [[ "$os_id" == "debian" ]] &&
+   ! grep -rqsE '^(Types:.*deb-src|deb-src )' /etc/apt/sources.list /etc/apt/sources.list.d/; then
+  need_deb_src=true
+fi
+if [[ ${#missing[@]} -eq 0 && $need_deb_src == false ]]; then
   echo "ci/install-deps.sh: all ${#packages[@]} packages are installed."
   exit 0
 fi
 
-echo "ci/install-deps.sh: installing ${missing[*]}"
+[[ ${#missing[@]} -eq 0 ]] || echo "ci/install-deps.sh: installing ${missing[*]}"
 if [[ $(id -u) -eq 0 ]]; then
   sudo=()
 elif command -v sudo >/dev/null 2>&1 && sudo -n true 2>/dev/null; then
@@ -65,6 +90,12 @@ else
   echo "Run as root:  apt-get update && apt-get install -y ${missing[*]}" >&2
   exit 1
 fi
+if [[ $need_deb_src == true ]]; then
+  codename=$(. /etc/os-release && echo "${VERSION_CODENAME:-bookworm}")
+  echo "ci/install-deps.sh: adding $deb_src_file (Debian's source packages, for ci/windows-deps.sh)"
+  printf 'Types: deb-src\nURIs: http://deb.debian.org/debian\nSuites: %s\nComponents: main\nSigned-By: /usr/share/keyrings/debian-archive-keyring.gpg\n' \
+    "$codename" | "${sudo[@]}" tee "$deb_src_file" >/dev/null
+fi
 export DEBIAN_FRONTEND=noninteractive
 "${sudo[@]}" apt-get update -qq
-"${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+[[ ${#missing[@]} -eq 0 ]] || "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"

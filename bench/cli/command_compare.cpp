@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "bench/cli/commands.hpp"
+#include "harness/core/platform_path.hpp"
 #include "harness/core/atomic_file.hpp"
 #include "harness/core/error.hpp"
 #include "harness/core/program_name.hpp"
@@ -68,7 +69,7 @@ int run_compare(const CompareCommandOptions& o) {
   const BenchRun fresh = load_bench_run_path(o.fresh);
   const RunComparison c = compare_runs(base, fresh, options);
   const std::string report = comparison_markdown(base, fresh, c, options);
-  if (o.out) write_text_atomic(*o.out, report);
+  if (o.out) write_text_atomic(path_from_utf8(*o.out), report);
   std::fputs(report.c_str(), stdout);
   std::size_t failing = 0;
   for (Verdict v : fail_on) failing += c.count(v);

@@ -11,6 +11,7 @@
 
 #include "bench/cli/commands.hpp"
 #include "bench/cli/option_types.hpp"
+#include "harness/core/platform_path.hpp"
 #include "harness/core/atomic_file.hpp"
 #include "harness/compare/dashboard_page.hpp"
 #include "harness/compare/dashboard_scaling.hpp"
@@ -41,14 +42,14 @@ Command add_dashboard_command(CLI::App& parent) {
       ->check(input_file("--paper"))
       ->default_str("built-in results/paper/paper_tables.json");
   return {app, [o] {
-            const std::vector<BenchRun> runs = find_table_runs(o->results);
-            const std::vector<SweepRun> sweeps = find_sweep_runs(o->results);
+            const std::vector<BenchRun> runs = find_table_runs(path_from_utf8(o->results));
+            const std::vector<SweepRun> sweeps = find_sweep_runs(path_from_utf8(o->results));
             if (runs.empty() && sweeps.empty())
               throw InputError(o->results + ": no table JSON (tableN.json) and no sweep JSON (sweep.json) found");
             const nlohmann::json paper =
                 paper_tables_or_built_in(o->paper ? std::optional<std::filesystem::path>(*o->paper) : std::nullopt);
-            std::filesystem::create_directories(o->out);
-            const std::filesystem::path page = std::filesystem::path(o->out) / "index.html";
+            std::filesystem::create_directories(path_from_utf8(o->out));
+            const std::filesystem::path page = path_from_utf8(o->out) / "index.html";
             write_text_atomic(page, dashboard_html(runs, paper, o->results, dashboard_generators(), sweeps));
             std::fprintf(stderr, "wrote %s (%zu table runs, %zu sweep files)\n", page.string().c_str(), runs.size(),
                          sweeps.size());

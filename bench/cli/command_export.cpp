@@ -9,6 +9,7 @@
 #include "bench/cli/option_types.hpp"
 
 #include "bench/cli/commands.hpp"
+#include "harness/core/platform_path.hpp"
 #include "harness/core/atomic_file.hpp"
 #include "harness/core/error.hpp"
 #include "harness/compare/export_formats.hpp"
@@ -38,7 +39,7 @@ Command add_export_command(CLI::App& parent) {
             std::vector<BenchRun> runs;
             for (const auto& f : o->runs) runs.push_back(load_bench_run_path(f));
             const BenchRun run = merge_bench_runs(runs);
-            write_text_atomic(o->out, export_run(run, parse_export_format(o->format)).dump(2) + "\n");
+            write_text_atomic(path_from_utf8(o->out), export_run(run, parse_export_format(o->format)).dump(2) + "\n");
             std::fprintf(stderr, "wrote %s (%zu benchmarks)\n", o->out.c_str(), run.series.size());
             return 0;
           }};

@@ -10,6 +10,7 @@
 #include "bench/cli/commands.hpp"
 #include "bench/cli/generator_options.hpp"
 #include "bench/cli/gpu_session.hpp"
+#include "harness/core/platform_path.hpp"
 #include "harness/core/atomic_file.hpp"
 #include "harness/capture/capture.hpp"
 #include "harness/capture/capture_files.hpp"
@@ -33,13 +34,13 @@ struct QualityOptions {
 int run_quality_command(QualityOptions& o) {
   const std::string* capture_arg = &o.capture;
   QualityConfig& config = o.config;
-  const std::filesystem::path out_root = o.out;
+  const std::filesystem::path out_root = path_from_utf8(o.out);
   config.k_sweep.clear();
   for (const auto& item : o.k_sweep) config.k_sweep.push_back(std::stof(item));
   if (config.sequence) (void)sequence_frames(*config.sequence, config.frames);  // fail before the long work
   GpuSession session = GpuSession::open(o.device);
 
-  const Capture capture = load_capture(*capture_arg);
+  const Capture capture = load_capture(path_from_utf8(*capture_arg));
   std::fprintf(stderr, "quality: %s on %s\n", capture.meta.scene.c_str(), session.device().info().name.c_str());
   QualityResult result = run_quality(session.device(), capture, *capture_arg, config, [](const std::string& line) {
     std::fprintf(stderr, "  %s\n", line.c_str());

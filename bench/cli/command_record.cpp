@@ -14,6 +14,7 @@
 #include "bench/cli/commands.hpp"
 #include "bench/cli/gpu_session.hpp"
 #include "harness/core/error.hpp"
+#include "harness/core/platform_path.hpp"
 #include "harness/scene/capture_provisioning.hpp"
 #include "harness/scene/named_scene.hpp"
 #include "harness/scene/gltf_scene.hpp"
@@ -119,7 +120,7 @@ int record_model_file(RecordOptions& o, GpuSession& session, const std::string& 
   const SceneSource source{ext == ".obj" ? "obj" : "gltf",          import.file,          import.content_hash,
                            static_cast<uint32_t>(import.triangles), import.camera_source, import.light_source};
   const std::filesystem::path base =
-      o.out ? std::filesystem::path(*o.out) : std::filesystem::path("captures") / import.scene.name;
+      o.out ? path_from_utf8(*o.out) : std::filesystem::path("captures") / import.scene.name;
   for (uint32_t f = 0; f < o.frames; ++f) {
     const auto dir = frame_dir(base, f, o.frames);
     RecordedCapture r;
@@ -157,7 +158,7 @@ int run_record(RecordOptions& o) {
     }
     const RecordSizes sizes =
         o.sizes_given || !scene.preset ? RecordSizes{o.gbuffer.first, o.gbuffer.second, o.rsm} : scene.default_sizes;
-    const std::filesystem::path base = o.out ? std::filesystem::path(*o.out) : std::filesystem::path("captures") / name;
+    const std::filesystem::path base = o.out ? path_from_utf8(*o.out) : std::filesystem::path("captures") / name;
     for (uint32_t f = 0; f < o.frames; ++f) {
       const auto dir = frame_dir(base, f, o.frames);
       // The one recording path, shared with `tables` (harness/scene/capture_provisioning.hpp).

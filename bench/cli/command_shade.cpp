@@ -16,6 +16,7 @@
 #include "harness/vk/command_stream.hpp"
 #include "harness/generators/device_view.hpp"
 #include "harness/core/error.hpp"
+#include "harness/core/platform_path.hpp"
 #include "harness/generators/generator_registry.hpp"
 #include "harness/quality/png_image.hpp"
 #include "harness/quality/shading_pass.hpp"
@@ -50,14 +51,14 @@ int run_shade(ShadeOptions& o) {
   const auto& names = o.generators;
   const uint32_t stride = o.stride;
   const uint32_t vsgl_count = o.vsgls;
-  const std::filesystem::path out_dir = o.out;
+  const std::filesystem::path out_dir = path_from_utf8(o.out);
   float exposure = o.exposure;
   GeneratorConfig& config = o.config;
   std::vector<const GeneratorDescriptor*> generators;
   for (const auto& name : names) generators.push_back(&find_generator(name));
   GpuSession session = GpuSession::open(o.device);
 
-  const Capture capture = load_capture(*capture_arg);
+  const Capture capture = load_capture(path_from_utf8(*capture_arg));
   Device& device = session.device();
   const DeviceView camera = upload_view(device, capture, ViewKind::kCamera);
   const DeviceView light = upload_view(device, capture, ViewKind::kLight);

@@ -1,7 +1,6 @@
 // `vsgl-bench sweep`: the tables' timing protocol at every point of one or more parameter axes, the
 // cost growth per generator, view and phase, and log-log plots (DESIGN.md §10.1). The work is
 // harness/sweep/sweep_run.hpp; this file maps options and prints.
-#include <unistd.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -15,6 +14,8 @@
 #include "bench/cli/gpu_session.hpp"
 #include "bench/cli/option_types.hpp"
 #include "harness/core/error.hpp"
+#include "harness/core/platform_path.hpp"
+#include "harness/core/platform_console.hpp"
 #include "harness/generators/generator_registry.hpp"
 #include "harness/scene/named_scene.hpp"
 #include "harness/sweep/sweep_run.hpp"
@@ -54,10 +55,10 @@ int run_sweep_command(const SweepCommandOptions& c) {
       throw UsageError("--axis " + a.spec +
                        " records the capture again at each size, which needs --scene NAME, not "
                        "--capture");
-  if (c.capture) o.capture = std::filesystem::path(*c.capture);
+  if (c.capture) o.capture = path_from_utf8(*c.capture);
   if (c.scene) o.scene = *c.scene;
   o.scenes = default_scene_library({c.assets.begin(), c.assets.end()});
-  o.captures_dir = c.captures;
+  o.captures_dir = path_from_utf8(c.captures);
   o.record_sizes = RecordSizes{c.gbuffer.first, c.gbuffer.second, c.rsm};
   o.time_budget_s = c.time_budget;
   if (c.schema) o.schema = *c.schema;
@@ -71,10 +72,9 @@ int run_sweep_command(const SweepCommandOptions& c) {
   t.timing = TimingOptions::defaults_for(info);
   t.quick = c.quick;
   apply_timing_flags(c, t.timing);
-  o.out_dir =
-      c.out ? std::filesystem::path(*c.out) : std::filesystem::path("results") / device_slug(info.name) / "sweep";
+  o.out_dir = c.out ? path_from_utf8(*c.out) : std::filesystem::path("results") / device_slug(info.name) / "sweep";
 
-  const bool tty = !c.no_progress && isatty(fileno(stderr)) != 0;
+  const bool tty = !c.no_progress && vsgl::is_terminal(stderr);
   bool line_open = false;
   const SweepOutcome outcome = run_sweep(session.device(), o, [&](const SweepEvent& e) {
     if (e.progress == nullptr) {

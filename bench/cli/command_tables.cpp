@@ -1,6 +1,5 @@
 // `vsgl-bench tables`: the paper's Tables 1 and 2 (and the Table 3 analog) on this device
 // (DESIGN.md §9, §10). The work is harness/report/tables_run.hpp; this file maps options and prints.
-#include <unistd.h>
 
 #include <cstdio>
 #include <memory>
@@ -14,6 +13,8 @@
 #include "harness/generators/testing/debug_slowdown.hpp"
 #include "bench/cli/gpu_session.hpp"
 #include "harness/core/error.hpp"
+#include "harness/core/platform_path.hpp"
+#include "harness/core/platform_console.hpp"
 #include "harness/timing/run_provenance.hpp"
 #include "harness/generators/generator_registry.hpp"
 #include "harness/scene/named_scene.hpp"
@@ -48,10 +49,10 @@ struct TablesCommandOptions {
 int run_tables_command(const TablesCommandOptions& c) {
   TablesOptions o;
   const bool quick = c.quick;
-  o.captures_dir = c.captures;
+  o.captures_dir = path_from_utf8(c.captures);
   o.scenes = default_scene_library({c.assets.begin(), c.assets.end()});
   o.record_sizes = RecordSizes{c.gbuffer.first, c.gbuffer.second, c.rsm};
-  for (const auto& d : c.capture_dirs) o.captures.emplace_back(d);
+  for (const auto& d : c.capture_dirs) o.captures.push_back(path_from_utf8(d));
   o.tables.clear();
   if (o.captures.empty())
     for (const auto& t : c.tables) o.tables.push_back(std::stoi(t));
@@ -78,7 +79,7 @@ int run_tables_command(const TablesCommandOptions& c) {
   }();
   o.quick = quick;
   apply_timing_flags(c, o.timing);
-  o.out_dir = out ? std::filesystem::path(*out) : std::filesystem::path("results") / device_slug(info.name);
+  o.out_dir = out ? path_from_utf8(*out) : std::filesystem::path("results") / device_slug(info.name);
 
   std::fprintf(stderr,
                "timing: warm-up %u, >= %u repetitions, stop at IQR/median <= %.3g or %.0f s or %u repetitions%s\n"
@@ -87,7 +88,7 @@ int run_tables_command(const TablesCommandOptions& c) {
                o.timing.warmup, o.timing.min_repetitions, o.timing.noise_target, o.timing.time_cap_s,
                o.timing.max_repetitions, o.timing.cold ? ", cold caches" : "",
                o.clocks_locked ? "claimed locked" : "not claimed locked");
-  const bool tty = progress_flag && isatty(fileno(stderr)) != 0;
+  const bool tty = progress_flag && vsgl::is_terminal(stderr);
   bool line_open = false;
   const TablesOutcome outcome = vsgl::run_tables(session.device(), o, [&](const TablesEvent& e) {
     if (e.progress == nullptr) {

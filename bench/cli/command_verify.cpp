@@ -12,6 +12,7 @@
 #include "bench/cli/generator_options.hpp"
 #include "bench/cli/gpu_session.hpp"
 #include "harness/capture/capture_files.hpp"
+#include "harness/core/platform_path.hpp"
 #include "harness/core/atomic_file.hpp"
 #include "harness/core/error.hpp"
 #include "harness/verify/fis_verification.hpp"
@@ -37,7 +38,7 @@ int run_verify(VerifyOptions& o) {
   for (const auto& item : o.pyramids) config.pyramids.push_back(*parse_pyramid_path(item));
   GpuSession session = GpuSession::open(o.device);
 
-  const Capture capture = load_capture(*capture_dir);
+  const Capture capture = load_capture(path_from_utf8(*capture_dir));
   std::printf("verify %s (scene %s) on %s\n", capture_dir->c_str(), capture.meta.scene.c_str(),
               session.device().info().name.c_str());
   auto results = verify_fis(session.device(), capture, config);

@@ -1,12 +1,14 @@
 #include "harness/core/test_pause.hpp"
 
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <atomic>
 #include <charconv>
+#include <chrono>
 #include <cstdlib>
+#include <fstream>
 #include <string>
+#include <thread>
+
+#include "harness/core/platform_process.hpp"
 
 namespace vsgl {
 namespace {
@@ -58,14 +60,9 @@ bool test_pause_wanted(std::string_view point, const std::filesystem::path& targ
 void test_pause_point(std::string_view point, const std::filesystem::path& target) {
   if (!test_pause_wanted(point, target)) return;
   if (const char* notify = std::getenv("VSGL_TEST_PAUSE_NOTIFY"); notify != nullptr && *notify != '\0') {
-    const std::string pid = std::to_string(::getpid()) + "\n";
-    const int fd = ::open(notify, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-    if (fd >= 0) {
-      (void)!::write(fd, pid.data(), pid.size());
-      ::close(fd);
-    }
+    std::ofstream(std::filesystem::path(notify), std::ios::binary | std::ios::trunc) << current_process_id() << "\n";
   }
-  for (;;) ::pause();
+  for (;;) std::this_thread::sleep_for(std::chrono::hours(1));  // until the test kills this process
 }
 
 }  // namespace vsgl
