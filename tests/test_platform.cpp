@@ -8,7 +8,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <string>
 #include <system_error>
 
@@ -17,16 +16,12 @@
 #include "harness/core/platform_file.hpp"
 #include "harness/core/platform_path.hpp"
 #include "harness/core/platform_process.hpp"
+#include "test_support.hpp"
 
 namespace vsgl {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
 
 fs::path fresh_dir(const std::string& name) {
   const fs::path dir = fs::temp_directory_path() / ("vsgl_platform_" + name + "_" + std::to_string(::getpid()));
@@ -60,7 +55,7 @@ TEST(Platform, NewFileIsExclusiveAndReplaceFileReplacesTheTarget) {
   NewFile again;
   EXPECT_EQ(again.create(temporary), std::errc::file_exists);
   EXPECT_FALSE(replace_file(temporary, target));
-  EXPECT_EQ(slurp(target), text);
+  EXPECT_EQ(test::read_text(target), text);
   EXPECT_FALSE(fs::exists(temporary));
   EXPECT_EQ(replace_file(dir / "missing", target), std::errc::no_such_file_or_directory);
   fs::remove_all(dir);
