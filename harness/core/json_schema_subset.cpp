@@ -183,6 +183,13 @@ void walk_finite(const nlohmann::ordered_json& v, const std::string& where) {
     for (std::size_t i = 0; i < v.size(); ++i) walk_finite(v[i], where + "/" + std::to_string(i));
 }
 
+// One problem per indented line, for an error message.
+std::string problem_lines(const std::vector<std::string>& problems) {
+  std::string all;
+  for (const auto& p : problems) all += "\n  " + p;
+  return all;
+}
+
 }  // namespace
 
 std::vector<std::string> schema_subset_problems(const nlohmann::json& schema) {
@@ -192,14 +199,18 @@ std::vector<std::string> schema_subset_problems(const nlohmann::json& schema) {
 }
 
 std::vector<std::string> validate_against_schema(const nlohmann::json& doc, const nlohmann::json& schema) {
-  if (const auto problems = schema_subset_problems(schema); !problems.empty()) {
-    std::string all;
-    for (const auto& p : problems) all += "\n  " + p;
-    throw std::invalid_argument("the schema asks for what the validator cannot check:" + all);
-  }
+  if (const auto problems = schema_subset_problems(schema); !problems.empty())
+    throw std::invalid_argument("the schema asks for what the validator cannot check:" + problem_lines(problems));
   Validator v(schema);
   v.check(doc, schema, "");
   return v.errors;
+}
+
+void require_conforming(const nlohmann::ordered_json& doc, const nlohmann::json& schema, const std::string& what,
+                        const std::string& schema_name) {
+  const auto problems = validate_against_schema(nlohmann::json::parse(doc.dump()), schema);
+  if (!problems.empty())
+    throw std::logic_error(what + " does not conform to " + schema_name + ":" + problem_lines(problems));
 }
 
 void require_finite_numbers(const nlohmann::ordered_json& doc) { walk_finite(doc, ""); }

@@ -16,6 +16,11 @@ namespace vsgl {
 // std::invalid_argument listing schema_subset_problems(schema) when there are any.
 std::vector<std::string> validate_against_schema(const nlohmann::json& doc, const nlohmann::json& schema);
 
+// For a document this program wrote (a violation is a bug, not bad input): throws std::logic_error
+// "<what> does not conform to <schema_name>:" followed by every violation, one per line.
+void require_conforming(const nlohmann::ordered_json& doc, const nlohmann::json& schema, const std::string& what,
+                        const std::string& schema_name);
+
 // Walks every subschema of `schema` (properties, items, additionalProperties, $defs, and those
 // under keywords outside the subset: allOf, anyOf, oneOf, not, if/then/else, definitions,
 // patternProperties, prefixItems, ...) and returns each problem as "schema-pointer: problem": a

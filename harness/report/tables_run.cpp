@@ -75,12 +75,7 @@ void write_table(const TableMeasurement& m, const MeasuredTable* other, const Ru
   } catch (const std::invalid_argument& e) {
     throw DeviceError("table " + stem + ": " + e.what());
   }
-  const auto problems = validate_against_schema(nlohmann::json::parse(doc.dump()), run.schema);
-  if (!problems.empty()) {
-    std::string all;
-    for (const auto& p : problems) all += "\n  " + p;
-    throw std::logic_error("table " + stem + " does not conform to " + file_or_built_in_name(o.schema, kTableSchemaFile) + ":" + all);
-  }
+  require_conforming(doc, run.schema, "table " + stem, file_or_built_in_name(o.schema, kTableSchemaFile));
   std::vector<std::pair<std::filesystem::path, std::string>> files;
   files.emplace_back(o.out_dir / (stem + ".json"), doc.dump(2) + "\n");
   out.markdown[index] = table_markdown(doc);

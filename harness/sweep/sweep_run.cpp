@@ -83,12 +83,7 @@ ojson checked_sweep_json(const MeasuredSweep& m, const std::vector<SweepFit>& fi
   } catch (const std::invalid_argument& e) {
     throw DeviceError(std::string("sweep: ") + e.what());
   }
-  const auto problems = validate_against_schema(nlohmann::json::parse(doc.dump()), schema);
-  if (!problems.empty()) {
-    std::string all;
-    for (const auto& p : problems) all += "\n  " + p;
-    throw std::logic_error("the sweep does not conform to " + file_or_built_in_name(o.schema, kSweepSchemaFile) + ":" + all);
-  }
+  require_conforming(doc, schema, "the sweep", file_or_built_in_name(o.schema, kSweepSchemaFile));
   return doc;
 }
 
