@@ -2,22 +2,17 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <iterator>
 #include <limits>
 
 #include "harness/core/error.hpp"
 #include "harness/core/printable_text.hpp"
+#include "harness/core/text_file.hpp"
 #include "harness/core/text_format.hpp"
 
 namespace vsgl {
 
 nlohmann::ordered_json read_json_file(const std::filesystem::path& path, const std::string& what, const std::string& hint) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path.string() + ": cannot read " + what + hint);
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw InputError(path.string() + ": cannot read " + what + hint);
-  return parse_json_text(text, path.string(), what);
+  return parse_json_text(read_text_file(path, what, hint), path.string(), what);
 }
 
 nlohmann::ordered_json parse_json_text(std::string_view text, const std::string& name, const std::string& what) {

@@ -2,13 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <iterator>
 
 #include "harness/core/embedded_files.hpp"
 #include "harness/core/error.hpp"
 #include "harness/core/json_reader.hpp"
 #include "harness/core/printable_text.hpp"
+#include "harness/core/text_file.hpp"
 
 namespace vsgl {
 namespace {
@@ -123,20 +122,9 @@ ScenePreset parse_scene_preset(const ScenePresetFile& file) {
   return p;
 }
 
-namespace {
-
-std::string read_text(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file.string() + ": cannot read the scene preset");
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw InputError(file.string() + ": cannot read the scene preset");
-  return text;
-}
-
-}  // namespace
-
 ScenePreset read_scene_preset(const std::filesystem::path& file) {
-  return parse_scene_preset(ScenePresetFile{file.stem().string(), file.string(), read_text(file)});
+  return parse_scene_preset(
+      ScenePresetFile{file.stem().string(), file.string(), read_text_file(file, "the scene preset")});
 }
 
 std::vector<ScenePresetFile> built_in_scene_presets() {
@@ -156,7 +144,7 @@ std::vector<ScenePresetFile> scene_preset_files(const std::filesystem::path& dir
   if (!std::filesystem::is_directory(dir, ec)) return out;
   for (const auto& e : std::filesystem::directory_iterator(dir))
     if (e.is_regular_file() && e.path().extension() == ".json")
-      out.push_back({e.path().stem().string(), e.path().string(), read_text(e.path())});
+      out.push_back({e.path().stem().string(), e.path().string(), read_text_file(e.path(), "the scene preset")});
   std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
   return out;
 }
