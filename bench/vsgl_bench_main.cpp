@@ -11,10 +11,8 @@
 #include "bench/cli/command_line.hpp"
 #include "bench/cli/commands.hpp"
 #include "bench/cli/exit_codes.hpp"
+#include "bench/cli/program_main.hpp"
 #include "harness/core/error.hpp"
-#include "harness/core/platform_arguments.hpp"
-#include "harness/core/platform_console.hpp"
-#include "harness/core/program_name.hpp"
 #include "harness/core/build_info.hpp"
 
 namespace {
@@ -48,9 +46,4 @@ int dispatch(int argc, char** argv) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  vsgl::set_program_name("vsgl-bench");
-  vsgl::use_utf8_console();
-  vsgl::Utf8Arguments args(argc, argv);  // file names beyond the ANSI code page on Windows
-  return vsgl::cli::run_reporting_errors([&] { return dispatch(args.argc(), args.argv()); });
-}
+int main(int argc, char** argv) { return vsgl::cli::run_program("vsgl-bench", argc, argv, dispatch); }

@@ -36,6 +36,7 @@
 #include "bench/cli/command_line.hpp"
 #include "bench/cli/exit_codes.hpp"
 #include "bench/cli/option_types.hpp"
+#include "bench/cli/program_main.hpp"
 #include "bench/cli/generator_options.hpp"
 #include "bench/cli/gpu_session.hpp"
 #include "harness/capture/capture_files.hpp"
@@ -43,9 +44,6 @@
 #include "harness/vk/device.hpp"
 #include "harness/generators/device_view.hpp"
 #include "harness/core/error.hpp"
-#include "harness/core/platform_arguments.hpp"
-#include "harness/core/platform_console.hpp"
-#include "harness/core/program_name.hpp"
 #include "harness/generators/fis/fis_generator.hpp"
 #include "harness/generators/generator_registry.hpp"
 #include "harness/timing/run_provenance.hpp"
@@ -216,9 +214,4 @@ int run(int argc, char** argv) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  vsgl::set_program_name("vsgl-gbench");
-  vsgl::use_utf8_console();
-  vsgl::Utf8Arguments args(argc, argv);  // file names beyond the ANSI code page on Windows
-  return vsgl::cli::run_reporting_errors([&] { return run(args.argc(), args.argv()); });
-}
+int main(int argc, char** argv) { return vsgl::cli::run_program("vsgl-gbench", argc, argv, run); }

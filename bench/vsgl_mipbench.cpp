@@ -25,11 +25,9 @@
 #include "bench/cli/command_line.hpp"
 #include "bench/cli/exit_codes.hpp"
 #include "bench/cli/option_types.hpp"
+#include "bench/cli/program_main.hpp"
 #include "bench/cli/gpu_session.hpp"
 #include "harness/core/error.hpp"
-#include "harness/core/platform_arguments.hpp"
-#include "harness/core/platform_console.hpp"
-#include "harness/core/program_name.hpp"
 #include "harness/generators/device_view.hpp"
 #include "harness/generators/fis/fis_generator.hpp"
 #include "harness/scene/named_scene.hpp"
@@ -155,9 +153,4 @@ int run(int argc, char** argv) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  vsgl::set_program_name("vsgl-mipbench");
-  vsgl::use_utf8_console();
-  vsgl::Utf8Arguments args(argc, argv);  // file names beyond the ANSI code page on Windows
-  return vsgl::cli::run_reporting_errors([&] { return run(args.argc(), args.argv()); });
-}
+int main(int argc, char** argv) { return vsgl::cli::run_program("vsgl-mipbench", argc, argv, run); }
