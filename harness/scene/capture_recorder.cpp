@@ -8,6 +8,7 @@
 #include <optional>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "harness/core/portable_float.hpp"
 #include "harness/vk/buffer.hpp"
 #include "harness/vk/device.hpp"
 #include "harness/core/error.hpp"
@@ -517,7 +518,7 @@ Capture CaptureRecorder::record(const Scene& scene, const RecordSizes& sizes, ui
   capture.gbuffer = render_view(device_, pass.get(), pipeline, depth_format, mesh, ViewKind::kCamera,
                                 sizes.gbuffer_width, sizes.gbuffer_height, camera_push);
 
-  const float cos_cone = std::cos(glm::radians(scene.light.cone_half_angle_deg));
+  const float cos_cone = portable::cos(glm::radians(scene.light.cone_half_angle_deg));
   RasterPush light_push{light.projection * light.view, glm::vec4(scene.light.position, 1.0f),
                         glm::vec4(glm::normalize(scene.light.direction), cos_cone),
                         glm::vec4(scene.light.intensity, rsm_texel_area(scene.light, sizes.rsm_size))};

@@ -10,6 +10,7 @@
 #include <numbers>
 
 #include "harness/core/error.hpp"
+#include "harness/core/portable_float.hpp"
 #include "harness/scene/scene_geometry.hpp"
 #include "harness/scene/surface_detail.hpp"
 
@@ -199,13 +200,13 @@ SceneSetup make_tiny() {
 // Moves light and camera to phase phi. Applied to every frame, the static one included (phi = 0),
 // so frame 0 of a sequence and the static scene come from the same arithmetic on the same inputs.
 void apply_motion(Scene& scene, const SceneMotion& motion, float phi) {
-  const float s = std::sin(phi), c1 = 1.0f - std::cos(phi);  // both exactly 0 at phi = 0
+  const float s = portable::sin(phi), c1 = 1.0f - portable::cos(phi);  // both exactly 0 at phi = 0
 
   SpotLightDesc& light = scene.light;
   light.position += motion.light_circle_m * glm::vec3(c1, 0.0f, s);
   // Precession of the axis: tilt it towards its own "right" and "up" by a small vector.
   const glm::vec3 right = glm::cross(light.direction, light.up);
-  const float tilt = std::tan(motion.aim_wobble_deg * std::numbers::pi_v<float> / 180.0f);
+  const float tilt = portable::tan(motion.aim_wobble_deg * std::numbers::pi_v<float> / 180.0f);
   light.direction = glm::normalize(light.direction + tilt * (s * right + c1 * light.up));
   light.up = light_up_for(light.direction);
 

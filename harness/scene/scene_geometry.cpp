@@ -6,6 +6,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "harness/core/portable_float.hpp"
+
 namespace vsgl {
 namespace {
 
@@ -161,8 +163,8 @@ void add_open_cylinder(SceneMesh& mesh, glm::vec3 base_centre, float radius, flo
   for (uint32_t k = 0; k <= sides; ++k) {
     const uint32_t at = k % sides;
     const float theta = 2.0f * std::numbers::pi_v<float> * static_cast<float>(at) / static_cast<float>(sides);
-    const glm::vec3 outward(std::sin(theta), 0.0f, std::cos(theta));
-    const glm::vec4 tangent(std::cos(theta), 0.0f, -std::sin(theta), 1.0f);
+    const glm::vec3 outward(portable::sin(theta), 0.0f, portable::cos(theta));
+    const glm::vec4 tangent(portable::cos(theta), 0.0f, -portable::sin(theta), 1.0f);
     const float u = u_turn * static_cast<float>(k) / static_cast<float>(sides);
     const glm::vec3 bottom = base_centre + radius * outward;
     mesh.vertices.push_back(make_vertex(bottom, outward, material, {u, 0.0f}, tangent));

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "harness/core/error.hpp"
+#include "harness/core/portable_float.hpp"
 
 namespace vsgl {
 namespace {
@@ -29,11 +30,9 @@ std::array<float, 4> box4(uint32_t w, uint32_t h, uint32_t x, uint32_t y, Read r
 
 }  // namespace
 
-float srgb_to_linear(float e) { return e <= 0.04045f ? e / 12.92f : std::pow((e + 0.055f) / 1.055f, 2.4f); }
+float srgb_to_linear(float e) { return e <= 0.04045f ? e / 12.92f : portable::pow((e + 0.055f) / 1.055f, 2.4f); }
 
-float linear_to_srgb(float l) {
-  return l <= 0.0031308f ? 12.92f * l : 1.055f * std::pow(l, 1.0f / 2.4f) - 0.055f;
-}
+float linear_to_srgb(float l) { return l <= 0.0031308f ? 12.92f * l : 1.055f * portable::pow(l, 1.0f / 2.4f) - 0.055f; }
 
 void compute_tangents(std::vector<SceneVertex>& vertices, const std::vector<uint32_t>& indices) {
   std::vector<glm::vec3> along_u(vertices.size(), glm::vec3(0.0f)), along_v(vertices.size(), glm::vec3(0.0f));

@@ -11,6 +11,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "harness/core/portable_float.hpp"
 #include "harness/scene/detail/gltf_materials.hpp"
 #include "harness/scene/scene_textures.hpp"
 
@@ -232,7 +233,7 @@ CameraDesc framing_camera(glm::vec3 lo, glm::vec3 hi, float fov_y_deg) {
   const float radius = std::max(0.5f * glm::length(hi - lo), 1e-3f);
   // From the front (+z) and somewhat above: the usual glTF orientation (y up, facing +z).
   const glm::vec3 dir = glm::normalize(glm::vec3(0.35f, 0.45f, 1.0f));
-  const float distance = radius / std::sin(glm::radians(0.5f * fov_y_deg)) * 1.05f;
+  const float distance = radius / portable::sin(glm::radians(0.5f * fov_y_deg)) * 1.05f;
   CameraDesc c;
   c.position = centre + dir * distance;
   c.target = centre;
