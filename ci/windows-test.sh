@@ -5,7 +5,8 @@
 # persistent wineserver (else each process pays Wine's start-up again).
 #   1. the programs need no DLL but Windows' own and vulkan-1.dll;
 #   2. an end-to-end run of vsgl-bench.exe in a folder with a non-ASCII name: devices (lists
-#      llvmpipe), record --scene tiny, verify, tables --quick, dashboard.
+#      llvmpipe), record --scene tiny, verify, tables --quick, dashboard;
+#   3. the tiny capture hashes alike from the Windows and the Linux program (where one is built).
 # Without mingw-w64, Wine or Xvfb it is skipped, and says so (exit 0).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -68,6 +69,22 @@ run devices
 grep -q llvmpipe <<<"$out" || fail "devices lists no llvmpipe"
 run record --scene tiny --out "$work/capture-µ"
 run verify --capture "$work/capture-µ"
+# 3. The same capture on both hosts (DESIGN.md §13.1): every channel hash of the Windows program's
+#    tiny capture equals the Linux program's, when a Linux build is here to record it.
+linux_bin=""
+for b in build/ci/bench/vsgl-bench build/release/bench/vsgl-bench; do [[ -x $b ]] && { linux_bin=$b; break; }; done
+if [[ -n $linux_bin ]]; then
+  "$linux_bin" record --scene tiny --out build/windows-cross/e2e/linux-tiny >/dev/null
+  python3 - "$work/capture-µ/capture.json" build/windows-cross/e2e/linux-tiny/capture.json <<'PY' || fail "the Windows and Linux captures of tiny differ"
+import json, sys
+w, l = (json.load(open(p, encoding="utf-8")) for p in sys.argv[1:3])
+differ = [f"{v}.{c}" for v in ("gbuffer", "rsm") for c in l[v]["channels"] if w[v]["channels"].get(c) != l[v]["channels"][c]]
+print(f"ci/windows-test.sh: {len(differ)} channel hashes differ between the Windows and Linux captures of tiny", *differ)
+sys.exit(1 if differ else 0)
+PY
+else
+  echo "ci/windows-test.sh: no Linux build (build/ci or build/release): the Windows and Linux captures are not compared"
+fi
 run tables --quick --capture "$work/capture-µ" --out "$work/results"
 ls "$work/results"/*.json >/dev/null 2>&1 || fail "tables wrote no JSON into $work/results"
 run dashboard results/lavapipe --out "$work/dashboard"  # the committed tables (tableN.json)
