@@ -54,12 +54,7 @@ TEST(QualityModel, CommittedReportsRenderAsCommitted) {
 TEST(QualityModel, ClaimVerdictsFromTheModelMatchTheCommittedOnes) {
   for (const fs::path& f : committed_reports()) {
     SCOPED_TRACE(f.string());
-    nlohmann::json committed = read_report(f);
-    // The committed files predate the citation of DESIGN.md: they name the same section of the
-    // design contract the project kept outside its repository then.
-    const std::string old_source = std::string("paper_tables.json claims[3]; SPEC ") + "\u00a711a";
-    for (auto& c : committed["claims"])
-      if (c["source"] == old_source) c["source"] = "paper_tables.json claims[3]; DESIGN.md \u00a711a";
+    const nlohmann::json committed = read_report(f);
     nlohmann::json doc = committed;
     doc.erase("claims");
     add_claim_verdicts(doc);
