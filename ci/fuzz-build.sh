@@ -2,8 +2,13 @@
 # Builds the libFuzzer targets (tests/fuzz) with clang into build/fuzz, apart from the g++ build.
 # Exit 0: built. Exit 77: no clang with libFuzzer on this machine (nothing built; says why).
 # Usage: bash ci/fuzz-build.sh          (CLANGXX=clang++-15 to pick another clang)
+#        bash ci/fuzz-build.sh --check  (only whether clang can build them: 0 or 77; builds nothing)
 set -euo pipefail
 cd "$(dirname "$0")/.."
+check_only=0
+if [[ "${1:-}" == --check ]]; then check_only=1; elif [[ $# -gt 0 ]]; then
+  echo "ci/fuzz-build.sh: unknown argument '$1' (usage: bash ci/fuzz-build.sh [--check])" >&2; exit 2
+fi
 clangxx=${CLANGXX:-}
 if [[ -z "$clangxx" ]]; then
   for c in clang++ clang++-16 clang++-15 clang++-14; do
@@ -23,6 +28,7 @@ if ! "$clangxx" -fsanitize=fuzzer,address,undefined "$probe/p.cpp" -o "$probe/p"
   sed 's/^/  /' "$probe/err" | head -5 >&2
   exit 77
 fi
+[[ $check_only -eq 1 ]] && exit 0
 # One build at a time (the suite's fuzz_smoke and a long ci/fuzz.sh may start together).
 mkdir -p build
 exec 9>build/fuzz-build.lock

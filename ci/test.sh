@@ -11,6 +11,8 @@ bash ci/check-format.sh
 start=$(date +%s)
 cmake --preset ci
 cmake --build --preset ci
+# The libFuzzer targets (clang), outside the default build; the suite's fuzz_smoke runs them.
+cmake --build --preset ci --target vsgl_fuzz_targets
 built=$(date +%s)
 # Tests pick lavapipe (VSGL_TEST_DEVICE overrides) even when a GPU is present.
 ctest --preset ci -j "$(nproc)"
