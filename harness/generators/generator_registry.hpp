@@ -8,16 +8,11 @@
 #include <string_view>
 #include <vector>
 
+#include "harness/core/generator_ids.hpp"  // kFisTok15 ..., the ids the descriptors carry
 #include "harness/generators/generator_descriptor.hpp"
 #include "harness/generators/vsgl_generator.hpp"
 
 namespace vsgl {
-
-// The names of the paper's generators, for the claims that are about a given column.
-inline constexpr std::string_view kFisTok15 = "fis_tok15";
-inline constexpr std::string_view kFisModified = "fis_modified";
-inline constexpr std::string_view kKmeans2d = "kmeans_2d";
-inline constexpr std::string_view kKmeans3d = "kmeans_3d";
 
 const std::vector<GeneratorDescriptor>& generator_descriptors();
 
