@@ -196,12 +196,12 @@ Command add_record_command(CLI::App& parent) {
                     ->default_str("atrium");
   auto* model = add_optional(*app, "--model", o->model,
                              "a scene file instead: glTF 2.0 (.gltf, .glb) or Wavefront OBJ + MTL (.obj) "
-                             "(README \"Your own scenes\")")
+                             "(docs/scenes.md, \"Your own scenes\")")
                     ->check(input_file("--model"))
                     ->excludes(scene);
   auto* gltf = add_optional(*app, "--gltf", o->gltf,
                             "a glTF 2.0 file (.gltf or .glb) instead: its default scene, materials, textures and "
-                            "normal maps (README \"Your own scenes\")")
+                            "normal maps (docs/scenes.md, \"Your own scenes\")")
                    ->check(input_file("--gltf"))
                    ->excludes(scene)
                    ->excludes(model);
