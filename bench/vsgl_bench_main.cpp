@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include "bench/cli/command_line.hpp"
+#include "bench/cli/command_summaries.hpp"
 #include "bench/cli/commands.hpp"
 #include "bench/cli/exit_codes.hpp"
 #include "bench/cli/program_main.hpp"
@@ -31,6 +32,7 @@ int dispatch(int argc, char** argv) {
       vsgl::cli::add_sweep_command(app),     vsgl::cli::add_compare_command(app), vsgl::cli::add_export_command(app),
       vsgl::cli::add_dashboard_command(app),
   };
+  vsgl::cli::list_commands_in_one_line(app);  // each command's own --help keeps its whole description
   app.footer("`vsgl-bench <command> --help` lists a command's options.\n\n" + vsgl::cli::exit_codes_help());
   if (argc == 2 && std::string(argv[1]) == "help") {  // `vsgl-bench help`, as before: the top-level help
     std::fputs(app.help().c_str(), stdout);

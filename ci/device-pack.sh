@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Packs what ci/device-run.sh needs on the GPU machine, which lacks this project's build
+# Packs what ci/device-run.sh needs on a GPU machine that lacks this project's build
 # dependencies, into .device-pack/ (as tools.tar.xz): the four binaries (vsgl-bench, vsgl-gbench,
 # vsgl-mipbench, vsgl_tests) with the layer table the tests check (harness_layers.txt), the shared
 # libraries they link (all but the C runtime), the Khronos validation layer; and build.env: where
@@ -7,14 +7,16 @@
 # were built from (with `dirty=true` when tracked files differed from it), which ci/device-run.sh
 # puts into its results and ci/import-device-results.sh compares with the checkout.
 #
-# The captures are not packed: the paper-size captures with surface detail are 67 + 51 MiB, over
-# the 64 MiB of working tree the GPU machine takes, so ci/device-run.sh records them there. Their
-# channel hashes land in the tables' JSON, so any difference from lavapipe's bytes is on record.
+# The captures are not packed: the paper-size captures with surface detail are 67 + 51 MiB, more
+# than the whole pack may hold (48 MiB, so that it travels with a copy of the checkout), so
+# ci/device-run.sh records them there. Their channel hashes land in the tables' JSON, so any
+# difference from lavapipe's bytes is on record.
 # The paper's scenes' models (37 MiB as glTF: Sponza and the Conference room) are packed instead,
 # xz-compressed (11 MiB) as scenes.tar.xz, from the first asset directory that holds both
-# (--assets DIR, else ../shared/scenes beside the checkout); scenes.txt lists what was packed with
-# each file's size and SHA-256, and the tables' JSON names each model by its content hash. Without
-# them the pack holds no models and the run times the procedural stand-ins, and says so.
+# (--assets DIR, then the directories of VSGL_ASSETS, then those the packed build's tests use,
+# its VSGL_TEST_ASSETS, then assets/); scenes.txt lists what was packed with each file's size and
+# SHA-256, and the tables' JSON names each model by its content hash. Without them the pack holds
+# no models and the run times the procedural stand-ins, and says so.
 #
 # Usage: bash ci/device-pack.sh [BUILD_DIR]   a release build: build/release, else build/ci
 #        bash ci/device-pack.sh --gl          also fetch the Vulkan loader and GL dispatch .debs
@@ -35,7 +37,6 @@ while [[ $# -gt 0 ]]; do
   esac
   shift
 done
-assets+=("$(pwd)/../shared/scenes")
 if [[ -z "$build" ]]; then
   for b in build/release build/ci; do [[ -x $b/bench/vsgl-bench ]] && { build=$b; break; }; done
 fi
@@ -46,6 +47,12 @@ for exe in "${binaries[@]}"; do
   [[ -x $build/$exe ]] || { echo "ci/device-pack.sh: $build/$exe is missing: build every target of $build first" >&2; exit 1; }
 done
 [[ -f $build/harness_layers.txt ]] || { echo "ci/device-pack.sh: $build/harness_layers.txt is missing: configure $build with cmake first" >&2; exit 1; }
+# Where else the paper's scenes may be: the asset search path of the programs (VSGL_ASSETS, then
+# assets/), with the build's test scenes (VSGL_TEST_ASSETS in its CMake cache) before assets/.
+IFS=: read -r -a more <<< "${VSGL_ASSETS:-}"
+assets+=("${more[@]}")
+IFS=: read -r -a more <<< "$(sed -n 's/^VSGL_TEST_ASSETS:[A-Z]*=//p' "$build/CMakeCache.txt" 2>/dev/null)"
+assets+=("${more[@]}" assets)
 layer_json=/usr/share/vulkan/explicit_layer.d/VkLayer_khronos_validation.json
 layer_lib=$(ldconfig -p | awk '/libVkLayer_khronos_validation.so/ {print $NF; exit}')
 [[ -f $layer_json && -n "$layer_lib" ]] || { echo "ci/device-pack.sh: the Khronos validation layer is not installed (bash ci/install-deps.sh)" >&2; exit 1; }
@@ -104,6 +111,6 @@ size=$(du -sm "$pack" | cut -f1)
 echo "ci/device-pack.sh: $pack holds $size MiB (from $build)"
 du -sh "$pack"/* .gl 2>/dev/null || true
 if (( size > 48 )); then
-  echo "ci/device-pack.sh: $pack is over 48 MiB; with the working tree it would pass the 64 MiB the GPU machine takes" >&2
+  echo "ci/device-pack.sh: $pack is over 48 MiB, the most it may hold to travel with a copy of the checkout" >&2
   exit 1
 fi

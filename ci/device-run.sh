@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The whole run on the GPU machine, from a pack made here by ci/device-pack.sh, in one command
+# The whole run on a GPU machine, from a pack made here by ci/device-pack.sh, in one command
 # and inside a wall-time budget. Steps run most valuable first, so a run cut short still brings
 # back what matters most:
 #   1 devices (--json) and nvidia-smi     5 tables with --pyramid buffer
@@ -30,8 +30,8 @@
 #   bash ci/device-run.sh OUT [--quick] [--budget SECONDS]
 #   --quick       the rehearsal on lavapipe: 480x272 captures with a 128^2 RSM, tables --quick,
 #                 3 replays per benchmark on Table 1 only, vsgl-gbench for the FIS generators
-#   --budget S    wall-time budget of the whole run [540: the GPU machine's 10-minute command
-#                 limit, less its start-up and the transfers]
+#   --budget S    wall-time budget of the whole run [540: nine minutes, so that a run given ten
+#                 has time left to start and to copy its results back]
 # Exit: 0 if every step ran and passed, 1 otherwise (run.log names the steps), 2 on bad usage or
 # no pack. Bring OUT/results.tar.* back and file it with ci/import-device-results.sh.
 set -uo pipefail
@@ -55,7 +55,7 @@ pack=$PWD/.device-pack
 if [[ -f $pack/tools.tar.xz && ! -x $pack/bin/vsgl-bench ]]; then
   timeout 120 bash -c 'xz -dc "$1" | tar xf - -C "$2"' _ "$pack/tools.tar.xz" "$pack"
 fi
-[[ -x $pack/bin/vsgl-bench && -f $pack/build.env ]] || { echo "ci/device-run.sh: no pack in $pack: run bash ci/device-pack.sh first (here, not on the GPU machine)" >&2; exit 2; }
+[[ -x $pack/bin/vsgl-bench && -f $pack/build.env ]] || { echo "ci/device-run.sh: no pack in $pack: run bash ci/device-pack.sh first (where the build is, not on the GPU machine)" >&2; exit 2; }
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
 run=$(mktemp -d)

@@ -6,7 +6,7 @@
 # lavapipe on a 2-core machine. Not part of .ci/run.
 #
 # The scenes are the paper's own, Crytek Sponza (Table 1) and the Conference room (Table 2), from
-# their models on the asset search path (README "The paper's scenes"); the results go to
+# their models on the asset search path (docs/scenes.md, "The paper's scenes"); the results go to
 # results/lavapipe. With --stand-ins the procedural stand-ins atrium and conference are used and the
 # results go to results/lavapipe/stand-ins, so both stay side by side.
 # The sweep step times every generator along each axis of `vsgl-bench sweep` (N, G-buffer and RSM

@@ -4,10 +4,13 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <regex>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "bench/cli/command_summaries.hpp"
 #include "bench/cli/exit_codes.hpp"
 #include "cli_runner.hpp"
 #include "harness/core/error.hpp"
@@ -33,6 +36,33 @@ TEST(CliUsage, TopLevelHelpListsEveryCommandAndTheExitCodeTable) {
   const auto help = run_cli_without_vulkan("help");
   EXPECT_EQ(help.exit_code, 0) << help.output;
   EXPECT_EQ(help.output, r.output);
+}
+
+// Like git and cargo: the top-level help lists each command in one line, its summary; the
+// command's own help keeps the whole description.
+TEST(CliUsage, TopLevelHelpListsEachCommandInOneLine) {
+  const auto r = run_cli_without_vulkan("--help");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::istringstream in(r.output);
+  std::string line;
+  while (std::getline(in, line) && line != "Commands:") {}
+  ASSERT_FALSE(in.eof()) << "no Commands section\n" << r.output;
+  std::vector<std::string> listed;
+  const std::regex command_line("^  ([a-z]+) +(.+)$");
+  while (std::getline(in, line) && !line.empty()) {
+    std::smatch m;
+    ASSERT_TRUE(std::regex_match(line, m, command_line)) << "not one command in one line: '" << line << "'";
+    EXPECT_FALSE(cli::command_summary(m[1].str()).empty()) << m[1];
+    EXPECT_EQ(m[2].str(), cli::command_summary(m[1].str()));
+    EXPECT_LE(line.size(), 110u) << line;
+    listed.push_back(m[1]);
+  }
+  EXPECT_EQ(listed, (std::vector<std::string>{"devices", "record", "verify", "shade", "quality", "tables", "sweep",
+                                              "compare", "export", "dashboard"}));
+  EXPECT_FALSE(contains(r.output, "geometric-mean summary")) << "the whole description is the command's\n" << r.output;
+  const auto compare = run_cli_without_vulkan("compare --help");
+  ASSERT_EQ(compare.exit_code, 0) << compare.output;
+  EXPECT_TRUE(contains(compare.output, "geometric-mean summary")) << compare.output;
 }
 
 TEST(CliUsage, EachCommandsHelpShowsOnlyItsOwnOptions) {

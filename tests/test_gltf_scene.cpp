@@ -484,6 +484,7 @@ TEST(GltfRecordCli, RecordsTheRoomWithItsSourceInTheSidecar) {
   EXPECT_EQ(cap.meta.source->triangles, 12u);
   EXPECT_EQ(cap.meta.source->format, "gltf");
   EXPECT_EQ(cap.meta.source->content_hash, import_gltf(room).content_hash);
+  EXPECT_EQ(cap.meta.source->file, room.filename().string()) << "the file by its name, not where it lay";
   EXPECT_EQ(cap.meta.scene, "room");
 
   // verify and tables take it like any capture.
@@ -500,6 +501,7 @@ TEST(GltfRecordCli, RecordsTheRoomWithItsSourceInTheSidecar) {
   EXPECT_TRUE(table["table"].is_null());
   EXPECT_EQ(table["capture"]["source"]["triangles"], 12);
   EXPECT_EQ(table["capture"]["source"]["content_hash"], cap.meta.source->content_hash);
+  EXPECT_EQ(table["scene"]["model_file"], room.filename().string());
   const auto shade = test::run_cli("shade --capture " + (dir / "cap").string() + " --out " + (dir / "shade").string() +
                                    " --vsgls 64");
   EXPECT_EQ(shade.exit_code, 0) << shade.output;

@@ -3,9 +3,12 @@
 // size), against the Vulkan 1.2 required limits and the desktop baseline profile
 // VP_LUNARG_desktop_baseline_2023 (harness/vk/portability_baselines.hpp). A kernel over the
 // desktop baseline fails the audit unless its generator falls back to kernels that fit and that
-// fallback is tested (tests/test_device_limits.cpp). Prints the README's audit table.
+// fallback is tested (tests/test_device_limits.cpp). The table it prints is docs/portability.md's,
+// which must match it line for line.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <map>
 #include <set>
@@ -17,6 +20,8 @@
 
 namespace vsgl {
 namespace {
+
+namespace fs = std::filesystem;
 
 // Kernels with a tested fallback: the single pass falls back to blit or per-level, per-level to
 // blit or the buffer path (DeviceLimits.TooFewStorageImagesMakeTheSinglePassFallBack...,
@@ -58,6 +63,20 @@ TEST(PortabilityAudit, EveryKernelFitsTheDesktopBaselineOrHasATestedFallback) {
                     << " and has no tested fallback: " << does_not_fit_reason(desktop_baseline_2023_limits(), n);
   }
   std::cout << table.str();
+
+  // docs/portability.md holds this table between its markers, as printed here.
+  const fs::path doc = fs::path(VSGL_SOURCE_DIR) / "docs" / "portability.md";
+  std::ifstream in(doc);
+  ASSERT_TRUE(in) << doc;
+  std::string documented;
+  bool inside = false;
+  for (std::string line; std::getline(in, line);) {
+    if (line == "<!-- portability:end -->") inside = false;
+    if (inside) documented += line + "\n";
+    if (line == "<!-- portability:begin -->") inside = true;
+  }
+  EXPECT_EQ(documented, table.str()) << doc << " between <!-- portability:begin --> and <!-- portability:end --> "
+                                     << "is not this test's table; replace it with the table printed above";
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 // from VSGL_TEST_ASSETS), else skipped by name.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -118,7 +119,32 @@ TEST(ScenePresets, AMissingModelListsEveryPlaceLookedAndWhereToGetIt) {
   // Found in the second directory once it is there.
   fs::create_directories(tmp.path() / "a" / "m");
   std::ofstream(tmp.path() / "a" / "m" / "room.obj") << "v 0 0 0\n";
-  EXPECT_EQ(find_preset_model(p, search), tmp.path() / "a" / "m" / "room.obj");
+  const FoundModel found = find_preset_model(p, search);
+  EXPECT_EQ(found.file, tmp.path() / "a" / "m" / "room.obj");
+  EXPECT_EQ(found.name, "m/room.obj") << "the model relative to its asset directory";
+}
+
+// What a capture records of a preset's model is its path under the asset directory, never where
+// that directory lies (DESIGN.md §3.4): the same scene found elsewhere records the same file.
+TEST(ScenePresets, TheSourceNamesTheModelRelativeToItsAssetDirectory) {
+  test::TempDir tmp("relative");
+  const fs::path presets = tmp.path() / "presets";
+  write_preset(presets, "x", preset_text("x"));
+  for (const char* where : {"one", "two/deeper"}) {
+    fs::create_directories(tmp.path() / where / "m");
+    std::ofstream(tmp.path() / where / "m" / "room.obj") << "v -1 0 -1\nv 1 0 -1\nv 1 0 1\nv -1 0 1\nf 1 2 3 4\n";
+  }
+  std::string hash;
+  for (const char* where : {"one", "two/deeper"}) {
+    SCOPED_TRACE(where);
+    const SceneLibrary library{scene_preset_files(presets), make_asset_search({tmp.path() / where}, nullptr)};
+    const NamedScene scene = load_named_scene("x", library);
+    ASSERT_TRUE(scene.source.has_value());
+    EXPECT_EQ(scene.source->file, "m/room.obj");
+    EXPECT_NE(scene.import->file.find(where), std::string::npos) << "messages name the whole path";
+    if (hash.empty()) hash = scene.source->content_hash;
+    EXPECT_EQ(scene.source->content_hash, hash) << "the content hash is the file's, wherever it lies";
+  }
 }
 
 TEST(ScenePresets, UnknownSceneNamesListTheProceduralScenesAndThePresets) {
@@ -174,6 +200,8 @@ TEST_F(ScenePresetsTest, BothPaperScenesRecordAtReducedSizeWhenTheirModelsAreHer
     EXPECT_EQ(cap.meta.source->paper_table, preset.paper_table);
     EXPECT_EQ(paper_table_of(cap.meta), static_cast<int>(preset.paper_table));
     EXPECT_GT(cap.meta.source->triangles, 200000u) << "the paper's scenes have 262k and 331k triangles";
+    EXPECT_NE(std::find(preset.model.begin(), preset.model.end(), cap.meta.source->file), preset.model.end())
+        << cap.meta.source->file << ": the sidecar names the model relative to its asset directory";
     EXPECT_TRUE(cap.rsm.has_pdf);
     (void)r;
   }

@@ -15,6 +15,7 @@
 #include "bench/cli/gpu_session.hpp"
 #include "harness/core/error.hpp"
 #include "harness/core/platform_path.hpp"
+#include "harness/core/printable_text.hpp"
 #include "harness/scene/capture_provisioning.hpp"
 #include "harness/scene/named_scene.hpp"
 #include "harness/scene/gltf_scene.hpp"
@@ -117,8 +118,15 @@ int record_model_file(RecordOptions& o, GpuSession& session, const std::string& 
   print_import(import, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
   std::string ext = std::filesystem::path(file).extension().string();
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  const SceneSource source{ext == ".obj" ? "obj" : "gltf",          import.file,          import.content_hash,
-                           static_cast<uint32_t>(import.triangles), import.camera_source, import.light_source};
+  // The file by its name in the directory it was given in (DESIGN.md §3.4): the content hash
+  // identifies the model, and where it lay is the machine's, not the capture's.
+  const std::string name = printable_text(path_from_utf8(file).filename().string(), std::string_view::npos);
+  const SceneSource source{ext == ".obj" ? "obj" : "gltf",
+                           name,
+                           import.content_hash,
+                           static_cast<uint32_t>(import.triangles),
+                           import.camera_source,
+                           import.light_source};
   const std::filesystem::path base =
       o.out ? path_from_utf8(*o.out) : std::filesystem::path("captures") / import.scene.name;
   for (uint32_t f = 0; f < o.frames; ++f) {
@@ -188,12 +196,12 @@ Command add_record_command(CLI::App& parent) {
                     ->default_str("atrium");
   auto* model = add_optional(*app, "--model", o->model,
                              "a scene file instead: glTF 2.0 (.gltf, .glb) or Wavefront OBJ + MTL (.obj) "
-                             "(README \"Your own scenes\")")
+                             "(docs/scenes.md, \"Your own scenes\")")
                     ->check(input_file("--model"))
                     ->excludes(scene);
   auto* gltf = add_optional(*app, "--gltf", o->gltf,
                             "a glTF 2.0 file (.gltf or .glb) instead: its default scene, materials, textures and "
-                            "normal maps (README \"Your own scenes\")")
+                            "normal maps (docs/scenes.md, \"Your own scenes\")")
                    ->check(input_file("--gltf"))
                    ->excludes(scene)
                    ->excludes(model);

@@ -71,7 +71,9 @@ struct SpotLightDesc {
 // (sidecar key "source"; absent for the procedural scenes).
 struct SceneSource {
   std::string format;        // "gltf" (.gltf, .glb) or "obj" (.obj + .mtl)
-  std::string file;          // the file as named on the command line (escaped)
+  // The model file relative to the directory it was found in (escaped; DESIGN.md §3.4): a preset's
+  // candidate under its asset directory ("sponza/Sponza.gltf"), a file given directly by its name.
+  std::string file;
   std::string content_hash;  // "fnv1a64:<16 hex>" over the file, its buffers and its decoded images
   uint32_t triangles = 0;
   std::string camera;        // which camera was used, in words

@@ -22,13 +22,13 @@ AssetSearch make_asset_search(const std::vector<std::filesystem::path>& cli_dirs
   return out;
 }
 
-std::filesystem::path find_preset_model(const ScenePreset& preset, const AssetSearch& search) {
+FoundModel find_preset_model(const ScenePreset& preset, const AssetSearch& search) {
   std::string looked;
   for (const AssetDirectory& d : search.dirs)
     for (const std::string& candidate : preset.model) {
       const std::filesystem::path file = d.dir / candidate;
       std::error_code ec;
-      if (std::filesystem::is_regular_file(file, ec)) return file;
+      if (std::filesystem::is_regular_file(file, ec)) return FoundModel{file, candidate};
       looked += "\n  " + printable_text(file.string(), std::string_view::npos) + "  (" + d.origin + ")";
     }
   throw InputError("scene " + quoted_text(preset.name) + ": its model was not found; looked for" + looked +

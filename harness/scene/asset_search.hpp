@@ -24,9 +24,17 @@ struct AssetSearch {
 // empty: none), then assets/ in the current directory.
 AssetSearch make_asset_search(const std::vector<std::filesystem::path>& cli_dirs, const char* env_assets);
 
+// A preset's model as found: the file to read, and its name relative to the asset directory it was
+// found in (the preset's candidate, e.g. "sponza/Sponza.gltf"), which is what captures and tables
+// record (DESIGN.md §3.4): where the asset directory lies is the machine's, not the scene's.
+struct FoundModel {
+  std::filesystem::path file;
+  std::string name;
+};
+
 // The first of the preset's model candidates that exists as a regular file, over the directories in
 // order. Throws InputError (exit 3, nothing written) when none does: it lists every place looked and
 // says where to get the model.
-std::filesystem::path find_preset_model(const ScenePreset& preset, const AssetSearch& search);
+FoundModel find_preset_model(const ScenePreset& preset, const AssetSearch& search);
 
 }  // namespace vsgl

@@ -6,6 +6,7 @@
 #include <cstdlib>
 
 #include "harness/core/error.hpp"
+#include "harness/core/printable_text.hpp"
 #include "harness/scene/model_scene.hpp"
 
 namespace vsgl {
@@ -53,15 +54,17 @@ NamedScene load_named_scene(const std::string& name, const SceneLibrary& library
   out.name = name;
   if (procedural(name)) return out;
   out.preset = find_scene_preset(library.presets, name);
-  const std::filesystem::path model = find_preset_model(*out.preset, library.assets);
+  const FoundModel model = find_preset_model(*out.preset, library.assets);
   const auto t0 = std::chrono::steady_clock::now();
-  out.import = import_model(model, out.preset->camera, out.preset->light);
+  out.import = import_model(model.file, out.preset->camera, out.preset->light);
   out.import_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   out.import->scene.name = name;  // captures and tables are named after the preset, not the file
   out.import->motion = out.preset->motion;
   out.default_sizes = out.preset->sizes;
-  out.source = SceneSource{format_of(model),
-                           out.import->file,
+  // The model as the preset names it, relative to its asset directory (DESIGN.md §3.4), so a
+  // capture of it records the same file wherever the models lie; messages name the whole path.
+  out.source = SceneSource{format_of(model.file),
+                           printable_text(model.name, std::string_view::npos),
                            out.import->content_hash,
                            static_cast<uint32_t>(out.import->triangles),
                            "the scene preset " + name + ": " + out.import->camera_source,
