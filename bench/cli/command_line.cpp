@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <string>
 
+#include <CLI/CLI.hpp>
+
 #include "harness/core/error.hpp"
 #include "harness/core/program_name.hpp"
 

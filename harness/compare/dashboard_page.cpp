@@ -7,6 +7,8 @@
 #include <set>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
+
 #include "harness/compare/dashboard_svg.hpp"
 #include "harness/compare/svg_markup.hpp"
 #include "harness/core/error.hpp"

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include "harness/compare/dashboard_scaling.hpp"
 #include "harness/compare/regression_run.hpp"

@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include <nlohmann/json.hpp>
+
 #include "harness/core/error.hpp"
 #include "harness/core/json_schema_subset.hpp"
 

@@ -10,7 +10,7 @@
 //   "upper_value": q3}}}, in nanoseconds (Bencher's built-in latency measure is in ns).
 #include <string>
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include "harness/compare/regression_run.hpp"
 

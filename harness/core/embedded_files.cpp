@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <nlohmann/json.hpp>
+
 #include "harness/core/error.hpp"
 #include "harness/core/json_reader.hpp"
 

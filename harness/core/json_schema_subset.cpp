@@ -4,6 +4,8 @@
 #include <set>
 #include <stdexcept>
 
+#include <nlohmann/json.hpp>
+
 namespace vsgl {
 namespace {
 
