@@ -10,7 +10,7 @@
 
 #include "harness/sweep/measured_sweep.hpp"
 #include "harness/sweep/sweep_axis.hpp"
-#include "harness/sweep/sweep_report.hpp"
+#include "harness/sweep/sweep_document.hpp"
 
 namespace vsgl::test {
 
@@ -95,14 +95,17 @@ inline SweepContext synthetic_sweep_context(const std::string& device = "synthet
   return c;
 }
 
-// The sweep's document as `vsgl-bench sweep` writes it.
+// The sweep's document as `vsgl-bench sweep` fills it, and its JSON as it writes it.
+inline SweepModel synthetic_sweep_document(const MeasuredSweep& s,
+                                           const SweepContext& context = synthetic_sweep_context()) {
+  return sweep_document(s, sweep_fits(s), context);
+}
 inline nlohmann::ordered_json synthetic_sweep_json(const MeasuredSweep& s,
                                                    const SweepContext& context = synthetic_sweep_context()) {
-  return sweep_json(s, sweep_fits(s), context);
+  return to_json(synthetic_sweep_document(s, context));
 }
 
-// A claim object of the shape the sweep writes for its pdf-sharpness axis (the reader keeps the
-// object whole; only id, text, criterion, holds, note and informative are read).
+// A claim object of the shape the sweep writes for its pdf-sharpness axis.
 inline nlohmann::ordered_json synthetic_sweep_claim(const nlohmann::ordered_json& holds, const std::string& note) {
   return nlohmann::ordered_json{{"id", "pdf_independence"},
                                 {"text", "FIS cost is almost independent of the PDF, k-means cost is not"},

@@ -1,5 +1,5 @@
 // The PDF-independence claim judged on a pdf-sharpness sweep (harness/sweep/pdf_independence.hpp)
-// and the paper's point on the sweep plots (sweep_report.hpp), from synthetic samples: no device.
+// and the paper's point on the sweep plots (sweep_plots.hpp), from synthetic samples: no device.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -10,7 +10,9 @@
 #include "harness/core/json_schema_subset.hpp"
 #include "harness/report/paper_tables.hpp"
 #include "harness/sweep/pdf_independence.hpp"
-#include "harness/sweep/sweep_report.hpp"
+#include "harness/sweep/sweep_document.hpp"
+#include "harness/sweep/sweep_markdown.hpp"
+#include "harness/sweep/sweep_plots.hpp"
 
 namespace vsgl {
 namespace {
@@ -110,7 +112,8 @@ TEST(PdfIndependence, HoldsWhenFisStaysFlatAndKmeansMovesWithGamma) {
   ctx.build = nlohmann::ordered_json::object();
   ctx.paper = load_paper_tables(kSource / "results/paper/paper_tables.json");
   ctx.informative = true;
-  const auto doc = sweep_json(s, sweep_fits(s), ctx, claims);
+  const SweepModel document = sweep_document(s, sweep_fits(s), ctx, claims);
+  const auto doc = to_json(document);
   ASSERT_TRUE(doc.contains("claims"));
   EXPECT_EQ(doc["claims"][0]["id"], "pdf_independence");
   EXPECT_EQ(doc["claims"][0]["holds"], true);
@@ -118,9 +121,9 @@ TEST(PdfIndependence, HoldsWhenFisStaysFlatAndKmeansMovesWithGamma) {
   const auto schema = nlohmann::json::parse(std::ifstream(kSource / "results/schema/sweep.schema.json"));
   const auto problems = validate_against_schema(nlohmann::json::parse(doc.dump()), schema);
   EXPECT_TRUE(problems.empty()) << problems.front();
-  EXPECT_NE(sweep_markdown(s, sweep_fits(s), claims).find("## PDF independence: holds"), std::string::npos);
+  EXPECT_NE(sweep_markdown(document).find("## PDF independence: holds"), std::string::npos);
   // Without claims there is no "claims" key (the schema's minItems would refuse an empty one).
-  EXPECT_FALSE(sweep_json(s, sweep_fits(s), ctx).contains("claims"));
+  EXPECT_FALSE(to_json(sweep_document(s, sweep_fits(s), ctx)).contains("claims"));
 }
 
 TEST(PdfIndependence, DoesNotHoldWhenAFisTotalLeavesTheBand) {
@@ -177,7 +180,7 @@ TEST(SweepPaperReference, PlotsMarkThePaperAtItsSetupForAPaperScene) {
   const auto fits = sweep_fits(s);
   const auto count_references = [&](const MeasuredSweep& m) {
     std::size_t n = 0;
-    for (const auto& [name, svg] : sweep_plots(m, fits, &paper))
+    for (const auto& [name, svg] : sweep_plots(sweep_document(m, fits, SweepContext{}), &paper, m.paper_table))
       for (std::size_t at = svg.find("class=\"reference"); at != std::string::npos;
            at = svg.find("class=\"reference", at + 1))
         ++n;
@@ -188,7 +191,7 @@ TEST(SweepPaperReference, PlotsMarkThePaperAtItsSetupForAPaperScene) {
   // Table 1 gives every generator's view total and phases, but "only" is no phase of the paper's:
   // the total plot alone carries the marks, one per generator and view.
   EXPECT_GE(count_references(s), 8u);
-  const auto plots = sweep_plots(s, fits, &paper);
+  const auto plots = sweep_plots(sweep_document(s, fits, SweepContext{}), &paper, s.paper_table);
   bool total_marked = false;
   for (const auto& [name, svg] : plots)
     if (name == "sweep_vsgls_total.svg") total_marked = svg.find("paper, Table 1") != std::string::npos;

@@ -1,11 +1,15 @@
-// The sweep JSON read back into its typed model (harness/formats/sweep_model.hpp): a synthetic
-// sweep written by sweep_json() gives back its device, build, run, scene, axes, points and fits;
-// and a document that is not a sweep, of another version, with a key missing, a NaN or a fit that
-// points nowhere is an InputError naming the file and the JSON pointer. No device.
+// The sweep JSON and its typed model (harness/formats/sweep_model.hpp): a synthetic sweep filled
+// by sweep_document() and written by to_json() reads back as its device, build, run, scene, axes,
+// points and fits; every committed sweep.json reads and writes back byte for byte; and a document
+// that is not a sweep, of another version, with a key missing, a NaN or a fit that points nowhere
+// is an InputError naming the file and the JSON pointer. No device.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <limits>
 
 #include "harness/core/json_schema_subset.hpp"
@@ -28,23 +32,21 @@ const SweepFitModel& find_fit(const SweepModel& m, const std::string& axis, cons
   throw std::logic_error("no fit " + axis + " " + view + " " + phase + " " + slice);
 }
 
-TEST(SweepModel, ReaderKnowsTheVersionTheSweepWrites) { EXPECT_EQ(kReadableSweepSchemaVersion, kSweepSchemaVersion); }
-
 TEST(SweepModel, ReadsBackWhatTheSweepWrote) {
   const std::vector<SweepAxis> axes{parse_axis_spec("vsgls=8:32:x2"), parse_axis_spec("K=1,2")};
   const MeasuredSweep s = test::synthetic_sweep(axes, {"fis_modified", "kmeans_3d"});
   const std::vector<SweepFit> fits = sweep_fits(s);
-  const SweepModel m =
-      read_sweep_model(sweep_json(s, fits, test::synthetic_sweep_context("GPU X", "2026-02-03T04:05:06Z")), "mem");
+  const SweepModel m = read_sweep_model(
+      to_json(sweep_document(s, fits, test::synthetic_sweep_context("GPU X", "2026-02-03T04:05:06Z"))), "mem");
 
   EXPECT_EQ(m.schema_version, 1);
-  EXPECT_EQ(m.device_name, "GPU X");
+  EXPECT_EQ(m.device_name(), "GPU X");
   EXPECT_EQ(m.device["type"], "cpu");  // the whole object kept
-  ASSERT_TRUE(m.git_commit.has_value());
-  EXPECT_EQ(*m.git_commit, "0123456789abcdef");
-  EXPECT_FALSE(m.git_dirty);
-  EXPECT_EQ(m.started_utc, "2026-02-03T04:05:06Z");
-  EXPECT_TRUE(m.quick);
+  ASSERT_TRUE(m.git_commit().has_value());
+  EXPECT_EQ(*m.git_commit(), "0123456789abcdef");
+  EXPECT_FALSE(m.git_dirty());
+  EXPECT_EQ(m.started_utc(), "2026-02-03T04:05:06Z");
+  EXPECT_TRUE(m.quick());
   EXPECT_EQ(m.scene.name, "tiny");
   EXPECT_EQ(m.scene.kind, SceneKind::kProcedural);
   EXPECT_EQ(m.generators, (std::vector<std::string>{"fis_modified", "kmeans_3d"}));
@@ -105,7 +107,7 @@ TEST(SweepModel, ReadsBackWhatTheSweepWrote) {
   EXPECT_FALSE(m.claims.has_value());
 }
 
-TEST(SweepModel, GammaZeroIsReadOffTheLogAxisAndClaimsAreKeptWhole) {
+TEST(SweepModel, GammaZeroIsReadOffTheLogAxisAndClaimsAreRead) {
   const MeasuredSweep s = test::synthetic_sweep({parse_axis_spec("pdf-sharpness=0,1,2")});
   ojson doc = test::synthetic_sweep_json(s);
   doc["claims"] = ojson::array({test::synthetic_sweep_claim(nullptr, "too few rounds"),
@@ -122,9 +124,49 @@ TEST(SweepModel, GammaZeroIsReadOffTheLogAxisAndClaimsAreKeptWhole) {
   EXPECT_FALSE(inconclusive.holds.has_value());
   EXPECT_EQ(inconclusive.note, "too few rounds");
   EXPECT_TRUE(inconclusive.informative);
-  EXPECT_EQ(inconclusive.fields["band"], 0.1);
+  EXPECT_EQ(inconclusive.band, 0.1);
+  EXPECT_EQ(inconclusive.axis, "pdf-sharpness");
   EXPECT_EQ((*m.claims)[1].holds, std::optional<bool>(true));
   EXPECT_NE((*m.claims)[1].criterion.find("\u00b110 %"), std::string::npos);
+}
+
+// The committed sweeps (results/**/sweep.json) read into the model and write back as the same
+// bytes: the model holds everything a file says, and to_json says it the same way.
+TEST(SweepModel, EveryCommittedSweepRoundTripsByteForByte) {
+  namespace fs = std::filesystem;
+  std::size_t files = 0;
+  for (const auto& e : fs::recursive_directory_iterator(fs::path(VSGL_SOURCE_DIR) / "results")) {
+    if (!e.is_regular_file() || e.path().filename() != "sweep.json") continue;
+    SCOPED_TRACE(e.path().string());
+    ++files;
+    const std::string text = test::read_text(e.path());
+    const SweepModel m = read_sweep_file(e.path());
+    const std::string written = to_json(m).dump(2) + "\n";
+    EXPECT_EQ(written.size(), text.size());
+    EXPECT_TRUE(written == text) << "first difference at byte "
+                                 << std::distance(
+                                        text.begin(),
+                                        std::mismatch(text.begin(), text.end(), written.begin(), written.end()).first);
+  }
+  EXPECT_GE(files, 7u) << "the committed sweeps (results/lavapipe/sweep/*/sweep.json)";
+}
+
+// What the sweep fills reads back as the same document, claims included; and a change the writer
+// drops would show (the reader keeps the optional keys as they were).
+TEST(SweepModel, WhatTheSweepFillsReadsBackAsTheSameDocument) {
+  MeasuredSweep s = test::synthetic_sweep({parse_axis_spec("gbuffer=96x64,192x128"), parse_axis_spec("K=1,2")});
+  s.beyond_device.push_back(BeyondDevicePoint{{1, 1}, "fis_modified", "light_view", "too large"});
+  ojson doc = test::synthetic_sweep_json(s);
+  doc["claims"] = ojson::array({test::synthetic_sweep_claim(false, "moves")});
+  const SweepModel m = read_sweep_model(doc, "mem");
+  EXPECT_EQ(m.axes[0].values[1].width, std::optional<uint32_t>(192));
+  EXPECT_FALSE(m.axes[1].values[0].width.has_value());
+  EXPECT_EQ(m.points[2].timing.stop_reason, "max_repetitions");
+  EXPECT_EQ(m.points[2].cases[0].dispatches, 5u);
+  EXPECT_EQ(to_json(m).dump(), doc.dump());
+  ojson older = doc;
+  older.erase("complete");
+  EXPECT_EQ(to_json(read_sweep_model(older, "mem")).dump(), older.dump());
 }
 
 TEST(SweepModel, RefusesWhatIsNotASweepOfThisVersion) {

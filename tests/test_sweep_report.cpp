@@ -1,7 +1,8 @@
-// The sweep's fits and outputs from synthetic samples (harness/sweep/measured_sweep.hpp,
-// sweep_report.hpp): slopes along each axis with the other held, the expectations and the flag
-// when an interval excludes them, the JSON against results/schema/sweep.schema.json, the markdown
-// and the plots; and the PDF-sharpness transform (pdf_sharpening.hpp). No device, no timing.
+// The sweep's fits and outputs from synthetic samples (harness/sweep/measured_sweep.hpp, the
+// document of sweep_document.hpp and its renderers): slopes along each axis with the other held,
+// the expectations and the flag when an interval excludes them, the JSON against
+// results/schema/sweep.schema.json, the markdown and the plots; and the PDF-sharpness transform
+// (pdf_sharpening.hpp). No device, no timing.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -14,7 +15,9 @@
 #include "harness/sweep/measured_sweep.hpp"
 #include "harness/sweep/pdf_sharpening.hpp"
 #include "harness/sweep/sweep_expectations.hpp"
-#include "harness/sweep/sweep_report.hpp"
+#include "harness/sweep/sweep_document.hpp"
+#include "harness/sweep/sweep_markdown.hpp"
+#include "harness/sweep/sweep_plots.hpp"
 #include "test_support.hpp"
 
 namespace vsgl {
@@ -137,7 +140,7 @@ TEST(SweepReport, JsonConformsToTheSchemaAndKeepsTheRawSamples) {
   const std::vector<SweepAxis> axes{parse_axis_spec("vsgls=8:32:x2"), parse_axis_spec("K=1,2")};
   const MeasuredSweep s = synthetic_sweep(axes);
   const auto fits = sweep_fits(s);
-  const nlohmann::ordered_json doc = sweep_json(s, fits, synthetic_context());
+  const nlohmann::ordered_json doc = to_json(sweep_document(s, fits, synthetic_context()));
   const nlohmann::json schema = test::read_json(kSchema);
   ASSERT_TRUE(schema_subset_problems(schema).empty());
   const auto problems = validate_against_schema(nlohmann::json::parse(doc.dump()), schema);
@@ -168,7 +171,7 @@ TEST(SweepReport, JsonConformsToTheSchemaAndKeepsTheRawSamples) {
 TEST(SweepReport, MarkdownHasATablePerAxisAndSliceWithTheFits) {
   const std::vector<SweepAxis> axes{parse_axis_spec("vsgls=8:32:x2"), parse_axis_spec("K=1,2")};
   const MeasuredSweep s = synthetic_sweep(axes);
-  const std::string md = sweep_markdown(s, sweep_fits(s));
+  const std::string md = sweep_markdown(sweep_document(s, sweep_fits(s), synthetic_context()));
   EXPECT_NE(md.find("## Axis vsgls (`vsgls=8:32:x2`)"), std::string::npos) << md;
   EXPECT_NE(md.find("## Axis K (`K=1,2`)"), std::string::npos) << md;
   EXPECT_NE(md.find("### K=2"), std::string::npos) << md;
@@ -178,10 +181,24 @@ TEST(SweepReport, MarkdownHasATablePerAxisAndSliceWithTheFits) {
   EXPECT_NE(md.find("vsgls=16 |"), std::string::npos) << md;
 }
 
+// Each committed sweep.md is what the markdown renderer makes of the sweep.json beside it: the
+// renderer needs nothing but the document.
+TEST(SweepReport, EveryCommittedMarkdownIsItsDocumentRendered) {
+  std::size_t files = 0;
+  for (const auto& e :
+       std::filesystem::recursive_directory_iterator(std::filesystem::path(VSGL_SOURCE_DIR) / "results")) {
+    if (!e.is_regular_file() || e.path().filename() != "sweep.json") continue;
+    SCOPED_TRACE(e.path().string());
+    ++files;
+    EXPECT_EQ(sweep_markdown(read_sweep_file(e.path())), test::read_text(e.path().parent_path() / "sweep.md"));
+  }
+  EXPECT_GE(files, 7u);
+}
+
 TEST(SweepReport, OnePlotPerAxisAndPhase) {
   const std::vector<SweepAxis> axes{parse_axis_spec("vsgls=8:32:x2"), parse_axis_spec("K=1,2")};
   const MeasuredSweep s = synthetic_sweep(axes);
-  const auto plots = sweep_plots(s, sweep_fits(s));
+  const auto plots = sweep_plots(sweep_document(s, sweep_fits(s), synthetic_context()));
   ASSERT_EQ(plots.size(), 2u * 4u);
   EXPECT_EQ(plots[0].first, "sweep_vsgls_additional.svg");
   EXPECT_EQ(plots[2].first, "sweep_vsgls_filtered_sampling.svg");
@@ -205,10 +222,11 @@ TEST(SweepReport, GammaZeroStaysOffTheLogAxis) {
   EXPECT_EQ(f.fit->points, 2u);
   ASSERT_TRUE(f.judgement.has_value());  // FIS is expected not to depend on the PDF
   EXPECT_EQ(f.expected->slope, 0.0);
-  const auto doc = sweep_json(three, fits, synthetic_context());
+  const SweepModel document = sweep_document(three, fits, synthetic_context());
+  const auto doc = to_json(document);
   EXPECT_TRUE(validate_against_schema(nlohmann::json::parse(doc.dump()), test::read_json(kSchema)).empty());
   EXPECT_EQ(doc["points"][2]["pdf_sharpness"]["pdf_frequency"]["light_view"]["relative_variance"], 2.0);
-  EXPECT_NE(sweep_markdown(three, fits).find("## PDF frequency at each"), std::string::npos);
+  EXPECT_NE(sweep_markdown(document).find("## PDF frequency at each"), std::string::npos);
 }
 
 TEST(SweepExpectations, WhatEachAlgorithmPredicts) {

@@ -54,7 +54,8 @@ TEST_F(SweepRunTest, CasesAndPointsBeyondTheDeviceAreRecordedAndTheRestIsTimed) 
 
   ASSERT_EQ(out.measured.points.size(), 2u);  // N = 8 whole, N = 16 without fis_tok15
   EXPECT_EQ(out.measured.points[1].timing.cases.size(), 2u);
-  const auto& beyond = out.document["beyond_device"];
+  const nlohmann::ordered_json document = to_json(out.document);
+  const auto& beyond = document["beyond_device"];
   ASSERT_EQ(beyond.size(), 3u) << beyond.dump();
   EXPECT_EQ(beyond[0]["values"]["vsgls"], "16");
   EXPECT_EQ(beyond[0]["generator"], "fis_tok15");
@@ -88,7 +89,8 @@ TEST_F(SweepRunTest, CasesAndPointsBeyondTheDeviceAreRecordedAndTheRestIsTimed) 
   EXPECT_TRUE(problems.empty()) << problems.front();
   const SweepModel model = read_sweep_file(file);
   EXPECT_TRUE(model.complete);
-  EXPECT_EQ(out.document["complete"], true);
+  EXPECT_EQ(document["complete"], true);
+  EXPECT_EQ(test::read_text(file), document.dump(2) + "\n") << "sweep.json is the document the outcome holds";
   ASSERT_EQ(model.beyond_device.size(), 3u);
   EXPECT_EQ(model.beyond_device[0].generator, "fis_tok15");
   EXPECT_TRUE(model.beyond_device[2].generator.empty());

@@ -72,9 +72,14 @@ SweepTimingStats read_stats(const Reader& r, const ojson& series, const std::str
   const ojson& stats = r.object(series, p, "stats");
   const std::string sp = p + "/stats";
   SweepTimingStats out;
+  out.count = r.index(r.member(stats, sp, "count"), sp + "/count");
   out.median_ms = r.time(stats, sp, "median");
   out.q1_ms = r.time(stats, sp, "q1");
   out.q3_ms = r.time(stats, sp, "q3");
+  out.min_ms = r.time(stats, sp, "min");
+  out.max_ms = r.time(stats, sp, "max");
+  out.mean_ms = r.time(stats, sp, "mean");
+  out.stdev_ms = r.non_negative(r.member(stats, sp, "stdev"), sp + "/stdev");
   if (!(out.q1_ms <= out.median_ms && out.median_ms <= out.q3_ms))
     r.fail(sp, "has quartiles that do not enclose the median (q1 " + number_text(out.q1_ms, 6) + ", median " +
                    number_text(out.median_ms, 6) + ", q3 " + number_text(out.q3_ms, 6) + ")");
@@ -91,6 +96,7 @@ SweepCase read_case(const Reader& r, const ojson& c, const std::string& p) {
   out.view = r.string(c, p, "view");
   if (out.view != "camera_view" && out.view != "light_view")
     r.fail(p + "/view", "is " + quoted_text(out.view) + ", not camera_view or light_view");
+  out.dispatches = r.uint32(c, p, "dispatches");
   const ojson& phases = r.nonempty_array(c, p, "phases");
   for (std::size_t i = 0; i < phases.size(); ++i) {
     const std::string pp = p + "/phases/" + std::to_string(i);
@@ -113,9 +119,11 @@ SweepAxisModel read_axis(const Reader& r, const ojson& a, const std::string& p) 
     const std::string vp = p + "/values/" + std::to_string(i);
     const ojson& v = values[i];
     if (!v.is_object()) r.wrong_type(v, vp, "an object");
-    out.values.push_back(SweepAxisValue{r.string(v, vp, "text"),
-                                        r.non_negative(r.member(v, vp, "value"), vp + "/value"),
-                                        r.non_negative(r.member(v, vp, "growth_x"), vp + "/growth_x")});
+    SweepAxisValue value{r.string(v, vp, "text"), r.non_negative(r.member(v, vp, "value"), vp + "/value"),
+                         r.non_negative(r.member(v, vp, "growth_x"), vp + "/growth_x"), std::nullopt, std::nullopt};
+    if (v.contains("width")) value.width = r.uint32(v, vp, "width");
+    if (v.contains("height")) value.height = r.uint32(v, vp, "height");
+    out.values.push_back(std::move(value));
     for (std::size_t k = 0; k + 1 < out.values.size(); ++k)
       if (out.values[k].text == out.values.back().text)
         r.fail(vp + "/text", "repeats value " + quoted_text(out.values[k].text));
@@ -144,6 +152,34 @@ std::vector<std::size_t> read_value_index(const Reader& r, const ojson& pj, cons
   return out;
 }
 
+SweepPointTiming read_point_timing(const Reader& r, const ojson& t, const std::string& p) {
+  SweepPointTiming out;
+  out.time_cap_s = r.time(t, p, "time_cap_s");
+  out.repetitions = r.uint32(t, p, "repetitions");
+  out.timed_seconds = r.non_negative(r.member(t, p, "timed_seconds"), p + "/timed_seconds");
+  out.stop_reason = r.string(t, p, "stop_reason");
+  out.worst_noise = r.non_negative(r.member(t, p, "worst_noise"), p + "/worst_noise");
+  return out;
+}
+
+SweepPdfSharpness read_pdf_sharpness(const Reader& r, const ojson& s, const std::string& p) {
+  SweepPdfSharpness out;
+  out.gamma = r.non_negative(r.member(s, p, "gamma"), p + "/gamma");
+  out.definition = r.string(s, p, "definition");
+  const ojson& frequency = r.object(s, p, "pdf_frequency");
+  for (const auto& [view, f] : frequency.items()) {
+    const std::string fp = p + "/pdf_frequency/" + view;
+    if (!f.is_object()) r.wrong_type(f, fp, "an object");
+    SweepPdfFrequency freq;
+    freq.relative_variance = r.non_negative(r.member(f, fp, "relative_variance"), fp + "/relative_variance");
+    const ojson& shares = r.array(f, fp, "fine_share");
+    for (std::size_t k = 0; k < shares.size(); ++k)
+      freq.fine_share.push_back(r.non_negative(shares[k], fp + "/fine_share/" + std::to_string(k)));
+    out.frequency.emplace_back(view, std::move(freq));
+  }
+  return out;
+}
+
 SweepPoint read_point(const Reader& r, const ojson& pj, const std::string& p, std::size_t position,
                       const std::vector<SweepAxisModel>& axes) {
   if (!pj.is_object()) r.wrong_type(pj, p, "an object");
@@ -152,9 +188,15 @@ SweepPoint read_point(const Reader& r, const ojson& pj, const std::string& p, st
   if (out.index != position)
     r.fail(p + "/index", "is " + std::to_string(out.index) + ", not its position " + std::to_string(position));
   out.value_index = read_value_index(r, pj, p, axes);
+  out.capture_dir = r.string(pj, p, "capture_dir");
+  out.capture = r.object(pj, p, "capture");
+  out.config = r.object(pj, p, "config");
+  out.timing = read_point_timing(r, r.object(pj, p, "timing"), p + "/timing");
   const ojson& cases = r.nonempty_array(pj, p, "cases");
   for (std::size_t i = 0; i < cases.size(); ++i)
     out.cases.push_back(read_case(r, cases[i], p + "/cases/" + std::to_string(i)));
+  if (pj.contains("pdf_sharpness"))
+    out.pdf_sharpness = read_pdf_sharpness(r, r.object(pj, p, "pdf_sharpness"), p + "/pdf_sharpness");
   return out;
 }
 
@@ -194,7 +236,12 @@ SweepFitModel read_fit(const Reader& r, const ojson& f, const std::string& p, co
   if (!growth.is_null()) {
     if (!growth.is_object()) r.wrong_type(growth, p + "/growth", "an object or null");
     const std::string gp = p + "/growth";
-    out.growth = SweepGrowth{r.number(growth, gp, "slope"), r.number(growth, gp, "low"), r.number(growth, gp, "high"),
+    out.growth = SweepGrowth{r.number(growth, gp, "slope"),
+                             r.number(growth, gp, "low"),
+                             r.number(growth, gp, "high"),
+                             r.number(growth, gp, "confidence"),
+                             r.index(r.member(growth, gp, "resamples"), gp + "/resamples"),
+                             r.index(r.member(growth, gp, "points"), gp + "/points"),
                              r.string(growth, gp, "text")};
   }
   out.note = r.optional_string(f, p, "note").value_or("");
@@ -216,6 +263,28 @@ SweepFitModel read_fit(const Reader& r, const ojson& f, const std::string& p, co
   return out;
 }
 
+SweepClaimMeasure read_claim_measure(const Reader& r, const ojson& m, const std::string& p) {
+  if (!m.is_object()) r.wrong_type(m, p, "an object");
+  SweepClaimMeasure out;
+  out.generator = r.string(m, p, "generator");
+  out.view = r.string(m, p, "view");
+  out.family = r.string(m, p, "family");
+  out.in_paper = r.boolean(m, p, "in_paper");
+  out.spread = r.number(m, p, "spread");
+  out.spread_low = r.number(m, p, "spread_low");
+  out.spread_high = r.number(m, p, "spread_high");
+  const ojson& changes = r.array(m, p, "changes");
+  for (std::size_t k = 0; k < changes.size(); ++k) {
+    const std::string cp = p + "/changes/" + std::to_string(k);
+    const ojson& c = changes[k];
+    if (!c.is_object()) r.wrong_type(c, cp, "an object");
+    out.changes.push_back(SweepClaimChange{r.non_negative(r.member(c, cp, "gamma"), cp + "/gamma"),
+                                           r.index(r.member(c, cp, "point"), cp + "/point"), r.number(c, cp, "change"),
+                                           r.number(c, cp, "low"), r.number(c, cp, "high")});
+  }
+  return out;
+}
+
 std::vector<SweepClaim> read_claims(const Reader& r, const ojson& a) {
   if (!a.is_array()) r.wrong_type(a, "/claims", "an array");
   std::vector<SweepClaim> out;
@@ -226,16 +295,151 @@ std::vector<SweepClaim> read_claims(const Reader& r, const ojson& a) {
     SweepClaim claim;
     claim.id = r.string(c, p, "id");
     claim.text = r.string(c, p, "text");
+    claim.axis = r.string(c, p, "axis");
+    claim.slice = r.string_map(r.member(c, p, "slice"), p + "/slice");
     claim.criterion = r.string(c, p, "criterion");
+    claim.reference_gamma = r.non_negative(r.member(c, p, "reference_gamma"), p + "/reference_gamma");
+    claim.band = r.number(c, p, "band");
+    const ojson& measured = r.array(c, p, "measured");
+    for (std::size_t k = 0; k < measured.size(); ++k)
+      claim.measured.push_back(read_claim_measure(r, measured[k], p + "/measured/" + std::to_string(k)));
     const ojson& holds = r.member(c, p, "holds");
     if (!holds.is_null()) claim.holds = r.boolean(c, p, "holds");
     claim.note = r.string(c, p, "note");
     claim.informative = r.boolean(c, p, "informative");
-    if (c.contains("slice")) claim.slice = r.string_map(c["slice"], p + "/slice");
-    claim.fields = c;
     out.push_back(std::move(claim));
   }
   return out;
+}
+
+// The writer's side, key for key in the order the reader reads and the schema lists them.
+
+ojson string_map_json(const std::vector<std::pair<std::string, std::string>>& map) {
+  ojson j = ojson::object();
+  for (const auto& [key, value] : map) j[key] = value;
+  return j;
+}
+
+// A point's "values": each axis's name and value text.
+ojson values_json(const std::vector<SweepAxisModel>& axes, const std::vector<std::size_t>& value_index) {
+  ojson values = ojson::object();
+  for (std::size_t a = 0; a < axes.size(); ++a) values[axes[a].name] = axes[a].values[value_index[a]].text;
+  return values;
+}
+
+ojson stats_json(const SweepTimingStats& s) {
+  return ojson{{"count", s.count}, {"median", s.median_ms}, {"q1", s.q1_ms},     {"q3", s.q3_ms},
+               {"min", s.min_ms},  {"max", s.max_ms},       {"mean", s.mean_ms}, {"stdev", s.stdev_ms}};
+}
+
+ojson case_json(const SweepCase& c) {
+  ojson phases = ojson::array();
+  for (const SweepPhaseTiming& p : c.phases)
+    phases.push_back(ojson{{"name", p.name}, {"stats", stats_json(p.stats)}, {"samples_ms", p.stats.samples_ms}});
+  return ojson{{"generator", c.generator},
+               {"view", c.view},
+               {"dispatches", c.dispatches},
+               {"phases", phases},
+               {"total", ojson{{"stats", stats_json(c.total)}, {"samples_ms", c.total.samples_ms}}}};
+}
+
+ojson axis_json(const SweepAxisModel& a) {
+  ojson values = ojson::array();
+  for (const SweepAxisValue& v : a.values) {
+    ojson value{{"text", v.text}, {"value", v.value}, {"growth_x", v.growth_x}};
+    if (v.width) value["width"] = *v.width;
+    if (v.height) value["height"] = *v.height;
+    values.push_back(std::move(value));
+  }
+  return ojson{
+      {"name", a.name}, {"spec", a.spec}, {"symbol", a.symbol}, {"growth_x", a.growth_x_title}, {"values", values}};
+}
+
+ojson point_json(const SweepPoint& p, const std::vector<SweepAxisModel>& axes) {
+  ojson cases = ojson::array();
+  for (const SweepCase& c : p.cases) cases.push_back(case_json(c));
+  ojson point{{"index", p.index},
+              {"values", values_json(axes, p.value_index)},
+              {"capture_dir", p.capture_dir},
+              {"capture", p.capture},
+              {"config", p.config},
+              {"timing", ojson{{"time_cap_s", p.timing.time_cap_s},
+                               {"repetitions", p.timing.repetitions},
+                               {"timed_seconds", p.timing.timed_seconds},
+                               {"stop_reason", p.timing.stop_reason},
+                               {"worst_noise", p.timing.worst_noise}}},
+              {"cases", cases}};
+  if (p.pdf_sharpness) {
+    ojson frequency = ojson::object();
+    for (const auto& [view, f] : p.pdf_sharpness->frequency)
+      frequency[view] = ojson{{"relative_variance", f.relative_variance}, {"fine_share", f.fine_share}};
+    point["pdf_sharpness"] = ojson{
+        {"gamma", p.pdf_sharpness->gamma}, {"definition", p.pdf_sharpness->definition}, {"pdf_frequency", frequency}};
+  }
+  return point;
+}
+
+ojson beyond_json(const SweepBeyondDevice& b, const std::vector<SweepAxisModel>& axes) {
+  ojson entry{{"values", values_json(axes, b.value_index)}};
+  if (!b.generator.empty()) entry["generator"] = b.generator;
+  if (!b.view.empty()) entry["view"] = b.view;
+  entry["reason"] = b.reason;
+  return entry;
+}
+
+ojson fit_json(const SweepFitModel& f, const std::vector<SweepAxisModel>& axes) {
+  ojson j{{"axis", axes[f.axis].name}, {"slice", string_map_json(f.slice)},
+          {"generator", f.generator},  {"view", f.view},
+          {"phase", f.phase},          {"points", f.points},
+          {"growth_x", f.growth_x}};
+  if (f.growth) {
+    j["growth"] = ojson{{"slope", f.growth->slope},
+                        {"low", f.growth->low},
+                        {"high", f.growth->high},
+                        {"confidence", f.growth->confidence},
+                        {"resamples", f.growth->resamples},
+                        {"points", f.growth->points},
+                        {"text", f.growth->text}};
+  } else {
+    j["growth"] = nullptr;
+    j["note"] = f.note;
+  }
+  j["expected"] =
+      f.expected ? ojson{{"slope", f.expected->slope}, {"tolerance", f.expected->tolerance}, {"why", f.expected->why}}
+                 : ojson(nullptr);
+  j["verdict"] = f.verdict ? ojson(*f.verdict) : ojson(nullptr);
+  j["flagged"] = f.flagged;
+  if (f.verdict) j["judgement"] = f.judgement;
+  return j;
+}
+
+ojson claim_json(const SweepClaim& c) {
+  ojson measured = ojson::array();
+  for (const SweepClaimMeasure& m : c.measured) {
+    ojson changes = ojson::array();
+    for (const SweepClaimChange& g : m.changes)
+      changes.push_back(
+          ojson{{"gamma", g.gamma}, {"point", g.point}, {"change", g.change}, {"low", g.low}, {"high", g.high}});
+    measured.push_back(ojson{{"generator", m.generator},
+                             {"view", m.view},
+                             {"family", m.family},
+                             {"in_paper", m.in_paper},
+                             {"spread", m.spread},
+                             {"spread_low", m.spread_low},
+                             {"spread_high", m.spread_high},
+                             {"changes", changes}});
+  }
+  return ojson{{"id", c.id},
+               {"text", c.text},
+               {"axis", c.axis},
+               {"slice", string_map_json(c.slice)},
+               {"criterion", c.criterion},
+               {"reference_gamma", c.reference_gamma},
+               {"band", c.band},
+               {"measured", measured},
+               {"holds", c.holds ? ojson(*c.holds) : ojson(nullptr)},
+               {"note", c.note},
+               {"informative", c.informative}};
 }
 
 }  // namespace
@@ -252,6 +456,19 @@ const SweepCase* SweepPoint::find(const std::string& generator, const std::strin
     if (c.generator == generator && c.view == view) return &c;
   return nullptr;
 }
+
+std::string SweepModel::device_name() const { return device.at("name").get<std::string>(); }
+
+std::optional<std::string> SweepModel::git_commit() const {
+  if (!build.contains("git_commit")) return std::nullopt;
+  return build.at("git_commit").get<std::string>();
+}
+
+bool SweepModel::git_dirty() const { return build.contains("git_dirty") && build.at("git_dirty").get<bool>(); }
+
+std::string SweepModel::started_utc() const { return run.at("started_utc").get<std::string>(); }
+
+bool SweepModel::quick() const { return run.at("quick").get<bool>(); }
 
 std::size_t SweepModel::planned_points() const {
   std::size_t n = axes.empty() ? 0 : 1;
@@ -282,21 +499,22 @@ SweepModel read_sweep_model(const nlohmann::ordered_json& doc, const std::string
   const ojson& version = r.member(doc, "", "schema_version");
   if (!version.is_number_integer()) r.wrong_type(version, "/schema_version", "an integer");
   m.schema_version = version.get<int>();
-  if (m.schema_version != kReadableSweepSchemaVersion)
+  if (m.schema_version != kSweepSchemaVersion)
     r.fail("/schema_version", "is " + std::to_string(m.schema_version) + "; this build reads sweep schema version " +
-                                  std::to_string(kReadableSweepSchemaVersion));
-  if (doc.contains("complete")) m.complete = r.boolean(doc, "", "complete");
+                                  std::to_string(kSweepSchemaVersion));
+  m.complete_stated = doc.contains("complete");
+  if (m.complete_stated) m.complete = r.boolean(doc, "", "complete");
   if (const std::string unit = r.string(doc, "", "unit"); unit != "ms")
     r.fail("/unit", "is " + quoted_text(unit) + ", not \"ms\"");
 
   m.device = r.object(doc, "", "device");
-  m.device_name = r.string(m.device, "/device", "name");
+  (void)r.string(m.device, "/device", "name");
   m.build = r.object(doc, "", "build");
-  m.git_commit = r.optional_string(m.build, "/build", "git_commit");
-  if (m.build.contains("git_dirty")) m.git_dirty = r.boolean(m.build, "/build", "git_dirty");
+  (void)r.optional_string(m.build, "/build", "git_commit");
+  if (m.build.contains("git_dirty")) (void)r.boolean(m.build, "/build", "git_dirty");
   m.run = r.object(doc, "", "run");
-  m.started_utc = r.string(m.run, "/run", "started_utc");
-  m.quick = r.boolean(m.run, "/run", "quick");
+  (void)r.string(m.run, "/run", "started_utc");
+  (void)r.boolean(m.run, "/run", "quick");
   m.scene = scene_identity_from_json(r.object(doc, "", "scene"), what, "/scene");
 
   const ojson& generators = r.nonempty_array(doc, "", "generators");
@@ -316,6 +534,8 @@ SweepModel read_sweep_model(const nlohmann::ordered_json& doc, const std::string
     m.time_budget_s = r.number(budget, "/time_budget_s");
     if (!(*m.time_budget_s > 0)) r.fail("/time_budget_s", "is not a positive time or null");
   }
+  m.time_budget_rule = r.string(doc, "", "time_budget_rule");
+  m.fit_method = r.string(doc, "", "fit_method");
   const ojson& points = r.nonempty_array(doc, "", "points");
   for (std::size_t i = 0; i < points.size(); ++i)
     m.points.push_back(read_point(r, points[i], "/points/" + std::to_string(i), i, m.axes));
@@ -342,6 +562,38 @@ SweepModel read_sweep_model(const nlohmann::ordered_json& doc, const std::string
 
 SweepModel read_sweep_file(const std::filesystem::path& path) {
   return read_sweep_model(read_json_file(path, "the sweep JSON"), path.string());
+}
+
+ojson to_json(const SweepModel& m) {
+  ojson doc{{"schema_version", m.schema_version}, {"kind", "sweep"}};
+  if (m.complete_stated) doc["complete"] = m.complete;
+  doc["unit"] = "ms";
+  doc["device"] = m.device;
+  doc["build"] = m.build;
+  doc["run"] = m.run;
+  doc["scene"] = to_json(m.scene);
+  doc["generators"] = m.generators;
+  ojson axes = ojson::array();
+  for (const SweepAxisModel& a : m.axes) axes.push_back(axis_json(a));
+  doc["axes"] = std::move(axes);
+  doc["time_budget_s"] = m.time_budget_s ? ojson(*m.time_budget_s) : ojson(nullptr);
+  doc["time_budget_rule"] = m.time_budget_rule;
+  doc["fit_method"] = m.fit_method;
+  ojson points = ojson::array();
+  for (const SweepPoint& p : m.points) points.push_back(point_json(p, m.axes));
+  doc["points"] = std::move(points);
+  ojson beyond = ojson::array();
+  for (const SweepBeyondDevice& b : m.beyond_device) beyond.push_back(beyond_json(b, m.axes));
+  doc["beyond_device"] = std::move(beyond);
+  ojson fits = ojson::array();
+  for (const SweepFitModel& f : m.fits) fits.push_back(fit_json(f, m.axes));
+  doc["fits"] = std::move(fits);
+  if (m.claims) {
+    ojson claims = ojson::array();
+    for (const SweepClaim& c : *m.claims) claims.push_back(claim_json(c));
+    doc["claims"] = std::move(claims);
+  }
+  return doc;
 }
 
 }  // namespace vsgl

@@ -1,14 +1,15 @@
 #pragma once
-// The sweep JSON of DESIGN.md §10.1 (results/schema/sweep.schema.json, written by
-// sweep/sweep_report.cpp sweep_json) as a typed model for its readers: the dashboard's scaling
-// section (compare/dashboard_scaling.hpp). As table_model.hpp does for table JSON, the objects the
-// harness writes from elsewhere (device, build, run, each claim) are kept whole as JSON beside the
-// few fields a reader needs.
+// The sweep JSON of DESIGN.md §10.1 (results/schema/sweep.schema.json) as one typed model, read
+// (read_sweep_model) and written (to_json) through it alone: `vsgl-bench sweep` fills it from the
+// measured sweep (sweep/sweep_document.hpp) and writes OUT/sweep.json from it; the dashboard's
+// scaling section (compare/dashboard_scaling.hpp) reads it. Every committed sweep.json reads and
+// writes back byte for byte. As table_model.hpp does for table JSON, the objects the harness
+// writes from elsewhere (device, build, run, each point's capture and config) are kept whole.
 //
-// Read only: the sweep writes its document from the measured sweep, never from this model. What
-// the reader checks beyond types is what the page relies on: every fit's axis, points and case
-// exist, each growth_x belongs to its point, and no time is zero, negative or not finite.
+// What the reader checks beyond types is what the page relies on: every fit's axis, points and
+// case exist, each growth_x belongs to its point, and no time is zero, negative or not finite.
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -21,15 +22,17 @@
 
 namespace vsgl {
 
-// The sweep schema version this reader knows (sweep/sweep_report.hpp kSweepSchemaVersion; a test
-// keeps the two equal).
-inline constexpr int kReadableSweepSchemaVersion = 1;
+// The sweep schema version this build reads and writes.
+inline constexpr int kSweepSchemaVersion = 1;
 
-// One series' statistics at a point (ms), from the file.
+// One series' statistics at a point (ms), as written beside its samples.
 struct SweepTimingStats {
+  std::size_t count = 0;
   double median_ms = 0;
   double q1_ms = 0;  // q1 <= median <= q3
   double q3_ms = 0;
+  double min_ms = 0, max_ms = 0;
+  double mean_ms = 0, stdev_ms = 0;
   std::vector<double> samples_ms;  // per round, positive
 };
 
@@ -42,6 +45,7 @@ struct SweepPhaseTiming {
 struct SweepCase {
   std::string generator;
   std::string view;  // "camera_view", "light_view"
+  uint32_t dispatches = 0;
   std::vector<SweepPhaseTiming> phases;
   SweepTimingStats total;
 
@@ -53,6 +57,7 @@ struct SweepAxisValue {
   std::string text;     // as given on the command line ("16", "96x64", "0.5")
   double value = 0;     // the parameter
   double growth_x = 0;  // what the fits use as x; 0: off the log axis (γ = 0)
+  std::optional<uint32_t> width, height;  // a G-buffer size's
 };
 
 struct SweepAxisModel {
@@ -63,10 +68,37 @@ struct SweepAxisModel {
   std::vector<SweepAxisValue> values;
 };
 
+// How the timing of a point stopped (timing/timing_runner.hpp TimingResult).
+struct SweepPointTiming {
+  double time_cap_s = 0;
+  uint32_t repetitions = 0;
+  double timed_seconds = 0;
+  std::string stop_reason;
+  double worst_noise = 0;
+};
+
+// How high-frequency a view's PDF is at a point of the pdf-sharpness axis: var(p) and the fine
+// shares of its Haar spectrum (DESIGN.md §11a).
+struct SweepPdfFrequency {
+  double relative_variance = 0;
+  std::vector<double> fine_share;
+};
+
+struct SweepPdfSharpness {
+  double gamma = 0;
+  std::string definition;                                            // of the transform, in words
+  std::vector<std::pair<std::string, SweepPdfFrequency>> frequency;  // per view, in the file's order
+};
+
 struct SweepPoint {
   std::size_t index = 0;
   std::vector<std::size_t> value_index;  // per axis, into SweepAxisModel::values
+  std::string capture_dir;
+  nlohmann::ordered_json capture = nlohmann::ordered_json::object();  // hashes and sizes of the capture timed
+  nlohmann::ordered_json config = nlohmann::ordered_json::object();   // the tables' config block
+  SweepPointTiming timing;
   std::vector<SweepCase> cases;
+  std::optional<SweepPdfSharpness> pdf_sharpness;  // on a pdf-sharpness axis
 
   // nullptr when the point did not time the generator on the view.
   const SweepCase* find(const std::string& generator, const std::string& view) const;
@@ -82,7 +114,10 @@ struct SweepBeyondDevice {
 struct SweepGrowth {
   double slope = 0;
   double low = 0, high = 0;  // the bootstrap interval
-  std::string text;          // "cost ∝ N^0.98 [0.95, 1.01]"
+  double confidence = 0;
+  std::size_t resamples = 0;
+  std::size_t points = 0;  // on the log axis
+  std::string text;        // "cost ∝ N^0.98 [0.95, 1.01]"
 };
 
 struct SweepExpected {
@@ -106,41 +141,66 @@ struct SweepFitModel {
   std::string judgement;               // the verdict in words; "" when none
 };
 
-// One of the paper's claims judged on the sweep (the PDF-independence claim on a pdf-sharpness
-// axis). `fields` is the whole object, as written.
+// A case's change of its median total from the reference γ, with its bootstrap interval.
+struct SweepClaimChange {
+  double gamma = 0;
+  std::size_t point = 0;  // into SweepModel::points
+  double change = 0;
+  double low = 0, high = 0;
+};
+
+struct SweepClaimMeasure {
+  std::string generator, view;
+  std::string family;  // "fis", "kmeans"
+  bool in_paper = false;
+  double spread = 0;  // max |change| over γ
+  double spread_low = 0, spread_high = 0;
+  std::vector<SweepClaimChange> changes;
+};
+
+// One of the paper's claims judged on the sweep: the PDF-independence claim on a pdf-sharpness
+// axis, one per slice (sweep/pdf_independence.hpp).
 struct SweepClaim {
-  std::string id;
-  std::string text;
+  std::string id;                                          // "pdf_independence"
+  std::string text;                                        // the paper's claim
+  std::string axis;                                        // "pdf-sharpness"
+  std::vector<std::pair<std::string, std::string>> slice;  // the other axes held; empty when none
   std::string criterion;
+  double reference_gamma = 1;
+  double band = 0;
+  std::vector<SweepClaimMeasure> measured;
   std::optional<bool> holds;  // none: inconclusive
   std::string note;
-  bool informative = false;                                // a CPU device's: says nothing of a GPU
-  std::vector<std::pair<std::string, std::string>> slice;  // the other axes held; empty when none
-  nlohmann::ordered_json fields = nlohmann::ordered_json::object();
+  bool informative = false;  // a CPU device's: says nothing of a GPU
 };
 
 struct SweepModel {
-  int schema_version = kReadableSweepSchemaVersion;
+  int schema_version = kSweepSchemaVersion;
   // "complete" (absent in files written before it: true). False: the sweep.json of a run that
   // stopped, or is still running, after some points (DESIGN.md §10.1): the points so far, the fits
   // over them, no claims. A complete sweep has at least 2 points.
   bool complete = true;
-  nlohmann::ordered_json device = nlohmann::ordered_json::object();
-  std::string device_name;
+  bool complete_stated = true;  // whether the file says so (to_json writes the key only then)
+  nlohmann::ordered_json device = nlohmann::ordered_json::object();  // has "name"
   nlohmann::ordered_json build = nlohmann::ordered_json::object();
-  std::optional<std::string> git_commit;
-  bool git_dirty = false;
-  nlohmann::ordered_json run = nlohmann::ordered_json::object();
-  std::string started_utc;
-  bool quick = false;
+  nlohmann::ordered_json run = nlohmann::ordered_json::object();  // has "started_utc" and "quick"
   SceneIdentity scene;
   std::vector<std::string> generators;
   std::vector<SweepAxisModel> axes;
   std::optional<double> time_budget_s;
+  std::string time_budget_rule;    // how the budget is split, in words
+  std::string fit_method;          // how the fits are made, in words
   std::vector<SweepPoint> points;  // points[i].index == i
   std::vector<SweepBeyondDevice> beyond_device;
   std::vector<SweepFitModel> fits;
   std::optional<std::vector<SweepClaim>> claims;  // none: the file has no "claims"
+
+  // Read off the objects kept whole (the reader checked they are there).
+  std::string device_name() const;
+  std::optional<std::string> git_commit() const;
+  bool git_dirty() const;
+  std::string started_utc() const;
+  bool quick() const;
 
   // The points of the axes' product, and those the run reached: timed, or wholly beyond the device.
   std::size_t planned_points() const;
@@ -156,5 +216,9 @@ std::string sweep_slice_text(const std::vector<std::pair<std::string, std::strin
 SweepModel read_sweep_model(const nlohmann::ordered_json& doc, const std::string& what);
 // The file at `path` (named by its path in messages).
 SweepModel read_sweep_file(const std::filesystem::path& path);
+
+// The document, key for key as read_sweep_model reads it: read_sweep_model(to_json(m)) gives m back,
+// and to_json of a file read gives the file back (dump(2) and a newline, as the sweep writes it).
+nlohmann::ordered_json to_json(const SweepModel& model);
 
 }  // namespace vsgl

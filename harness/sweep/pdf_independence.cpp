@@ -13,8 +13,6 @@
 namespace vsgl {
 namespace {
 
-using ojson = nlohmann::ordered_json;
-
 std::string percent(double v) { return number_text(100 * v, 3) + "%"; }
 
 std::string interval_text(double v, double low, double high) {
@@ -165,41 +163,30 @@ std::vector<PdfIndependence> judge_pdf_independence(const MeasuredSweep& s, cons
   return out;
 }
 
-ojson to_json(const PdfIndependence& j, const std::string& text, bool informative) {
-  ojson slice = ojson::object();
-  for (const auto& [name, value] : j.slice) slice[name] = value;
-  ojson measured = ojson::array();
+SweepClaim pdf_independence_claim(const PdfIndependence& j, const std::string& text, bool informative) {
+  SweepClaim c;
+  c.id = "pdf_independence";
+  c.text = text;
+  c.axis = sweep_parameter_name(SweepParameter::kPdfSharpness);
+  c.slice = j.slice;
+  c.criterion = "change of each view's median total from γ=" + number_text(j.reference_gamma, 4) + " (bootstrap " +
+                number_text(100 * j.confidence, 3) + "% intervals, " + std::to_string(j.resamples) +
+                " resamples): every FIS change's interval within ±" + percent(j.band) +
+                " at every γ, and each paper k-means generator's spread (max |change| over γ) above "
+                "every FIS generator's on the same view; a FIS interval wholly outside the band or a "
+                "k-means spread wholly below a FIS one: does not hold; otherwise inconclusive";
+  c.reference_gamma = j.reference_gamma;
+  c.band = j.band;
   for (const PdfSpread& p : j.spreads) {
-    ojson changes = ojson::array();
-    for (const GammaChange& c : p.changes)
-      changes.push_back(
-          ojson{{"gamma", c.gamma}, {"point", c.point}, {"change", c.change}, {"low", c.low}, {"high", c.high}});
-    measured.push_back(ojson{{"generator", p.generator},
-                             {"view", p.view},
-                             {"family", p.fis ? "fis" : "kmeans"},
-                             {"in_paper", p.in_paper},
-                             {"spread", p.spread},
-                             {"spread_low", p.low},
-                             {"spread_high", p.high},
-                             {"changes", changes}});
+    SweepClaimMeasure m{p.generator, p.view, p.fis ? "fis" : "kmeans", p.in_paper, p.spread, p.low, p.high, {}};
+    for (const GammaChange& g : p.changes)
+      m.changes.push_back(SweepClaimChange{g.gamma, g.point, g.change, g.low, g.high});
+    c.measured.push_back(std::move(m));
   }
-  return ojson{
-      {"id", "pdf_independence"},
-      {"text", text},
-      {"axis", "pdf-sharpness"},
-      {"slice", slice},
-      {"criterion", "change of each view's median total from γ=" + number_text(j.reference_gamma, 4) + " (bootstrap " +
-                        number_text(100 * j.confidence, 3) + "% intervals, " + std::to_string(j.resamples) +
-                        " resamples): every FIS change's interval within ±" + percent(j.band) +
-                        " at every γ, and each paper k-means generator's spread (max |change| over γ) above "
-                        "every FIS generator's on the same view; a FIS interval wholly outside the band or a "
-                        "k-means spread wholly below a FIS one: does not hold; otherwise inconclusive"},
-      {"reference_gamma", j.reference_gamma},
-      {"band", j.band},
-      {"measured", measured},
-      {"holds", j.holds ? ojson(*j.holds) : ojson(nullptr)},
-      {"note", j.note},
-      {"informative", informative}};
+  c.holds = j.holds;
+  c.note = j.note;
+  c.informative = informative;
+  return c;
 }
 
 }  // namespace vsgl

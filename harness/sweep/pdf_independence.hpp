@@ -16,8 +16,7 @@
 #include <utility>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
+#include "harness/formats/sweep_model.hpp"
 #include "harness/sweep/measured_sweep.hpp"
 
 namespace vsgl {
@@ -61,8 +60,8 @@ struct PdfIndependenceOptions {
 std::vector<PdfIndependence> judge_pdf_independence(const MeasuredSweep& sweep, const std::vector<SweepFit>& fits,
                                                     const PdfIndependenceOptions& options = {});
 
-// The sweep JSON's claim object ("id": "pdf_independence"); `text` is the paper's claim.
-nlohmann::ordered_json to_json(const PdfIndependence& judgement, const std::string& text, bool informative);
+// The sweep document's claim ("id": "pdf_independence"); `text` is the paper's claim.
+SweepClaim pdf_independence_claim(const PdfIndependence& judgement, const std::string& text, bool informative);
 
 // "holds", "does not hold", "inconclusive".
 std::string verdict_word(const std::optional<bool>& holds);

@@ -4,6 +4,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <optional>
 #include <set>
 #include <stdexcept>
 #include <utility>
@@ -131,6 +132,12 @@ std::vector<std::string> sweep_parameter_names() {
   std::vector<std::string> out;
   for (const auto& i : kParameters) out.emplace_back(i.name);
   return out;
+}
+
+std::optional<SweepParameter> sweep_parameter_from_name(std::string_view name) {
+  for (const auto& i : kParameters)
+    if (name == i.name) return i.parameter;
+  return std::nullopt;
 }
 
 double growth_x(SweepParameter p, const AxisValue& v) {

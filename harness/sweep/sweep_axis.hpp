@@ -4,7 +4,9 @@
 // `NAME=v1,v2,...` (a list); G-buffer sizes are WxH. Several axes give their product.
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace vsgl {
@@ -23,6 +25,8 @@ enum class SweepParameter {
 // "vsgls", "camera-vsgls", ..., "pdf-sharpness": the names of --axis.
 const char* sweep_parameter_name(SweepParameter parameter);
 std::vector<std::string> sweep_parameter_names();
+// The parameter an axis name names (a sweep document's axis); none for an unknown name.
+std::optional<SweepParameter> sweep_parameter_from_name(std::string_view name);
 
 struct AxisValue {
   double value = 0;                // the parameter's value (gbuffer: W·H)

@@ -1,7 +1,8 @@
 // libFuzzer target: the sweep JSON loader behind the dashboard's scaling section
 // (harness/formats/sweep_model.cpp read_sweep_file) and what the dashboard then draws from a sweep
 // that loaded (harness/compare/dashboard_scaling.cpp: the log-log charts and tables). Bad input must
-// end in InputError; anything else is a bug.
+// end in InputError; anything else is a bug, and so is a model whose document (to_json) does not
+// read back as itself.
 #include <cstdint>
 #include <string_view>
 
@@ -25,6 +26,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   try {
     vsgl::SweepRun run{"fuzz/sweep.json", vsgl::read_sweep_file(file)};
     (void)vsgl::scaling_section_html({run}, "fuzz");
+    const nlohmann::ordered_json doc = vsgl::to_json(run.model);
+    if (vsgl::to_json(vsgl::read_sweep_model(doc, "fuzz/sweep.json")) != doc) __builtin_trap();
   } catch (const vsgl::InputError&) {}
   return 0;
 }
