@@ -21,10 +21,9 @@
 #include <benchmark/benchmark.h>
 
 #include <cstdio>
-#include <tuple>
+#include <deque>
+#include <filesystem>
 #include <memory>
-#include <set>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -40,17 +39,16 @@
 #include "bench/cli/generator_options.hpp"
 #include "bench/cli/gpu_session.hpp"
 #include "harness/capture/capture_files.hpp"
-#include "harness/scene/capture_provisioning.hpp"
-#include "harness/vk/device.hpp"
-#include "harness/generators/device_view.hpp"
-#include "harness/core/error.hpp"
 #include "harness/generators/fis/fis_generator.hpp"
 #include "harness/generators/generator_registry.hpp"
-#include "harness/timing/run_provenance.hpp"
+#include "harness/report/capture_cases.hpp"
 #include "harness/report/capture_scene_identity.hpp"
-#include "harness/scene/named_scene.hpp"
+#include "harness/report/table_measurement.hpp"
 #include "harness/report/tables_run.hpp"
+#include "harness/scene/named_scene.hpp"
+#include "harness/timing/run_provenance.hpp"
 #include "harness/timing/timing_runner.hpp"
+#include "harness/vk/device.hpp"
 
 namespace {
 
@@ -92,15 +90,91 @@ void add_options(CLI::App& app, Options& o, std::vector<std::string>& tables, cl
   cli::add_device_options(app, device, names);
 }
 
-// Everything the registered benchmarks replay; alive until the end of main.
-struct TableState {
-  int number = 0;
+// The run as vsgl-bench tables would make it: the same inputs (table_inputs), generators, N and
+// config. Unlike `tables` on a CPU device, every generator by default (a dashboard wants them all).
+TablesOptions timed_options(const Options& o, const DeviceInfo& info) {
+  TablesOptions t;
+  t.captures_dir = o.captures;
+  t.scenes = default_scene_library({o.assets.begin(), o.assets.end()});
+  t.tables = o.tables;
+  t.captures = {o.capture_dirs.begin(), o.capture_dirs.end()};
+  t.generators = o.generator.generators.empty() ? generator_names() : o.generator.generators;
+  t.camera_vsgls = o.generator.camera_vsgls;
+  t.light_vsgls = o.generator.light_vsgls;
+  t.generator = o.generator.config;
+  t.timing = TimingOptions::defaults_for(info);
+  return t;
+}
+
+// The JSON's "context" for the whole run: device, driver, build and the generator config.
+void add_run_context(const DeviceInfo& info, const Options& o) {
+  const nlohmann::json build = build_json();
+  benchmark::AddCustomContext("vsgl_device", info.name);
+  benchmark::AddCustomContext("vsgl_device_type", device_type_name(info.type));
+  benchmark::AddCustomContext("vsgl_driver",
+                              info.driver_name + " " + driver_version_string(info) + " " + info.driver_info);
+  benchmark::AddCustomContext("vsgl_api_version", api_version_string(info.api_version));
+  benchmark::AddCustomContext("vsgl_timestamp_period_ns", std::to_string(info.timestamp_period_ns));
+  benchmark::AddCustomContext("vsgl_git_commit", build["git_commit"].get<std::string>());
+  benchmark::AddCustomContext("vsgl_compiler", build["compiler"].get<std::string>());
+  const GeneratorConfig resolved = resolve_fis_config(info, o.generator.config);
+  benchmark::AddCustomContext("vsgl_config",
+                              nlohmann::json{{"camera_vsgls", o.generator.camera_vsgls},
+                                             {"light_vsgls", o.generator.light_vsgls},
+                                             {"K", o.generator.config.K},
+                                             {"bisection_iterations", o.generator.config.bisection_iterations},
+                                             {"kmeans_iterations", o.generator.config.kmeans_iterations},
+                                             {"pyramid", pyramid_path_name(resolved.pyramid)},
+                                             {"mipmapping", mip_strategy_name(*resolved.mipmapping)},
+                                             {"replays", o.replays}}
+                                  .dump());
+}
+
+// Everything one input's benchmarks replay; alive until the end of main.
+struct TimedInput {
   std::string stem;  // "tableN", or the scene of another capture: the benchmarks' first name part
   Capture capture;
-  std::unique_ptr<DeviceView> camera, light;
-  std::vector<std::unique_ptr<VsglGenerator>> generators;
-  std::unique_ptr<TimingRunner> runner;
+  std::unique_ptr<CaptureCases> cases;
 };
+
+// The JSON's "context" for one input: where its capture is, its hashes, scene and source.
+void add_input_context(const TimedInput& t, const std::filesystem::path& dir) {
+  benchmark::AddCustomContext("vsgl_" + t.stem + "_capture", dir.string());
+  benchmark::AddCustomContext("vsgl_" + t.stem + "_capture_hashes", capture_hashes_json(t.capture).dump());
+  benchmark::AddCustomContext("vsgl_" + t.stem + "_scene", to_json(capture_scene_identity(t.capture.meta)).dump());
+  if (t.capture.meta.source)
+    benchmark::AddCustomContext("vsgl_" + t.stem + "_source",
+                                t.capture.meta.source->file + " " + t.capture.meta.source->content_hash);
+}
+
+// One benchmark per phase of each case and one for its total, named STEM/GENERATOR/VIEW/PHASE;
+// each iteration replays the whole case and reports the phase's GPU time as its manual time.
+void register_benchmarks(TimedInput& t, uint32_t replays) {
+  TimingRunner* runner = &t.cases->runner();
+  const std::vector<TimingCase>& cases = t.cases->cases();
+  for (std::size_t index = 0; index < cases.size(); ++index) {
+    for (int w = 0; w < 2; ++w) runner->replay_once(index);  // warm-up: discarded
+    const std::vector<std::string> phases = cases[index].source->phases();
+    const std::string prefix = t.stem + "/" + cases[index].generator + "/" + cases[index].view + "/";
+    for (std::size_t p = 0; p <= phases.size(); ++p) {
+      const bool total = p == phases.size();
+      benchmark::RegisterBenchmark((prefix + (total ? "total" : phases[p])).c_str(),
+                                   [runner, index, p, total](benchmark::State& state) {
+                                     for (auto _ : state) {
+                                       const std::vector<double> ms = runner->replay_once(index);
+                                       double seconds = 0;
+                                       if (total)
+                                         for (double m : ms) seconds += m * 1e-3;
+                                       else seconds = ms[p] * 1e-3;
+                                       state.SetIterationTime(seconds);
+                                     }
+                                   })
+          ->UseManualTime()
+          ->Iterations(replays)
+          ->Unit(benchmark::kMicrosecond);  // compare.py prints whole units: phases are tens of us
+    }
+  }
+}
 
 int run(int argc, char** argv) {
   CLI::App app("vsgl-gbench: the tables' measurements as Google Benchmark results (manual time = GPU "
@@ -119,93 +193,22 @@ int run(int argc, char** argv) {
   if (const auto exit_code = cli::initialize_benchmark(app, argv[0])) return *exit_code;
   if (o.capture_dirs.empty())
     for (const auto& t : table_names) o.tables.push_back(t == "1" ? 1 : 2);
-  if (o.generator.generators.empty()) o.generator.generators = generator_names();
   cli::GpuSession session = cli::GpuSession::open(device_options);
   Device& device = session.device();
-  const DeviceInfo& info = device.info();
-  require_timestamps(info);
-  const nlohmann::json build = build_json();
-  benchmark::AddCustomContext("vsgl_device", info.name);
-  benchmark::AddCustomContext("vsgl_device_type", device_type_name(info.type));
-  benchmark::AddCustomContext("vsgl_driver", info.driver_name + " " + driver_version_string(info) + " " + info.driver_info);
-  benchmark::AddCustomContext("vsgl_api_version", api_version_string(info.api_version));
-  benchmark::AddCustomContext("vsgl_timestamp_period_ns", std::to_string(info.timestamp_period_ns));
-  benchmark::AddCustomContext("vsgl_git_commit", build["git_commit"].get<std::string>());
-  benchmark::AddCustomContext("vsgl_compiler", build["compiler"].get<std::string>());
-  const GeneratorConfig resolved = resolve_fis_config(info, o.generator.config);
-  benchmark::AddCustomContext("vsgl_config", nlohmann::json{{"camera_vsgls", o.generator.camera_vsgls},
-                                                            {"light_vsgls", o.generator.light_vsgls},
-                                                            {"K", o.generator.config.K},
-                                                            {"bisection_iterations", o.generator.config.bisection_iterations},
-                                                            {"kmeans_iterations", o.generator.config.kmeans_iterations},
-                                                            {"pyramid", pyramid_path_name(resolved.pyramid)},
-                                                            {"mipmapping", mip_strategy_name(*resolved.mipmapping)},
-                                                            {"replays", o.replays}}
-                                                 .dump());
+  require_timestamps(device.info());
+  add_run_context(device.info(), o);
 
   // The inputs: the paper's tables (recorded when missing), or the captures given (loaded).
-  std::vector<std::unique_ptr<TableState>> tables;
-  const SceneLibrary library = default_scene_library({o.assets.begin(), o.assets.end()});
-  std::vector<std::tuple<int, std::filesystem::path, TableScene>> inputs;
-  for (int number : o.tables) {
-    TableScene scene = table_scene(number, library);
-    inputs.emplace_back(number, std::filesystem::path(o.captures) / scene.scene, std::move(scene));
-  }
-  for (const auto& dir : o.capture_dirs) inputs.emplace_back(-1, dir, TableScene{});
-  std::set<std::string> stems;
-  for (const auto& [given, dir, scene] : inputs) {
-    auto t = std::make_unique<TableState>();
-    if (given > 0) {
-      const auto say = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
-      t->capture = provide_table_capture(device, scene, library, dir, RecordSizes{}, say).capture;
-      t->number = given;
-    } else {
-      t->capture = load_capture(dir);
-      t->number = paper_table_of(t->capture.meta);
-    }
-    t->stem = table_file_stem(t->number, t->capture.meta.scene);
-    if (!stems.insert(t->stem).second)
-      throw UsageError("two captures give the benchmarks " + t->stem + "/...: time captures of one scene separately");
-    benchmark::AddCustomContext("vsgl_" + t->stem + "_capture", dir.string());
-    benchmark::AddCustomContext("vsgl_" + t->stem + "_capture_hashes", capture_hashes_json(t->capture).dump());
-    benchmark::AddCustomContext("vsgl_" + t->stem + "_scene", to_json(capture_scene_identity(t->capture.meta)).dump());
-    if (t->capture.meta.source)
-      benchmark::AddCustomContext("vsgl_" + t->stem + "_source",
-                                  t->capture.meta.source->file + " " + t->capture.meta.source->content_hash);
-    t->camera = std::make_unique<DeviceView>(upload_view(device, t->capture, ViewKind::kCamera));
-    t->light = std::make_unique<DeviceView>(upload_view(device, t->capture, ViewKind::kLight));
-    t->runner = std::make_unique<TimingRunner>(device, TimingOptions::defaults_for(info));
-    for (const auto& g : o.generator.generators)
-      for (const DeviceView* view : {t->camera.get(), t->light.get()}) {
-        GeneratorConfig cfg = o.generator.config;
-        cfg.vsgl_count = view->kind == ViewKind::kCamera ? o.generator.camera_vsgls : o.generator.light_vsgls;
-        t->generators.push_back(make_generator(g, device, *view, cfg));
-        const std::size_t index = t->generators.size() - 1;
-        t->runner->add(TimingCase{g, view_name(view->kind), t->generators.back().get()});
-        for (int w = 0; w < 2; ++w) t->runner->replay_once(index);  // warm-up: discarded
-        TimingRunner* runner = t->runner.get();
-        const auto phases = t->generators.back()->phases();
-        const std::string prefix = t->stem + "/" + g + "/" + view_name(view->kind) + "/";
-        for (std::size_t p = 0; p <= phases.size(); ++p) {
-          const bool total = p == phases.size();
-          benchmark::RegisterBenchmark((prefix + (total ? "total" : phases[p])).c_str(),
-                                       [runner, index, p, total](benchmark::State& state) {
-                                         for (auto _ : state) {
-                                           const std::vector<double> ms = runner->replay_once(index);
-                                           double seconds = 0;
-                                           if (total)
-                                             for (double m : ms) seconds += m * 1e-3;
-                                           else
-                                             seconds = ms[p] * 1e-3;
-                                           state.SetIterationTime(seconds);
-                                         }
-                                       })
-              ->UseManualTime()
-              ->Iterations(o.replays)
-              ->Unit(benchmark::kMicrosecond);  // compare.py prints whole units: phases are tens of us
-        }
-      }
-    tables.push_back(std::move(t));
+  const TablesOptions timed = timed_options(o, device.info());
+  const auto say = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
+  std::deque<TimedInput> inputs;  // a deque: the registered benchmarks point into its elements
+  for (const TableInput& input : table_inputs(timed)) {
+    TimedInput& t = inputs.emplace_back();
+    t.capture = provide_input_capture(device, timed, input, say).capture;
+    t.stem = table_file_stem(input.paper_table, t.capture.meta.scene);
+    add_input_context(t, input.capture_dir);
+    t.cases = std::make_unique<CaptureCases>(device, timed, t.capture);
+    register_benchmarks(t, o.replays);
   }
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();

@@ -1,9 +1,18 @@
+// vsgl-gbench registers one benchmark per phase of every case of a capture and one per case total,
+// named CAPTURE/GENERATOR/VIEW/PHASE with the descriptor's phases, each replayed --vsgl_replays
+// times, and names the device, build and capture in the JSON's context.
+//
 // vsgl-gbench declares vsgl-bench's options (--vsgl_name=V is `tables --name V`) with the same
 // code, passes --benchmark_* to Google Benchmark, and exits with vsgl-bench's codes: 2 for a bad
 // command line (decided before any Vulkan instance exists), 4 for a device problem.
 #include <gtest/gtest.h>
 
+#include <set>
+#include <string>
+
 #include "cli_runner.hpp"
+#include "harness/generators/generator_registry.hpp"
+#include "test_support.hpp"
 
 #ifdef VSGL_GBENCH_EXE
 namespace vsgl {
@@ -61,6 +70,41 @@ TEST(GbenchCli, UnknownDeviceIsADeviceError) {
   const auto r = run_gbench("--vsgl_device=no-such-gpu-anywhere");
   EXPECT_EQ(r.exit_code, 4) << r.output;
   EXPECT_NE(r.output.find("no-such-gpu-anywhere"), std::string::npos) << r.output;
+}
+
+TEST(GbenchCli, TimesEveryPhaseOfEveryCaseOfACaptureUnderItsName) {
+  const test::TempDir dir("gbench_capture");
+  const auto recorded =
+      test::run_cli("record --scene tiny --gbuffer 48x32 --rsm 16 --out " + (dir.path() / "tiny").string());
+  ASSERT_EQ(recorded.exit_code, 0) << recorded.output;
+  const std::filesystem::path out = dir.path() / "gbench.json";
+  const auto r = run_gbench("--vsgl_capture=" + (dir.path() / "tiny").string() +
+                            " --vsgl_generators=fis_modified,kmeans_3d --vsgl_camera_vsgls=64 --vsgl_light_vsgls=32"
+                            " --vsgl_replays=3 --benchmark_format=json --benchmark_out=" +
+                            out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const nlohmann::json json = test::read_json(out);
+
+  std::multiset<std::string> expected, named;
+  for (const char* g : {"fis_modified", "kmeans_3d"})
+    for (const char* view : {"camera_view", "light_view"}) {
+      std::vector<std::string> phases = generator_descriptor(g).phases;
+      phases.push_back("total");
+      for (const std::string& phase : phases)
+        expected.insert("tiny/" + std::string(g) + "/" + view + "/" + phase + "/iterations:3/manual_time");
+    }
+  for (const auto& b : json.at("benchmarks")) {
+    named.insert(b.at("name").get<std::string>());
+    EXPECT_EQ(b.at("iterations"), 3) << b.at("name");
+    EXPECT_GT(b.at("real_time").get<double>(), 0.0) << b.at("name");
+  }
+  EXPECT_EQ(named, expected);
+
+  const nlohmann::json& context = json.at("context");
+  for (const char* key : {"vsgl_device", "vsgl_driver", "vsgl_git_commit", "vsgl_config", "vsgl_tiny_capture",
+                          "vsgl_tiny_capture_hashes", "vsgl_tiny_scene"})
+    EXPECT_TRUE(context.contains(key)) << key;
+  EXPECT_EQ(nlohmann::json::parse(context.at("vsgl_config").get<std::string>()).at("replays"), 3);
 }
 
 }  // namespace

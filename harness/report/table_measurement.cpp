@@ -2,48 +2,30 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <memory>
 #include <vector>
 
-#include "harness/core/error.hpp"
-#include "harness/generators/device_view.hpp"
-#include "harness/generators/generator_registry.hpp"
 #include "harness/report/run_context.hpp"
 #include "harness/capture/capture_files.hpp"
 #include "harness/report/capture_scene_identity.hpp"
-#include "harness/scene/capture_provisioning.hpp"
 #include "harness/timing/copy_bandwidth.hpp"
-#include "harness/timing/timing_runner.hpp"
 #include "harness/vk/device.hpp"
 
 namespace vsgl {
 
+ProvidedCapture provide_input_capture(Device& device, const TablesOptions& o, const TableInput& input,
+                                      const std::function<void(const std::string&)>& say) {
+  if (input.record_if_missing)
+    return provide_table_capture(device, input.scene, o.scenes, input.capture_dir, o.record_sizes, say);
+  ProvidedCapture provided;
+  provided.capture = load_capture(input.capture_dir);  // every hash checked
+  return provided;
+}
+
 TimingResult time_capture(Device& device, const TablesOptions& o, const Capture& capture,
                           const std::function<void(const TimingProgress&)>& progress,
                           std::vector<CaseBeyondDevice>* beyond) {
-  // Inputs uploaded, generators built and recorded before any timing (DESIGN.md §9).
-  const DeviceView camera = upload_view(device, capture, ViewKind::kCamera);
-  const DeviceView light = upload_view(device, capture, ViewKind::kLight);
-  std::vector<std::unique_ptr<VsglGenerator>> generators;
-  TimingRunner runner(device, o.timing);
-  for (const auto& g : o.generators)
-    for (const DeviceView* view : {&camera, &light}) {
-      GeneratorConfig cfg = o.generator;
-      cfg.vsgl_count = view->kind == ViewKind::kCamera ? o.camera_vsgls : o.light_vsgls;
-      try {
-        std::unique_ptr<VsglGenerator> made = make_generator(g, device, *view, cfg);
-        if (o.wrap_generator) made = o.wrap_generator(device, std::move(made));
-        generators.push_back(std::move(made));
-      } catch (const DeviceLimitError& e) {
-        if (beyond == nullptr) throw;
-        beyond->push_back(CaseBeyondDevice{g, view_name(view->kind), e.what()});
-        continue;
-      }
-      runner.add(TimingCase{g, view_name(view->kind), generators.back().get()});
-    }
-  if (generators.empty() && beyond != nullptr && !beyond->empty())
-    throw DeviceLimitError("no generator fits the device here: " + beyond->front().reason);
-  return runner.run(progress);
+  CaptureCases cases(device, o, capture, beyond);
+  return cases.runner().run(progress);
 }
 
 TableMeasurement measure_table(Device& device, const TablesOptions& o, const TableInput& input,
@@ -59,12 +41,7 @@ TableMeasurement measure_table(Device& device, const TablesOptions& o, const Tab
   t.generators = o.generators;
   const std::filesystem::path& dir = input.capture_dir;
   t.capture_dir = dir.string();
-  ProvidedCapture provided;
-  if (input.record_if_missing) {
-    provided = provide_table_capture(device, input.scene, o.scenes, dir, o.record_sizes, say);
-  } else {
-    provided.capture = load_capture(dir);  // every hash checked
-  }
+  const ProvidedCapture provided = provide_input_capture(device, o, input, say);
   t.recorded_now = provided.recorded;
   const Capture& capture = provided.capture;
   t.scene = capture.meta.scene;

@@ -7,8 +7,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "harness/report/capture_cases.hpp"
 #include "harness/report/measured_table.hpp"
 #include "harness/report/tables_run.hpp"
+#include "harness/scene/capture_provisioning.hpp"
 
 namespace vsgl {
 
@@ -19,17 +21,13 @@ struct TableMeasurement {
   nlohmann::ordered_json config;  // config_json() of its capture
 };
 
-// A case (generator on a view) whose buffers the device cannot hold (a DeviceLimitError while it
-// was built), left out of the timing.
-struct CaseBeyondDevice {
-  std::string generator, view, reason;
-};
+// The capture of a table input: a paper table's recorded when missing or stale
+// (provide_table_capture), another loaded with every hash checked. `say` gets the log lines.
+ProvidedCapture provide_input_capture(Device& device, const TablesOptions& options, const TableInput& input,
+                                      const std::function<void(const std::string&)>& say);
 
-// The timing step alone, on a capture in memory (`sweep` times captures it altered): both views
-// uploaded, every generator of `options` built and recorded on each at its view's N, then timed
-// interleaved (timing_runner.hpp). Throws what upload_view, make_generator and TimingRunner throw;
-// with `beyond`, a case the device cannot hold is listed there and the others are timed (a
-// DeviceLimitError still ends the call when no case is left).
+// The timing step alone, on a capture in memory (`sweep` times captures it altered): its cases
+// (capture_cases.hpp, where `beyond` is explained) timed interleaved (timing_runner.hpp).
 TimingResult time_capture(Device& device, const TablesOptions& options, const Capture& capture,
                           const std::function<void(const TimingProgress&)>& progress = {},
                           std::vector<CaseBeyondDevice>* beyond = nullptr);

@@ -123,8 +123,9 @@ std::vector<TableInput> table_inputs(const TablesOptions& o) {
                        "', which is the name of a paper table's output; rename the file it was recorded from");
     const auto [it, fresh] = stems.emplace(stem, dir);
     if (!fresh)
-      throw UsageError("captures " + it->second.string() + " and " + dir.string() + " are both of scene '" + meta.scene +
-                       "': their tables would both be " + stem + ".json; time them in separate runs (--out)");
+      throw UsageError("captures " + it->second.string() + " and " + dir.string() + " are both of scene '" +
+                       meta.scene + "': their results would both be named " + stem + " (" + stem + ".json, " + stem +
+                       "/... benchmarks); time them in separate runs");
     out.push_back(TableInput{dir, table, false});
   }
   return out;
