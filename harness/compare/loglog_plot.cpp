@@ -93,10 +93,19 @@ std::vector<Prepared> prepare(const LogLogPlot& plot, const std::vector<LogLogSe
   return out;
 }
 
-}  // namespace
+// Where everything goes: the decades of both axes (covering every quartile and reference), the
+// plotting area, and the legend below it, one row per series and per reference label.
+struct Layout {
+  Decades x, y;
+  double left = 72, right = 20, top = 34, row = 16;
+  double plot_w = 0, plot_h = 0, legend_top = 0;
+  int width = 0, height = 0;
 
-std::string loglog_plot_svg(const LogLogPlot& plot, const std::vector<LogLogSeries>& series) {
-  const std::vector<Prepared> prepared = prepare(plot, series);
+  double x_of(double v) const { return left + plot_w * x.fraction(v); }
+  double y_of(double v) const { return top + plot_h * (1.0 - y.fraction(v)); }
+};
+
+Layout layout(const LogLogPlot& plot, const std::vector<Prepared>& prepared) {
   double x_min = INFINITY, x_max = 0, y_min = INFINITY, y_max = 0;
   std::size_t legend_rows = 0;
   for (const Prepared& p : prepared) {
@@ -110,113 +119,131 @@ std::string loglog_plot_svg(const LogLogPlot& plot, const std::vector<LogLogSeri
     }
     legend_rows += 1 + p.reference_labels.size();
   }
-  const Decades xd(x_min, x_max), yd(y_min, y_max);
+  Layout l{Decades(x_min, x_max), Decades(y_min, y_max)};
+  l.plot_w = plot.width - l.left - l.right;
+  l.plot_h = plot.plot_height;
+  l.legend_top = l.top + l.plot_h + 58;
+  l.width = plot.width;
+  l.height = static_cast<int>(std::ceil(l.legend_top + l.row * static_cast<double>(legend_rows) + 4));
+  return l;
+}
 
-  const double left = 72, right = 20, top = 34, row = 16;
-  const double plot_w = plot.width - left - right, plot_h = plot.plot_height;
-  const double legend_top = top + plot_h + 58;
-  const int height = static_cast<int>(std::ceil(legend_top + row * static_cast<double>(legend_rows) + 4));
-  const auto x_of = [&](double v) { return left + plot_w * xd.fraction(v); };
-  const auto y_of = [&](double v) { return top + plot_h * (1.0 - yd.fraction(v)); };
-
-  std::ostringstream os;
-  os << svg_open("loglog", plot.width, height, plot.title);
-  os << "<title>" << xml_escape(plot.title) << "</title>";
-  os << "<rect class=\"background\" x=\"0\" y=\"0\" width=\"" << plot.width << "\" height=\"" << height
-     << "\" fill=\"#ffffff\"/>";
-  os << svg_text(plot.width / 2.0, 20, plot.title, "title");
-
-  // Grid and ticks: a line at every 1..9 x 10^k; labels at the decades (thinned to about eight),
-  // and at 2 and 5 as well when the axis spans at most two decades.
-  const auto ticks = [&](const Decades& d, bool horizontal) {
-    const double span = d.high - d.low;
-    const int label_every = std::max(1, static_cast<int>(std::ceil(span / 8)));
-    const bool written_out = d.low >= -3 && d.high <= 5;
-    for (double k = d.low; k <= d.high + 1e-9; k += 1) {
-      for (int m = 1; m <= 9; ++m) {
-        if (k == d.high && m > 1) break;
-        const double v = m * std::pow(10.0, k);
-        const bool decade = m == 1;
-        const bool labelled = decade ? static_cast<int>(k - d.low) % label_every == 0 : span <= 2 && (m == 2 || m == 5);
-        const std::string stroke = decade ? "#c8c8c8" : "#ececec";
-        const char* cls = decade ? "grid decade" : "grid";
-        if (horizontal) {
-          os << line(cls, left, y_of(v), left + plot_w, y_of(v), stroke);
-          if (labelled) os << svg_text(left - 5, y_of(v) + 4, axis_label(v, written_out), "tick y-tick", "end");
-        } else {
-          os << line(cls, x_of(v), top, x_of(v), top + plot_h, stroke);
-          if (labelled) os << svg_text(x_of(v), top + plot_h + 16, axis_label(v, written_out), "tick x-tick");
-        }
+// Grid and ticks of one axis: a line at every 1..9 x 10^k; labels at the decades (thinned to
+// about eight), and at 2 and 5 as well when the axis spans at most two decades.
+void draw_ticks(std::ostringstream& os, const Layout& l, bool horizontal) {
+  const Decades& d = horizontal ? l.y : l.x;
+  const double span = d.high - d.low;
+  const int label_every = std::max(1, static_cast<int>(std::ceil(span / 8)));
+  const bool written_out = d.low >= -3 && d.high <= 5;
+  for (double k = d.low; k <= d.high + 1e-9; k += 1) {
+    for (int m = 1; m <= 9; ++m) {
+      if (k == d.high && m > 1) break;
+      const double v = m * std::pow(10.0, k);
+      const bool decade = m == 1;
+      const bool labelled = decade ? static_cast<int>(k - d.low) % label_every == 0 : span <= 2 && (m == 2 || m == 5);
+      const std::string stroke = decade ? "#c8c8c8" : "#ececec";
+      const char* cls = decade ? "grid decade" : "grid";
+      if (horizontal) {
+        os << line(cls, l.left, l.y_of(v), l.left + l.plot_w, l.y_of(v), stroke);
+        if (labelled) os << svg_text(l.left - 5, l.y_of(v) + 4, axis_label(v, written_out), "tick y-tick", "end");
+      } else {
+        os << line(cls, l.x_of(v), l.top, l.x_of(v), l.top + l.plot_h, stroke);
+        if (labelled) os << svg_text(l.x_of(v), l.top + l.plot_h + 16, axis_label(v, written_out), "tick x-tick");
       }
     }
-  };
-  ticks(xd, false);
-  ticks(yd, true);
-  os << "<rect class=\"frame\" x=\"" << svg_number(left) << "\" y=\"" << svg_number(top) << "\" width=\""
-     << svg_number(plot_w) << "\" height=\"" << svg_number(plot_h) << "\" fill=\"none\" stroke=\"#333333\"/>";
-  os << svg_text(left + plot_w / 2, top + plot_h + 36, plot.x_title, "axis-title x-title");
-  const double y_title_x = 18, y_title_y = top + plot_h / 2;
+  }
+}
+
+// The title, both axes' grids and ticks, the frame and the axis titles.
+void draw_axes(std::ostringstream& os, const LogLogPlot& plot, const Layout& l) {
+  os << "<title>" << xml_escape(plot.title) << "</title>";
+  os << "<rect class=\"background\" x=\"0\" y=\"0\" width=\"" << l.width << "\" height=\"" << l.height
+     << "\" fill=\"#ffffff\"/>";
+  os << svg_text(l.width / 2.0, 20, plot.title, "title");
+  draw_ticks(os, l, false);
+  draw_ticks(os, l, true);
+  os << "<rect class=\"frame\" x=\"" << svg_number(l.left) << "\" y=\"" << svg_number(l.top) << "\" width=\""
+     << svg_number(l.plot_w) << "\" height=\"" << svg_number(l.plot_h) << "\" fill=\"none\" stroke=\"#333333\"/>";
+  os << svg_text(l.left + l.plot_w / 2, l.top + l.plot_h + 36, plot.x_title, "axis-title x-title");
+  const double y_title_x = 18, y_title_y = l.top + l.plot_h / 2;
   os << "<text x=\"" << svg_number(y_title_x) << "\" y=\"" << svg_number(y_title_y)
      << "\" class=\"axis-title y-title\" text-anchor=\"middle\" transform=\"rotate(-90 " << svg_number(y_title_x) << " "
      << svg_number(y_title_y) << ")\">" << xml_escape(plot.y_title) << "</text>";
+}
 
-  for (const Prepared& p : prepared) {
-    const LogLogSeries& s = *p.series;
-    const std::string color = xml_escape(p.color);
-    os << "<g class=\"series\" data-series=\"" << xml_escape(s.name) << "\">";
-    if (p.points.size() > 1) {
-      os << "<path class=\"band\" d=\"";
-      for (std::size_t k = 0; k < p.points.size(); ++k)
-        os << (k == 0 ? "M" : " L") << svg_number(x_of(p.points[k].x)) << "," << svg_number(y_of(p.points[k].q3));
-      for (std::size_t k = p.points.size(); k-- > 0;)
-        os << " L" << svg_number(x_of(p.points[k].x)) << "," << svg_number(y_of(p.points[k].q1));
-      os << " Z\" fill=\"" << color << "\" fill-opacity=\"0.18\" stroke=\"none\"/>";
-      os << "<path class=\"line\" d=\"";
-      for (std::size_t k = 0; k < p.points.size(); ++k)
-        os << (k == 0 ? "M" : " L") << svg_number(x_of(p.points[k].x)) << "," << svg_number(y_of(p.points[k].median));
-      os << "\" fill=\"none\" stroke=\"" << color << "\" stroke-width=\"1.8\"/>";
-    } else {
-      const LogLogPoint& pt = p.points.front();
-      os << line("whisker", x_of(pt.x), y_of(pt.q1), x_of(pt.x), y_of(pt.q3), p.color);
-    }
-    for (const LogLogPoint& pt : p.points) {
-      const std::string tip = !pt.tooltip.empty()
-                                  ? pt.tooltip
-                                  : s.name + ": x = " + number_text(pt.x, 6) + ", median " + number_text(pt.median, 4) +
-                                        " ms (q1 " + number_text(pt.q1, 4) + ", q3 " + number_text(pt.q3, 4) + ")";
-      os << "<circle class=\"point\" cx=\"" << svg_number(x_of(pt.x)) << "\" cy=\"" << svg_number(y_of(pt.median))
-         << "\" r=\"3.5\" fill=\"" << color << "\"><title>" << xml_escape(tip) << "</title></circle>";
-    }
-    for (const LogLogReference& r : s.references) {
-      const std::string tip = !r.tooltip.empty() ? r.tooltip
-                                                 : s.name + " (" + r.label + "): x = " + number_text(r.x, 6) + ", " +
-                                                       number_text(r.ms, 4) + " ms";
-      os << "<path class=\"reference\" data-label=\"" << xml_escape(r.label) << "\" d=\""
-         << diamond(x_of(r.x), y_of(r.ms), 6) << "\" fill=\"#ffffff\" stroke=\"" << color
-         << "\" stroke-width=\"2\"><title>" << xml_escape(tip) << "</title></path>";
-    }
-    os << "</g>";
+// One series: its q1..q3 band and median line (a whisker for a single point), a marker per point
+// and a diamond per reference, each with its tooltip.
+void draw_series(std::ostringstream& os, const Layout& l, const Prepared& p) {
+  const LogLogSeries& s = *p.series;
+  const std::string color = xml_escape(p.color);
+  os << "<g class=\"series\" data-series=\"" << xml_escape(s.name) << "\">";
+  if (p.points.size() > 1) {
+    os << "<path class=\"band\" d=\"";
+    for (std::size_t k = 0; k < p.points.size(); ++k)
+      os << (k == 0 ? "M" : " L") << svg_number(l.x_of(p.points[k].x)) << "," << svg_number(l.y_of(p.points[k].q3));
+    for (std::size_t k = p.points.size(); k-- > 0;)
+      os << " L" << svg_number(l.x_of(p.points[k].x)) << "," << svg_number(l.y_of(p.points[k].q1));
+    os << " Z\" fill=\"" << color << "\" fill-opacity=\"0.18\" stroke=\"none\"/>";
+    os << "<path class=\"line\" d=\"";
+    for (std::size_t k = 0; k < p.points.size(); ++k)
+      os << (k == 0 ? "M" : " L") << svg_number(l.x_of(p.points[k].x)) << "," << svg_number(l.y_of(p.points[k].median));
+    os << "\" fill=\"none\" stroke=\"" << color << "\" stroke-width=\"1.8\"/>";
+  } else {
+    const LogLogPoint& pt = p.points.front();
+    os << line("whisker", l.x_of(pt.x), l.y_of(pt.q1), l.x_of(pt.x), l.y_of(pt.q3), p.color);
   }
+  for (const LogLogPoint& pt : p.points) {
+    const std::string tip = !pt.tooltip.empty()
+                                ? pt.tooltip
+                                : s.name + ": x = " + number_text(pt.x, 6) + ", median " + number_text(pt.median, 4) +
+                                      " ms (q1 " + number_text(pt.q1, 4) + ", q3 " + number_text(pt.q3, 4) + ")";
+    os << "<circle class=\"point\" cx=\"" << svg_number(l.x_of(pt.x)) << "\" cy=\"" << svg_number(l.y_of(pt.median))
+       << "\" r=\"3.5\" fill=\"" << color << "\"><title>" << xml_escape(tip) << "</title></circle>";
+  }
+  for (const LogLogReference& r : s.references) {
+    const std::string tip = !r.tooltip.empty() ? r.tooltip
+                                               : s.name + " (" + r.label + "): x = " + number_text(r.x, 6) + ", " +
+                                                     number_text(r.ms, 4) + " ms";
+    os << "<path class=\"reference\" data-label=\"" << xml_escape(r.label) << "\" d=\""
+       << diamond(l.x_of(r.x), l.y_of(r.ms), 6) << "\" fill=\"#ffffff\" stroke=\"" << color
+       << "\" stroke-width=\"2\"><title>" << xml_escape(tip) << "</title></path>";
+  }
+  os << "</g>";
+}
 
-  // Legend below the axis title, one entry a row: a series as its line and marker, a reference
-  // label as its diamond.
+// Legend below the axis title, one entry a row: a series as its line and marker, a reference
+// label as its diamond.
+void draw_legend(std::ostringstream& os, const Layout& l, const std::vector<Prepared>& prepared) {
   os << "<g class=\"legend\">";
-  double ly = legend_top;
+  double ly = l.legend_top;
   for (const Prepared& p : prepared) {
     const std::string color = xml_escape(p.color);
-    os << line("legend-line", left, ly - 4, left + 20, ly - 4, p.color);
-    os << "<circle class=\"legend-point\" cx=\"" << svg_number(left + 10) << "\" cy=\"" << svg_number(ly - 4)
+    os << line("legend-line", l.left, ly - 4, l.left + 20, ly - 4, p.color);
+    os << "<circle class=\"legend-point\" cx=\"" << svg_number(l.left + 10) << "\" cy=\"" << svg_number(ly - 4)
        << "\" r=\"3.5\" fill=\"" << color << "\"/>";
-    os << svg_text(left + 28, ly, p.series->name, "legend-label", "start");
-    ly += row;
+    os << svg_text(l.left + 28, ly, p.series->name, "legend-label", "start");
+    ly += l.row;
     for (const std::string& label : p.reference_labels) {
-      os << "<path class=\"legend-reference\" d=\"" << diamond(left + 10, ly - 4, 5) << "\" fill=\"#ffffff\" stroke=\""
-         << color << "\" stroke-width=\"2\"/>";
-      os << svg_text(left + 28, ly, p.series->name + ": " + label, "legend-label", "start");
-      ly += row;
+      os << "<path class=\"legend-reference\" d=\"" << diamond(l.left + 10, ly - 4, 5)
+         << "\" fill=\"#ffffff\" stroke=\"" << color << "\" stroke-width=\"2\"/>";
+      os << svg_text(l.left + 28, ly, p.series->name + ": " + label, "legend-label", "start");
+      ly += l.row;
     }
   }
-  os << "</g></svg>";
+  os << "</g>";
+}
+
+}  // namespace
+
+std::string loglog_plot_svg(const LogLogPlot& plot, const std::vector<LogLogSeries>& series) {
+  const std::vector<Prepared> prepared = prepare(plot, series);
+  const Layout l = layout(plot, prepared);
+  std::ostringstream os;
+  os << svg_open("loglog", plot.width, l.height, plot.title);
+  draw_axes(os, plot, l);
+  for (const Prepared& p : prepared) draw_series(os, l, p);
+  draw_legend(os, l, prepared);
+  os << "</svg>";
   return os.str();
 }
 
