@@ -2,12 +2,14 @@
 // support, and which one a run would use by default.
 #include <cstdio>
 #include <memory>
+#include <string>
 #include <nlohmann/json.hpp>
 
 #include "bench/cli/commands.hpp"
 #include "harness/generators/device_support.hpp"
 #include "harness/vk/device_info.hpp"
 #include "harness/core/error.hpp"
+#include "harness/formats/devices_model.hpp"
 #include "harness/vk/instance.hpp"
 
 namespace vsgl::cli {
@@ -24,13 +26,15 @@ int run_devices(bool json) {
     default_index = -1;
   }
   if (json) {
-    nlohmann::json out{{"default", default_index}, {"devices", nlohmann::json::array()}};
+    // Each device object as every document carries it (vk/device_info.hpp), and per generator and
+    // mip strategy whether it runs there (generators/device_support.hpp), typed by the model.
+    DevicesDocument doc{default_index, {}};
     for (const auto& d : devices) {
-      nlohmann::json j = to_json(d);
-      j["support"] = device_support_json(d);  // per generator and mip strategy: runs, and why not
-      out["devices"].push_back(std::move(j));
+      const std::string at = "/devices/" + std::to_string(doc.devices.size());
+      doc.devices.push_back({device_from_json(to_json(d), "the device", at),
+                             support_from_json(device_support_json(d), "the device support", at + "/support")});
     }
-    std::printf("%s\n", out.dump(2).c_str());
+    std::fputs(devices_file_text(doc).c_str(), stdout);
   } else {
     std::printf("%zu Vulkan device(s):\n%s", devices.size(), describe_devices_text(devices).c_str());
     if (default_index >= 0)

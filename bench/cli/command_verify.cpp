@@ -15,6 +15,7 @@
 #include "harness/core/platform_path.hpp"
 #include "harness/core/atomic_file.hpp"
 #include "harness/core/error.hpp"
+#include "harness/formats/verify_model.hpp"
 #include "harness/verify/fis_verification.hpp"
 #include "harness/verify/kmeans_verification.hpp"
 
@@ -29,6 +30,21 @@ struct VerifyOptions {
   std::vector<std::string> pyramids{"texture", "buffer"};
   DeviceOptions device;
 };
+
+// One check as the verify document holds it.
+VerifyCheck document_check(const CheckResult& r) {
+  VerifyCheck c;
+  c.view = r.view;
+  c.generator = r.generator;
+  c.check = r.check;
+  c.kind = r.measurement ? VerifyCheckKind::kMeasurement : VerifyCheckKind::kCheck;
+  c.measured = r.measured;
+  if (r.measurement) c.expected = r.expected;
+  else c.tolerance = r.tolerance;
+  c.passed = r.passed();
+  c.detail = r.detail;
+  return c;
+}
 
 int run_verify(VerifyOptions& o) {
   const std::string* capture_dir = &o.capture;
@@ -51,10 +67,13 @@ int run_verify(VerifyOptions& o) {
   }
   std::printf("%zu checks, %u failed\n", results.size(), failed);
   if (json_path) {
-    nlohmann::json out{{"capture", *capture_dir}, {"scene", capture.meta.scene},
-                       {"device", to_json(session.device().info())}, {"checks", nlohmann::json::array()}};
-    for (const auto& r : results) out["checks"].push_back(to_json(r));
-    write_text_atomic(*json_path, out.dump(2) + "\n");
+    // The device object as every document carries it (vk/device_info.hpp), typed by the model.
+    VerifyDocument doc{*capture_dir,
+                       capture.meta.scene,
+                       device_from_json(to_json(session.device().info()), "the device", "/device"),
+                       {}};
+    for (const auto& r : results) doc.checks.push_back(document_check(r));
+    write_text_atomic(*json_path, verify_file_text(doc));
   }
   return session.finish(failed == 0 ? 0 : static_cast<int>(ExitCode::kFailure));
 }

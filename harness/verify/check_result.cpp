@@ -5,7 +5,6 @@
 #include <cstdio>
 #include <iomanip>
 #include <sstream>
-#include <nlohmann/json.hpp>
 
 namespace vsgl {
 
@@ -19,15 +18,6 @@ std::string format_check(const CheckResult& r) {
   std::snprintf(line, sizeof line, "%s  %-11s %-14s %-16s %10.3g <= %-9.3g %s", r.passed() ? "PASS" : "FAIL",
                 r.view.c_str(), r.generator.c_str(), r.check.c_str(), r.measured, r.tolerance, r.detail.c_str());
   return line;
-}
-
-nlohmann::json to_json(const CheckResult& r) {
-  if (r.measurement)
-    return {{"view", r.view},         {"generator", r.generator}, {"check", r.check},   {"kind", "measurement"},
-            {"measured", r.measured}, {"expected", r.expected},   {"passed", r.passed()}, {"detail", r.detail}};
-  return {{"view", r.view},         {"generator", r.generator}, {"check", r.check},
-          {"kind", "check"},        {"measured", r.measured},   {"tolerance", r.tolerance},
-          {"passed", r.passed()},   {"detail", r.detail}};
 }
 
 std::string check_number(double value, int digits) { return number_text(value, digits); }

@@ -1,15 +1,14 @@
 #pragma once
-// One correctness check of `vsgl-bench verify`: what was measured against what is allowed.
+// One correctness check of `vsgl-bench verify`: what was measured against what is allowed. The
+// command writes the checks as the verify document (formats/verify_model.hpp).
 #include <string>
 #include <vector>
-
-#include <nlohmann/json_fwd.hpp>
 
 namespace vsgl {
 
 struct CheckResult {
   std::string view;       // "camera_view" | "light_view" | "" (device-wide)
-  std::string generator;  // "fis_tok15" | ...
+  std::string generator;  // a generator id (core/generator_ids.hpp) or "sampler"; FIS: "<id>[texture/blit]"
   std::string check;      // e.g. "pyramid", "eq3_residual"
   double measured = 0;    // the error (or ratio deviation, or violation count)
   double tolerance = 0;   // passes when measured <= tolerance
@@ -22,7 +21,6 @@ struct CheckResult {
 };
 
 std::string format_check(const CheckResult& r);  // one aligned line: PASS/FAIL, names, numbers
-nlohmann::json to_json(const CheckResult& r);
 // A number for a check's detail line, with `digits` significant digits.
 std::string check_number(double value, int digits = 3);
 
