@@ -21,7 +21,7 @@ std::string short_commit(const SweepModel& m) {
   return m.git_commit->substr(0, std::min<std::size_t>(m.git_commit->size(), 7)) + (m.git_dirty ? " (dirty)" : "");
 }
 
-// "fis_modified camera_view" or, with other axes held, "fis_modified camera_view, K=2".
+// "<generator> camera_view" or, with other axes held, "<generator> camera_view, K=2".
 std::string series_name(const SweepFitModel& f) {
   const std::string slice = sweep_slice_text(f.slice);
   return f.generator + " " + f.view + (slice.empty() ? "" : ", " + slice);
