@@ -1,6 +1,7 @@
 // The kernels and their host code share push constants and work-group sizes through
 // kernels/include/interface/*.h; the headers' static_asserts check the C++ side. This test checks
-// the GLSL side, in the embedded SPIR-V (no device needed): each kernel's push-constant block has
+// the GLSL side, in the embedded SPIR-V as the harness reflects it (vk/spirv_reflection.hpp, the
+// reader the pipelines' limit checks use; no device needed): each kernel's push-constant block has
 // the size of the header struct its host pushes, and its work-group size is specialization
 // constants 0 (x) and 1 (y), which the host sets from the same header. A kernel that declares a
 // block of its own, or a fixed local_size, fails here.
@@ -8,15 +9,13 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <functional>
 #include <map>
 #include <optional>
-#include <span>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "harness/vk/shader_registry.hpp"
+#include "harness/vk/spirv_reflection.hpp"
 #include "kernels/include/interface/brsm.h"
 #include "kernels/include/interface/fis.h"
 #include "kernels/include/interface/kmeans.h"
@@ -27,103 +26,16 @@
 namespace vsgl {
 namespace {
 
-// What a module says about its interface: the push-constant block's size and the spec ids of
-// the work-group size's x and y components (nullopt: a literal size).
-struct ModuleInterface {
-  std::optional<uint32_t> push_bytes;
-  bool compute = false;
-  std::optional<uint32_t> group_x_spec_id, group_y_spec_id;
-};
-
-// SPIR-V opcodes and enumerants used below (SPIR-V 1.5 specification, section 3).
+// The opcodes and enumerants the hand-made module below is written with (SPIR-V 1.5
+// specification, section 3).
+// clang-format off
 enum : uint32_t {
-  kOpEntryPoint = 15, kOpTypeInt = 21, kOpTypeFloat = 22, kOpTypeVector = 23, kOpTypeMatrix = 24,
-  kOpTypeArray = 28, kOpTypeStruct = 30, kOpTypePointer = 32, kOpConstant = 43, kOpConstantComposite = 44,
-  kOpSpecConstantComposite = 51,
-  kOpVariable = 59, kOpDecorate = 71, kOpMemberDecorate = 72,
-  kDecorationSpecId = 1, kDecorationArrayStride = 6, kDecorationMatrixStride = 7, kDecorationBuiltIn = 11,
-  kDecorationOffset = 35, kBuiltInWorkgroupSize = 25, kStorageClassPushConstant = 9, kExecutionModelGLCompute = 5,
+  kOpEntryPoint = 15, kOpTypeInt = 21, kOpTypeVector = 23, kOpTypeStruct = 30, kOpTypePointer = 32,
+  kOpConstant = 43, kOpConstantComposite = 44, kOpVariable = 59, kOpDecorate = 71, kOpMemberDecorate = 72,
+  kDecorationBuiltIn = 11, kDecorationOffset = 35, kBuiltInWorkgroupSize = 25, kStorageClassPushConstant = 9,
+  kExecutionModelGLCompute = 5,
 };
-
-ModuleInterface read_interface(std::span<const uint32_t> words) {
-  struct Inst {
-    uint32_t op;
-    std::vector<uint32_t> args;
-  };
-  std::map<uint32_t, Inst> defs;                                    // result id -> defining instruction
-  std::map<uint32_t, std::map<uint32_t, uint32_t>> member_offsets;  // struct -> member -> offset
-  std::map<uint32_t, std::map<uint32_t, uint32_t>> matrix_strides;  // struct -> member -> stride
-  std::map<uint32_t, uint32_t> array_strides, spec_ids;
-  std::optional<uint32_t> workgroup_size;
-  std::vector<uint32_t> push_pointer_types;
-  ModuleInterface out;
-  for (std::size_t i = 5; i < words.size();) {
-    const uint32_t count = words[i] >> 16, op = words[i] & 0xFFFFu;
-    if (count == 0 || i + count > words.size()) throw std::runtime_error("malformed SPIR-V");
-    const std::vector<uint32_t> a(words.begin() + static_cast<std::ptrdiff_t>(i) + 1,
-                                  words.begin() + static_cast<std::ptrdiff_t>(i + count));
-    i += count;
-    switch (op) {
-      case kOpEntryPoint: out.compute = out.compute || a.at(0) == kExecutionModelGLCompute; break;
-      case kOpDecorate:
-        if (a.at(1) == kDecorationSpecId) spec_ids[a.at(0)] = a.at(2);
-        if (a.at(1) == kDecorationArrayStride) array_strides[a.at(0)] = a.at(2);
-        if (a.at(1) == kDecorationBuiltIn && a.at(2) == kBuiltInWorkgroupSize) workgroup_size = a.at(0);
-        break;
-      case kOpMemberDecorate:
-        if (a.at(2) == kDecorationOffset) member_offsets[a.at(0)][a.at(1)] = a.at(3);
-        if (a.at(2) == kDecorationMatrixStride) matrix_strides[a.at(0)][a.at(1)] = a.at(3);
-        break;
-      case kOpTypeInt: case kOpTypeFloat: case kOpTypeVector: case kOpTypeMatrix: case kOpTypeArray:
-      case kOpTypeStruct: case kOpTypePointer:
-        defs[a.at(0)] = {op, {a.begin() + 1, a.end()}};
-        if (op == kOpTypePointer && a.at(1) == kStorageClassPushConstant) push_pointer_types.push_back(a.at(0));
-        break;
-      case kOpConstant: case kOpConstantComposite: case kOpSpecConstantComposite:
-        defs[a.at(1)] = {op, {a.begin() + 2, a.end()}};
-        break;
-      case kOpVariable:
-        if (a.at(2) == kStorageClassPushConstant) {
-          // The block's type: the pointee of the variable's pointer type.
-          const uint32_t block = defs.at(a.at(0)).args.at(1);
-          std::function<uint32_t(uint32_t, uint32_t)> size_of = [&](uint32_t type, uint32_t matrix_stride) -> uint32_t {
-            const Inst& t = defs.at(type);
-            switch (t.op) {
-              case kOpTypeInt: case kOpTypeFloat: return t.args.at(0) / 8;
-              case kOpTypeVector: return t.args.at(1) * size_of(t.args.at(0), 0);
-              case kOpTypeMatrix: return t.args.at(1) * (matrix_stride ? matrix_stride : size_of(t.args.at(0), 0));
-              case kOpTypeArray: return defs.at(t.args.at(1)).args.at(0) * array_strides.at(type);
-              case kOpTypeStruct: {
-                uint32_t end = 0;
-                for (uint32_t m = 0; m < t.args.size(); ++m) {
-                  const auto stride = matrix_strides[type].find(m);
-                  const uint32_t member_stride = stride == matrix_strides[type].end() ? 0 : stride->second;
-                  end = std::max(end, member_offsets[type].at(m) + size_of(t.args[m], member_stride));
-                }
-                return end;
-              }
-              default: throw std::runtime_error("unexpected type in a push-constant block");
-            }
-          };
-          out.push_bytes = size_of(block, 0);
-        }
-        break;
-      default: break;
-    }
-  }
-  if (workgroup_size) {
-    const Inst& composite = defs.at(*workgroup_size);
-    if (composite.op == kOpSpecConstantComposite) {
-      const auto spec = [&](uint32_t id) -> std::optional<uint32_t> {
-        const auto it = spec_ids.find(id);
-        return it == spec_ids.end() ? std::nullopt : std::optional<uint32_t>(it->second);
-      };
-      out.group_x_spec_id = spec(composite.args.at(0));
-      out.group_y_spec_id = spec(composite.args.at(1));
-    }
-  }
-  return out;
-}
+// clang-format on
 
 struct Expected {
   uint32_t push_bytes;
@@ -172,13 +84,13 @@ const std::map<std::string, Expected>& kernels() {
 TEST(KernelInterface, EveryKernelPushesItsHeaderStructAndTakesItsGroupSizeAsSpecConstants) {
   for (const auto& [name, expected] : kernels()) {
     SCOPED_TRACE(name);
-    const ModuleInterface m = read_interface(find_shader(name));
-    ASSERT_TRUE(m.push_bytes.has_value()) << "no push-constant block";
-    EXPECT_EQ(*m.push_bytes, expected.push_bytes) << "the GLSL block differs from the header struct";
+    const KernelInterface m = reflect_kernel(find_shader(name));
+    ASSERT_NE(m.push_constant_bytes, 0u) << "no push-constant block";
+    EXPECT_EQ(m.push_constant_bytes, expected.push_bytes) << "the GLSL block differs from the header struct";
     EXPECT_EQ(m.compute, expected.dims > 0);
     if (expected.dims == 0) continue;
-    EXPECT_EQ(m.group_x_spec_id, std::optional<uint32_t>(0u)) << "local_size_x must be local_size_x_id = 0";
-    EXPECT_EQ(m.group_y_spec_id, expected.dims == 2 ? std::optional<uint32_t>(1u) : std::nullopt)
+    EXPECT_EQ(m.workgroup_size_spec_ids[0], std::optional<uint32_t>(0u)) << "local_size_x must be local_size_x_id = 0";
+    EXPECT_EQ(m.workgroup_size_spec_ids[1], expected.dims == 2 ? std::optional<uint32_t>(1u) : std::nullopt)
         << "local_size_y must be " << (expected.dims == 2 ? "local_size_y_id = 1" : "1");
   }
 }
@@ -194,10 +106,10 @@ TEST(KernelInterface, EveryEmbeddedKernelIsListed) {
     EXPECT_NE(std::find(embedded.begin(), embedded.end(), name), embedded.end()) << name << ": listed but not embedded";
 }
 
-// The reader itself can fail: on a hand-made module with a literal work-group size (an
+// The reflection itself can fail: on a hand-made module with a literal work-group size (an
 // OpConstantComposite decorated WorkgroupSize, as `local_size_x = 64` compiles to) and an
-// 8-byte block, it reports no spec ids and 8 bytes.
-TEST(KernelInterface, ReaderSeesALiteralGroupSizeAndTheBlockSize) {
+// 8-byte block, it reports no spec ids, the literal size and 8 bytes.
+TEST(KernelInterface, ReflectionSeesALiteralGroupSizeAndTheBlockSize) {
   const std::vector<uint32_t> words = {
       0x07230203u, 0x00010500u, 0u, 9u, 0u,
       (4u << 16) | kOpEntryPoint, kExecutionModelGLCompute, 8u, 0u,
@@ -212,11 +124,13 @@ TEST(KernelInterface, ReaderSeesALiteralGroupSizeAndTheBlockSize) {
       (6u << 16) | kOpConstantComposite, 5u, 7u, 6u, 6u, 6u,
       (4u << 16) | kOpVariable, 3u, 4u, kStorageClassPushConstant,
   };
-  const ModuleInterface m = read_interface(words);
-  EXPECT_EQ(m.push_bytes, std::optional<uint32_t>(8u));
+  const KernelInterface m = reflect_kernel(words);
+  EXPECT_EQ(m.push_constant_bytes, 8u);
   EXPECT_TRUE(m.compute);
-  EXPECT_FALSE(m.group_x_spec_id.has_value());
-  EXPECT_FALSE(m.group_y_spec_id.has_value());
+  for (std::size_t k = 0; k < 3; ++k) {
+    EXPECT_FALSE(m.workgroup_size_spec_ids[k].has_value()) << k;
+    EXPECT_EQ(m.workgroup_size[k], 64u) << k;
+  }
 }
 
 }  // namespace

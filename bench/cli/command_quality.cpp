@@ -71,7 +71,6 @@ Command add_quality_command(CLI::App& parent) {
       "OUT/<scene>/quality.json, quality.md and PNGs");
   auto o = std::make_shared<QualityOptions>();
   QualityConfig& c = o->config;
-  c.generators = {"fis_tok15", "fis_modified", "kmeans_2d", "kmeans_3d"};
   app->add_option("--capture", o->capture, "capture directory (written by `vsgl-bench record`)")
       ->required()
       ->type_name("DIR");
@@ -82,7 +81,7 @@ Command add_quality_command(CLI::App& parent) {
          "--sequence", [&c](const std::string& dir) { c.sequence = std::filesystem::path(dir); },
          "also the flicker over a recorded sequence (record --frames F)")
       ->type_name("DIR");
-  add_generators_option(*app, c.generators, "fis_tok15,fis_modified,kmeans_2d,kmeans_3d");
+  add_generators_option(*app, c.generators, joined_names(c.generators));
   add_list_option(*app, "--k-sweep", o->k_sweep, "K values of the Fig. 6 sweep (FIS generators)", positive_number());
   app->add_option("--error-stride", c.error_stride, "G-buffer stride of the reference comparison")
       ->check(at_least(1))

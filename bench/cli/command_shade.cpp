@@ -37,7 +37,7 @@ const GeneratorDescriptor& find_generator(const std::string& name) {
 
 struct ShadeOptions {
   std::string capture;
-  std::vector<std::string> generators{"fis_tok15", "fis_modified"};
+  std::vector<std::string> generators = generator_names(GeneratorFamily::kFis);
   uint32_t stride = 1;
   uint32_t vsgls = kPaperLightVsgls;
   std::string out = ".";
@@ -104,7 +104,7 @@ Command add_shade_command(CLI::App& parent) {
   app->add_option("--capture", o->capture, "capture directory (written by `vsgl-bench record`)")
       ->required()
       ->type_name("DIR");
-  add_generators_option(*app, o->generators, "fis_tok15,fis_modified");
+  add_generators_option(*app, o->generators, joined_names(o->generators));
   app->add_option("--vsgls", o->vsgls, "light-view VSGLs per generator")->check(at_least(1))->capture_default_str();
   app->add_option("--stride", o->stride, "shade every K-th G-buffer pixel (K > 1: a quick preview)")
       ->check(at_least(1))

@@ -1,6 +1,14 @@
 #include "bench/cli/generator_options.hpp"
 
+#include "harness/generators/generator_registry.hpp"
+
 namespace vsgl::cli {
+
+std::string joined_names(const std::vector<std::string>& names, const std::string& separator) {
+  std::string out;
+  for (const auto& n : names) out += (out.empty() ? "" : separator) + n;
+  return out;
+}
 
 CLI::Validator pyramid_name() { return one_of({"texture", "buffer"}); }
 CLI::Validator mipmapping_name() { return one_of({"single-pass", "blit", "per-level"}); }
@@ -8,8 +16,7 @@ CLI::Validator mipmapping_name() { return one_of({"single-pass", "blit", "per-le
 CLI::Option* add_generators_option(CLI::App& app, std::vector<std::string>& generators, const std::string& shown_default,
                                    const OptionNames& names) {
   return add_list_option(app, names("generators"), generators,
-                         "generators to run: fis_tok15, fis_modified, kmeans_2d, kmeans_3d, kmeans_2d_segsum, "
-                         "kmeans_3d_segsum",
+                         "generators to run: " + joined_names(generator_names(), ", "),
                          CLI::Validator([](std::string&) { return std::string(); }, "NAME"))
       ->default_str(shown_default);
 }

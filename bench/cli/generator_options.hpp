@@ -21,6 +21,10 @@ struct GeneratorOptions {
   GeneratorConfig config;                        // K and iterations; vsgl_count is set per view
 };
 
+// "a,b": the names with `separator` between them; --generators lists the registry's names so, and a
+// command shows its default set of generators with ",".
+std::string joined_names(const std::vector<std::string>& names, const std::string& separator = ",");
+
 // --generators G[,G] (names are checked by the run: the registry's message lists them).
 CLI::Option* add_generators_option(CLI::App& app, std::vector<std::string>& generators, const std::string& shown_default,
                                    const OptionNames& names = {});

@@ -49,7 +49,7 @@ struct ViewTiming {
 };
 
 struct GeneratorTiming {
-  std::string name;  // "fis_tok15", ...
+  std::string name;                  // the generator id (core/generator_ids.hpp)
   std::optional<std::string> label;  // the paper's column name
   std::optional<bool> in_paper;
   std::map<std::string, ViewTiming> views;  // "camera_view", "light_view"
@@ -160,7 +160,7 @@ struct Table3Row {
 
 // The lines in which two generators' counted sources differ (DESIGN.md §10).
 struct Table3Difference {
-  std::string from, to;  // "fis_tok15", "fis_modified"
+  std::string from, to;  // generator ids: kFisTok15, kFisModified (core/generator_ids.hpp)
   uint64_t removed = 0, added = 0, differing = 0;
   int64_t net = 0;  // lines_of_code(to) - lines_of_code(from)
   std::optional<double> paper;

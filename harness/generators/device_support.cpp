@@ -30,7 +30,7 @@ PipelineNeeds kernel_needs_bound(const std::string& kernel) {
 
 std::vector<PipelineNeeds> generator_pipeline_needs(const std::string& generator) {
   std::vector<PipelineNeeds> out;
-  if (generator.rfind("fis_", 0) == 0) {
+  if (generator_descriptor(generator).family == GeneratorFamily::kFis) {
     for (MipStrategy m : {MipStrategy::kSinglePass, MipStrategy::kBlit, MipStrategy::kPerLevel})
       for (const auto& d : fis_pipelines(PyramidPath::kTexture, m)) out.push_back(pipeline_needs(d));
     for (const auto& d : fis_pipelines(PyramidPath::kBuffer, MipStrategy::kPerLevel)) out.push_back(pipeline_needs(d));
@@ -54,7 +54,7 @@ nlohmann::json device_support_json(const DeviceInfo& info) {
   }
   for (const auto& g : generator_names()) {
     nlohmann::json j{{"runs", true}, {"reason", ""}};
-    if (g.rfind("fis_", 0) == 0) {
+    if (generator_descriptor(g).family == GeneratorFamily::kFis) {
       try {
         std::string path_reason, mip_reason;
         const PyramidPath path = effective_pyramid_path(info, PyramidPath::kTexture, &path_reason);

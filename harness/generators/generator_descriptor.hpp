@@ -35,7 +35,7 @@ using GeneratorFactory = std::unique_ptr<VsglGenerator> (*)(Device& device, cons
                                                             const GeneratorConfig& config);
 
 struct GeneratorDescriptor {
-  std::string name;         // stable id in every output: "fis_modified"
+  std::string name;         // stable id in every output (core/generator_ids.hpp)
   std::string label;        // the paper's column heading: "Ours (modified FIS)"
   std::string short_label;  // fits under a dashboard bar: "modified"
   bool in_paper = false;    // a column of the paper's Tables 1-3

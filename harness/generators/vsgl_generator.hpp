@@ -17,7 +17,7 @@ class Device;
 class VsglGenerator {
  public:
   virtual ~VsglGenerator() = default;
-  virtual std::string name() const = 0;                // e.g. "fis_modified"
+  virtual std::string name() const = 0;                 // its id (core/generator_ids.hpp)
   virtual std::vector<std::string> phases() const = 0;  // in execution order
   // Records every phase. `boundary` is called before the first phase, between phases and after
   // the last (phases().size() + 1 times) and must order the work on each side of it.

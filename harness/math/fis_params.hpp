@@ -6,12 +6,16 @@
 #include <string>
 #include <string_view>
 
+#include "harness/core/generator_ids.hpp"
+
 namespace vsgl {
 
 enum class FisVariant { kTok15, kModified };
 
+// The generator id of a variant (core/generator_ids.hpp); the ids are string literals, so their
+// data() ends in a '\0'.
 inline const char* fis_variant_name(FisVariant variant) {
-  return variant == FisVariant::kTok15 ? "fis_tok15" : "fis_modified";
+  return (variant == FisVariant::kTok15 ? kFisTok15 : kFisModified).data();
 }
 
 // Where the FIS pyramid lives (DESIGN.md §6.1a): sampled images with hardware trilinear filtering

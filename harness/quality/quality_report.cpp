@@ -8,11 +8,15 @@
 #include <string_view>
 
 #include "harness/core/error.hpp"
+#include "harness/core/generator_ids.hpp"
 
 namespace vsgl {
 namespace {
 
 using nlohmann::json;
+
+// The two FIS generators every quality claim compares (core/generator_ids.hpp).
+const std::string kTok15(kFisTok15), kModified(kFisModified);
 
 std::string num(double v) {
   char buf[48];
@@ -30,8 +34,8 @@ json claim(const std::string& text, const std::string& source, const std::string
            double modified) {
   const double rel = tok15 != 0.0 ? (modified - tok15) / std::abs(tok15) : modified - tok15;
   const char* verdict = rel < -kTie ? "holds" : rel > kTie ? "does not hold" : "no clear difference (within 1%)";
-  return json{{"claim", text},     {"source", source},     {"measure", measure},
-              {"fis_tok15", tok15}, {"fis_modified", modified}, {"verdict", verdict}};
+  return json{{"claim", text}, {"source", source},    {"measure", measure},
+              {kTok15, tok15}, {kModified, modified}, {"verdict", verdict}};
 }
 
 // Fig. 1's verdict (DESIGN.md §11a): judged on each generator's excess of the count-weighted coverage
@@ -54,8 +58,8 @@ json excess_claim(const std::string& text, const std::string& view, const Covera
               {"source", "paper_tables.json claims[3]; DESIGN.md §11a"},
               {"measure", view + ": excess of the count-weighted coverage error sum q|n-1|/sum q over the lattice "
                                  "floor, Eq. 3 (trilinear) footprint"},
-              {"fis_tok15", t},
-              {"fis_modified", m},
+              {kTok15, t},
+              {kModified, m},
               {"margin", kExcessMargin},
               {"footprint", kVerdictFootprint},
               {"floor", {tok15.floor_eq3.count_error, modified.floor_eq3.count_error}},
@@ -71,7 +75,7 @@ const std::string kFlickerClaim =
 
 // Fig. 1 / Fig. 5 on one view: the coverage excess, the spread of the kernel mass, the brightest VSGL.
 void add_view_claims(json& claims, const ViewQuality& v, const std::string& view) {
-  const auto tok = v.generators.find("fis_tok15"), mod = v.generators.find("fis_modified");
+  const auto tok = v.generators.find(kTok15), mod = v.generators.find(kModified);
   if (tok == v.generators.end() || mod == v.generators.end()) return;
   if (!tok->second.coverage || !mod->second.coverage) throw InputError("quality: " + view + ": the FIS generators have no coverage");
   const CoverageSummary& tc = *tok->second.coverage;
@@ -84,20 +88,21 @@ void add_view_claims(json& claims, const ViewQuality& v, const std::string& view
 }
 
 void add_flicker_claims(json& claims, const QualityModel& m) {
-  if (m.flicker_static.contains("fis_tok15") && m.flicker_static.contains("fis_modified"))
-    claims.push_back(claim(kFlickerClaim, "paper §1, §4 (text)", "static scene, per-frame lattice offset: luminance-weighted temporal CV",
-                           m.flicker_static.at("fis_tok15").weighted_cv, m.flicker_static.at("fis_modified").weighted_cv));
+  if (m.flicker_static.contains(kTok15) && m.flicker_static.contains(kModified))
+    claims.push_back(claim(kFlickerClaim, "paper §1, §4 (text)",
+                           "static scene, per-frame lattice offset: luminance-weighted temporal CV",
+                           m.flicker_static.at(kTok15).weighted_cv, m.flicker_static.at(kModified).weighted_cv));
   if (!m.flicker_animated) return;
   const auto& f = m.flicker_animated->generators;
-  if (f.contains("fis_tok15") && f.contains("fis_modified"))
+  if (f.contains(kTok15) && f.contains(kModified))
     claims.push_back(claim(kFlickerClaim, "paper §1, §4 (text)",
                            "animated sequence: temporal CV of the error against the per-frame reference",
-                           f.at("fis_tok15").error_cv, f.at("fis_modified").error_cv));
+                           f.at(kTok15).error_cv, f.at(kModified).error_cv));
 }
 
 // Fig. 6: from the smallest to the largest K of the sweep, flicker should fall and the error grow.
 void add_k_sweep_claims(json& claims, const QualityModel& m) {
-  for (const char* gen : {"fis_modified", "fis_tok15"}) {
+  for (const std::string& gen : {kModified, kTok15}) {
     const auto it = std::find_if(m.k_sweep.begin(), m.k_sweep.end(), [&](const auto& s) { return s.first == gen; });
     if (it == m.k_sweep.end() || it->second.size() < 2) continue;
     const KSweepRow& lo = it->second.front();
@@ -106,7 +111,7 @@ void add_k_sweep_claims(json& claims, const QualityModel& m) {
     const double e_lo = lo.error.relative_rmse, e_hi = hi.error.relative_rmse;
     json c = json{{"claim", "K > 1 trades illumination detail for temporal coherence (Fig. 6)."},
                   {"source", "paper_tables.json claims[4]"},
-                  {"measure", std::string(gen) + ": K = " + num(lo.K) + " -> " + num(hi.K) + ": flicker (weighted CV) " +
+                  {"measure", gen + ": K = " + num(lo.K) + " -> " + num(hi.K) + ": flicker (weighted CV) " +
                                   arrow(cv_lo, cv_hi) + ", relative RMSE vs reference " + arrow(e_lo, e_hi)},
                   {"generator", gen},
                   {"flicker", {cv_lo, cv_hi}},
@@ -149,7 +154,7 @@ void write_heading(std::ostringstream& md, const QualityModel& m) {
 }
 
 void write_claims(std::ostringstream& md, const QualityModel& m) {
-  md << "## Claims\n\n| claim | measure | fis_tok15 | fis_modified | verdict |\n|---|---|---|---|---|\n";
+  md << "## Claims\n\n| claim | measure | " << kTok15 << " | " << kModified << " | verdict |\n|---|---|---|---|---|\n";
   for (const QualityClaimRow& c : m.claims) {
     md << "| " << c.claim << " | " << c.measure << " | ";
     if (c.fis_tok15)
@@ -167,7 +172,8 @@ void write_claims(std::ostringstream& md, const QualityModel& m) {
         "reported beside it. The claim holds when Tok15's excess exceeds modified's by more than "
      << num(kExcessMargin)
      << " (the margin, fixed for all scenes), does not hold when it is lower by more than that. The other "
-        "reduction claims hold when fis_modified is lower than fis_tok15 by more than 1%.\n";
+        "reduction claims hold when "
+     << kModified << " is lower than " << kTok15 << " by more than 1%.\n";
 }
 
 void write_frequency(std::ostringstream& md, const QualityModel& m) {

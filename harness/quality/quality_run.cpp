@@ -14,6 +14,7 @@
 #include "harness/vk/device.hpp"
 #include "harness/generators/device_view.hpp"
 #include "harness/core/error.hpp"
+#include "harness/core/generator_ids.hpp"
 #include "harness/reference/fis_reference.hpp"
 #include "harness/generators/generator_registry.hpp"
 #include "harness/quality/quality_metrics.hpp"
@@ -328,8 +329,9 @@ struct QualityRun {
       std::string ks_text;
       for (float K : config.k_sweep) ks_text += (ks_text.empty() ? "" : ", ") + k_label(K);
       result.pictures.push_back({scene + "_k_sweep.png",
-                                 "Fig. 6 analog: one row per FIS generator (fis_tok15, then fis_modified), K = " +
-                                     ks_text + " left to right, same exposure as the renders",
+                                 "Fig. 6 analog: one row per FIS generator (" + std::string(kFisTok15) + ", then " +
+                                     std::string(kFisModified) + "), K = " + ks_text +
+                                     " left to right, same exposure as the renders",
                                  tile_grid(k_tiles, static_cast<uint32_t>(config.k_sweep.size()))});
     }
   }

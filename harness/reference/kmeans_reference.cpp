@@ -6,6 +6,7 @@
 #include <string>
 
 #include "harness/core/error.hpp"
+#include "harness/core/generator_ids.hpp"
 #include "harness/reference/fis_reference.hpp"
 #include "harness/math/virtual_square.hpp"
 
@@ -33,8 +34,9 @@ uint32_t sort_key(uint32_t cluster, uint32_t N) { return std::min(cluster, N); }
 }  // namespace
 
 const char* kmeans_generator_name(KmeansSpace space, bool segmented_sum) {
-  if (space == KmeansSpace::k2d) return segmented_sum ? "kmeans_2d_segsum" : "kmeans_2d";
-  return segmented_sum ? "kmeans_3d_segsum" : "kmeans_3d";
+  // The ids are string literals (core/generator_ids.hpp): data() ends in a '\0'.
+  if (space == KmeansSpace::k2d) return (segmented_sum ? kKmeans2dSegsum : kKmeans2d).data();
+  return (segmented_sum ? kKmeans3dSegsum : kKmeans3d).data();
 }
 
 std::vector<glm::vec4> kmeans_features(const ViewImage& view, glm::vec3 source_pos, KmeansSpace space) {

@@ -23,7 +23,8 @@ enum class KmeansSpace {
   k3d,  // feature: the texel's world position
 };
 
-// "kmeans_2d" | "kmeans_3d", with "_segsum" appended for the segmented-reduction sum.
+// The generator id (core/generator_ids.hpp): kKmeans2d or kKmeans3d, or with the segmented-reduction
+// sum kKmeans2dSegsum or kKmeans3dSegsum.
 const char* kmeans_generator_name(KmeansSpace space, bool segmented_sum);
 
 struct KmeansParams {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "harness/core/generator_ids.hpp"
 #include "harness/core/statistics.hpp"
 
 namespace vsgl {
@@ -62,7 +63,7 @@ const std::vector<double>& case_samples(const MeasuredTable& t, const std::strin
 }
 
 PairedInterval paired_overhead(const MeasuredTable& t, const std::string& view, const std::string& phase) {
-  const std::string mod = "fis_modified", tok = "fis_tok15";
+  const std::string mod(kFisModified), tok(kFisTok15);
   if (view.empty())
     return paired_interval(subtract_samples(generator_totals(t, mod), generator_totals(t, tok)), kPairedConfidence);
   return paired_interval(subtract_samples(case_samples(t, mod, view, phase), case_samples(t, tok, view, phase)),

@@ -26,7 +26,7 @@ nlohmann::json paper_tables_or_built_in(const std::optional<std::filesystem::pat
 // The same checks on a parsed document; `what` names it in messages.
 void check_paper_tables(const nlohmann::json& doc, const std::string& what);
 
-// The number at `path` (e.g. {"tables", "1", "fis_tok15", "total"}), if the paper gives one.
+// The number at `path` (e.g. {"tables", "1", <a generator id>, "total"}), if the paper gives one.
 std::optional<double> paper_number(const nlohmann::json& paper, std::initializer_list<std::string> path);
 std::optional<double> paper_total(const nlohmann::json& paper, int table, const std::string& g);
 // The paper's per-view total: the sum of its three phases (the paper prints only the grand total).

@@ -3,6 +3,7 @@
 #include <ctime>
 
 #include "harness/core/embedded_files.hpp"
+#include "harness/core/generator_ids.hpp"
 #include "harness/core/json_reader.hpp"
 #include "harness/generators/fis/fis_generator.hpp"
 #include "harness/generators/generator_registry.hpp"
@@ -104,13 +105,15 @@ nlohmann::ordered_json config_json(const TablesOptions& o, const Capture& captur
                                    {"width", capture.rsm.width},
                                    {"height", capture.rsm.height},
                                    {"vsgl_count", o.light_vsgls}}}};
+  const std::string kmeans_sum = std::string(kKmeans2d) + "/" + std::string(kKmeans3d) +
+                                 ": one thread per cluster sums sequentially (the paper's); *_segsum: "
+                                 "parallel segmented reduction (extra, not in the paper)";
   return ojson{
       {"views", views},
       {"K", o.generator.K},
       {"bisection_iterations", o.generator.bisection_iterations},
       {"kmeans_iterations", o.generator.kmeans_iterations},
-      {"kmeans_sum", "kmeans_2d/kmeans_3d: one thread per cluster sums sequentially (the paper's); *_segsum: "
-                     "parallel segmented reduction (extra, not in the paper)"},
+      {"kmeans_sum", kmeans_sum},
       {"offset_bits", o.generator.offset_bits},
       {"sampler", "Fibonacci lattice + hierarchical sample warping (DESIGN.md §5)"},
       {"pyramid", pyramid_json(o, device)},

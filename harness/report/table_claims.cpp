@@ -7,6 +7,7 @@
 #include <string>
 
 #include "harness/core/error.hpp"
+#include "harness/core/generator_ids.hpp"
 #include "harness/core/text_format.hpp"
 #include "harness/generators/generator_registry.hpp"
 
@@ -22,6 +23,24 @@ constexpr double kKmeansOverModifiedMin = 7.0;  // claim 2: k-means at least 7x 
 constexpr double kLinesRatioMin = 4.0;          // claim 6: k-means at least 4x the lines of FIS
 
 std::string number(double v) { return number_text(v, 6); }
+
+// The columns the claims compare (core/generator_ids.hpp): the two FIS generators, and the paper's
+// k-means generators (its columns of the k-means family, in table order).
+const std::string kTok15(kFisTok15), kModified(kFisModified);
+
+std::vector<std::string> paper_kmeans_names() {
+  std::vector<std::string> out;
+  for (const auto& g : generator_names(GeneratorFamily::kKmeans))
+    if (generator_in_paper(g)) out.push_back(g);
+  return out;
+}
+
+// The paper's k-means ids with `separator` between them, as the criterion texts name them.
+std::string paper_kmeans_text(const std::string& separator) {
+  std::string out;
+  for (const auto& g : paper_kmeans_names()) out += (out.empty() ? "" : separator) + g;
+  return out;
+}
 
 TableClaim claim(const std::string& text, const std::string& id, const std::string& criterion, ojson measured,
                  std::optional<bool> holds, const std::string& note, bool informative) {
@@ -51,18 +70,19 @@ std::vector<TableClaim> table_claims(const MeasuredTable& t, const MeasuredTable
   const auto text = [&](std::size_t i) { return texts[i].get<std::string>(); };
   // A CPU device (lavapipe) says nothing about GPU performance: its verdicts are informative.
   const bool informative = ctx.device.type == VK_PHYSICAL_DEVICE_TYPE_CPU;
-  const bool tok = has_generator(t, "fis_tok15"), mod = has_generator(t, "fis_modified");
+  const bool tok = has_generator(t, kTok15), mod = has_generator(t, kModified);
   std::vector<TableClaim> out;
 
   {  // 1: the modified kernel costs only microseconds more. Judged on the 95 % interval of the
      // per-round differences of the generator totals (DESIGN.md §9), never on one noisy number: holds
      // when the whole interval lies within the bound, fails when it lies wholly outside.
-    const std::string crit = "95% interval of the per-round difference total(fis_modified) - total(fis_tok15) "
-                             "(Hodges-Lehmann, Wilcoxon signed-rank) within +-max(" + number(kOverheadFloorUs) +
-                             " us, " + number(100 * kOverheadFraction) + "% of the median Tok15 total); outside it: "
+    const std::string crit = "95% interval of the per-round difference total(" + kModified + ") - total(" + kTok15 +
+                             ") (Hodges-Lehmann, Wilcoxon signed-rank) within +-max(" + number(kOverheadFloorUs) +
+                             " us, " + number(100 * kOverheadFraction) +
+                             "% of the median Tok15 total); outside it: "
                              "does not hold; straddling it: inconclusive";
     if (tok && mod) {
-      const double tok_ms = median_total(t, "fis_tok15");
+      const double tok_ms = median_total(t, kTok15);
       const double bound_us = std::max(kOverheadFloorUs, kOverheadFraction * 1e3 * tok_ms);
       const PairedInterval p = paired_overhead(t);
       const OverheadVerdict v = judge_overhead(1e3 * p.low, 1e3 * p.high, bound_us, p.reaches_nominal());
@@ -77,30 +97,31 @@ std::vector<TableClaim> table_claims(const MeasuredTable& t, const MeasuredTable
                                 {"confidence", p.confidence},
                                 {"rounds", p.count},
                                 {"median_of_round_differences_us", 1e3 * p.median},
-                                {"difference_of_medians_us", 1e3 * (median_total(t, "fis_modified") - tok_ms)},
+                                {"difference_of_medians_us", 1e3 * (median_total(t, kModified) - tok_ms)},
                                 {"bound_us", bound_us},
                                 {"tok15_total_ms", tok_ms}},
                           v.holds, note, informative));
     } else {
       out.push_back(claim(text(0), "modified_overhead", crit, ojson::object(), std::nullopt,
-                          "needs fis_tok15 and fis_modified in this run", informative));
+                          "needs " + kTok15 + " and " + kModified + " in this run", informative));
     }
   }
   {  // 2: modified FIS is several times faster than the paper's k-means generators.
-    const std::string crit = "median total(kmeans_2d and kmeans_3d) / median total(fis_modified) >= " +
-                             number(kKmeansOverModifiedMin) + " for each";
+    const std::string crit = "median total(" + paper_kmeans_text(" and ") + ") / median total(" + kModified +
+                             ") >= " + number(kKmeansOverModifiedMin) + " for each";
     ojson measured = ojson::object();
     bool all = true, any = false;
     if (mod)
-      for (const char* k : {"kmeans_2d", "kmeans_3d"})
+      for (const auto& k : paper_kmeans_names())
         if (has_generator(t, k)) {
-          const double ratio = median_total(t, k) / median_total(t, "fis_modified");
+          const double ratio = median_total(t, k) / median_total(t, kModified);
           measured[k] = ratio;
           all = all && ratio >= kKmeansOverModifiedMin;
           any = true;
         }
-    out.push_back(claim(text(1), "modified_vs_kmeans_speed", crit, measured, any ? std::optional<bool>(all) : std::nullopt,
-                        any ? "" : "needs fis_modified and a paper k-means generator in this run", informative));
+    out.push_back(claim(text(1), "modified_vs_kmeans_speed", crit, measured,
+                        any ? std::optional<bool>(all) : std::nullopt,
+                        any ? "" : "needs " + kModified + " and a paper k-means generator in this run", informative));
   }
   {  // 3: FIS cost does not depend on the PDF, k-means cost does.
     const std::string crit = "Table 1 -> Table 2 change of the median total: |change| <= " + number(100 * kFisPdfChangeMax) +
@@ -115,17 +136,17 @@ std::vector<TableClaim> table_claims(const MeasuredTable& t, const MeasuredTable
       const MeasuredTable& t2 = t.number == 1 ? *other : t;
       double fis_max = -1;
       bool fis_ok = true, kmeans_ok = true, fis_any = false, kmeans_any = false;
-      for (const char* g : {"fis_tok15", "fis_modified", "kmeans_2d", "kmeans_3d"}) {
+      for (const auto& g : paper_generator_names()) {
         if (!has_generator(t1, g) || !has_generator(t2, g)) continue;
         const double change = median_total(t2, g) / median_total(t1, g) - 1.0;
         measured[g] = change;
-        if (std::string(g).rfind("fis", 0) == 0) {
+        if (generator_descriptor(g).family == GeneratorFamily::kFis) {
           fis_any = true;
           fis_ok = fis_ok && std::abs(change) <= kFisPdfChangeMax;
           fis_max = std::max(fis_max, std::abs(change));
         }
       }
-      for (const char* g : {"kmeans_2d", "kmeans_3d"})
+      for (const auto& g : paper_kmeans_names())
         if (measured.contains(g)) {
           kmeans_any = true;
           kmeans_ok = kmeans_ok && std::abs(measured[g].get<double>()) > fis_max;
@@ -134,8 +155,8 @@ std::vector<TableClaim> table_claims(const MeasuredTable& t, const MeasuredTable
       else note = "needs both FIS generators' or a FIS and a paper k-means generator's timings in both tables";
       if (fis_any && !kmeans_any) {
         holds = std::nullopt;
-        note = "FIS part measured (|change| <= " + number(100 * kFisPdfChangeMax) + "%: " + std::string(fis_ok ? "yes" : "no") +
-               "); the k-means part needs kmeans_2d or kmeans_3d";
+        note = "FIS part measured (|change| <= " + number(100 * kFisPdfChangeMax) +
+               "%: " + std::string(fis_ok ? "yes" : "no") + "); the k-means part needs " + paper_kmeans_text(" or ");
       }
     }
     out.push_back(claim(text(2), "pdf_independence", crit, measured, holds, note, informative));
@@ -146,21 +167,21 @@ std::vector<TableClaim> table_claims(const MeasuredTable& t, const MeasuredTable
   out.push_back(claim(text(4), "k_temporal_coherence", "not a timing claim", ojson::object(), std::nullopt,
                       "temporal coherence for K > 1 (Fig. 6) is not measured by the tables", informative));
   {  // 6: lines of code, counted from the sources (whether or not k-means was timed).
-    const std::string crit = "lines_of_code(kmeans_2d and kmeans_3d) / lines_of_code(fis_modified) >= " +
-                             number(kLinesRatioMin) + " for each";
+    const std::string crit = "lines_of_code(" + paper_kmeans_text(" and ") + ") / lines_of_code(" + kModified +
+                             ") >= " + number(kLinesRatioMin) + " for each";
     ojson measured = ojson::object();
     bool all = true, any = false;
-    if (ctx.lines.count("fis_modified"))
-      for (const char* k : {"kmeans_2d", "kmeans_3d"})
+    if (ctx.lines.count(kModified))
+      for (const auto& k : paper_kmeans_names())
         if (ctx.lines.count(k)) {
-          const double ratio = static_cast<double>(ctx.lines.at(k).total) / ctx.lines.at("fis_modified").total;
+          const double ratio = static_cast<double>(ctx.lines.at(k).total) / ctx.lines.at(kModified).total;
           measured[k] = ratio;
           all = all && ratio >= kLinesRatioMin;
           any = true;
         }
     // Not a timing: the same on every device.
     out.push_back(claim(text(5), "lines_of_code", crit, measured, any ? std::optional<bool>(all) : std::nullopt,
-                        any ? "" : "needs the line counts of fis_modified and k-means", false));
+                        any ? "" : "needs the line counts of " + kModified + " and k-means", false));
   }
   return out;
 }

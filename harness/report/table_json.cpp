@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "harness/core/error.hpp"
+#include "harness/core/generator_ids.hpp"
 #include "harness/core/line_diff.hpp"
 #include "harness/core/statistics.hpp"
 #include "harness/generators/fis/fis_traffic.hpp"
@@ -15,6 +16,9 @@ namespace vsgl {
 namespace {
 
 using ojson = nlohmann::ordered_json;
+
+// The two FIS columns the overhead compares (core/generator_ids.hpp).
+const std::string kTok15(kFisTok15), kModified(kFisModified);
 
 TimingStats timing_stats(const std::vector<double>& samples, std::optional<double> paper_ms) {
   const SampleStats s = summarize(samples);
@@ -73,15 +77,17 @@ PairedOverhead paired_block(const MeasuredTable& t, const ReportContext& ctx) {
                " rounds, normal approximation above)";
   o.nominal_confidence = kPairedConfidence;
   for (const char* view : kTableViews) {
-    const auto paper_phase = [&](const char* g) { return paper_number(ctx.paper, {"tables", table, g, view, "filtered_sampling"}); };
+    const auto paper_phase = [&](const std::string& g) {
+      return paper_number(ctx.paper, {"tables", table, g, view, "filtered_sampling"});
+    };
     o.views[view] = {paired_difference(paired_overhead(t, view, "total"),
-                                       paper_difference(paper_view_total(ctx.paper, t.number, "fis_modified", view),
-                                                        paper_view_total(ctx.paper, t.number, "fis_tok15", view))),
+                                       paper_difference(paper_view_total(ctx.paper, t.number, kModified, view),
+                                                        paper_view_total(ctx.paper, t.number, kTok15, view))),
                      paired_difference(paired_overhead(t, view, "filtered_sampling"),
-                                       paper_difference(paper_phase("fis_modified"), paper_phase("fis_tok15")))};
+                                       paper_difference(paper_phase(kModified), paper_phase(kTok15)))};
   }
-  o.total = paired_difference(paired_overhead(t), paper_difference(paper_total(ctx.paper, t.number, "fis_modified"),
-                                                                    paper_total(ctx.paper, t.number, "fis_tok15")));
+  o.total = paired_difference(paired_overhead(t), paper_difference(paper_total(ctx.paper, t.number, kModified),
+                                                                   paper_total(ctx.paper, t.number, kTok15)));
   return o;
 }
 
@@ -96,20 +102,22 @@ KeyedRatios median_differences(const MeasuredTable& t, const ReportContext& ctx)
     return m && tk ? std::optional<double>(1e3 * (*m - *tk)) : std::nullopt;
   };
   for (const char* view : kTableViews)
-    o.emplace_back(view, MeasuredVsPaper{1e3 * (median_view(t, "fis_modified", view) - median_view(t, "fis_tok15", view)),
-                                         us(paper_view_total(ctx.paper, t.number, "fis_modified", view),
-                                            paper_view_total(ctx.paper, t.number, "fis_tok15", view))});
-  o.emplace_back("total", MeasuredVsPaper{1e3 * (median_total(t, "fis_modified") - median_total(t, "fis_tok15")),
-                                          us(paper_total(ctx.paper, t.number, "fis_modified"), paper_total(ctx.paper, t.number, "fis_tok15"))});
+    o.emplace_back(view, MeasuredVsPaper{1e3 * (median_view(t, kModified, view) - median_view(t, kTok15, view)),
+                                         us(paper_view_total(ctx.paper, t.number, kModified, view),
+                                            paper_view_total(ctx.paper, t.number, kTok15, view))});
+  o.emplace_back("total", MeasuredVsPaper{1e3 * (median_total(t, kModified) - median_total(t, kTok15)),
+                                          us(paper_total(ctx.paper, t.number, kModified),
+                                             paper_total(ctx.paper, t.number, kTok15))});
   return o;
 }
 
 KeyedRatios kmeans_over_modified(const MeasuredTable& t, const ReportContext& ctx) {
   KeyedRatios o;
-  const auto pm = paper_total(ctx.paper, t.number, "fis_modified");
+  const auto pm = paper_total(ctx.paper, t.number, kModified);
   for (const auto& g : t.generators)
-    if (g.rfind("kmeans", 0) == 0)
-      o.emplace_back(g, MeasuredVsPaper{median_total(t, g) / median_total(t, "fis_modified"), paper_ratio(paper_total(ctx.paper, t.number, g), pm)});
+    if (generator_descriptor(g).family == GeneratorFamily::kKmeans)
+      o.emplace_back(g, MeasuredVsPaper{median_total(t, g) / median_total(t, kModified),
+                                        paper_ratio(paper_total(ctx.paper, t.number, g), pm)});
   return o;
 }
 
@@ -126,7 +134,7 @@ KeyedRatios table1_to_table2(const MeasuredTable& t, const MeasuredTable& other,
 
 TableRatios table_ratios(const MeasuredTable& t, const MeasuredTable* other, const ReportContext& ctx) {
   TableRatios r;
-  const bool tok = has_generator(t, "fis_tok15"), mod = has_generator(t, "fis_modified");
+  const bool tok = has_generator(t, kTok15), mod = has_generator(t, kModified);
   if (tok && mod) {
     r.modified_minus_tok15_us = median_differences(t, ctx);
     r.paired_modified_minus_tok15 = paired_block(t, ctx);
@@ -201,8 +209,8 @@ Table3Counting table3_counting(const ReportContext& ctx) {
   Table3Counting out;
   out.rule = kTable3CountingRule;
   out.difference_rule = kTable3DifferenceRule;
-  const auto from = ctx.lines.find("fis_tok15");
-  const auto to = ctx.lines.find("fis_modified");
+  const auto from = ctx.lines.find(kTok15);
+  const auto to = ctx.lines.find(kModified);
   if (from != ctx.lines.end() && to != ctx.lines.end()) {
     const LineDiff d = diff_lines(from->second.code, to->second.code);
     out.difference = Table3Difference{from->first,

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "harness/core/error.hpp"
+#include "harness/core/generator_ids.hpp"
 #include "harness/report/table_claims.hpp"
 
 namespace vsgl {
@@ -144,8 +145,8 @@ void write_ratios(std::ostringstream& os, const TableRatios& r, bool paper) {
 
 void write_paired(std::ostringstream& os, const PairedOverhead& p, bool paper) {
   os << "\n### Overhead of the modified FIS, paired by round (µs)\n\n"
-     << "Per-round differences fis_modified − fis_tok15 (same round, so drift and the shared passes' noise "
-        "cancel): median, Hodges–Lehmann estimate and its "
+     << "Per-round differences " << kFisModified << " − " << kFisTok15
+     << " (same round, so drift and the shared passes' noise cancel): median, Hodges–Lehmann estimate and its "
      << fixed(100 * p.nominal_confidence, 0) << " % distribution-free interval (Wilcoxon signed-rank).\n\n";
   // The paper's column only for the paper's tables, as above.
   std::vector<std::string> columns{"difference", "median", "Hodges–Lehmann", "interval", "confidence", "rounds"};

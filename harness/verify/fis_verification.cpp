@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "harness/core/generator_ids.hpp"
 #include "harness/vk/command_stream.hpp"
 #include "harness/vk/device.hpp"
 #include "harness/vk/device_info.hpp"
@@ -79,7 +80,8 @@ class ViewVerifier {
   }
 
  private:
-  // The path under test, in every check's generator column: "fis_modified[texture/single-pass]".
+  // The path under test, in every check's generator column: the generator id and the path, as in
+  // fis_modified[texture/single-pass].
   std::string path_label() const {
     return params_.pyramid == PyramidPath::kBuffer
                ? std::string("buffer")
@@ -128,7 +130,7 @@ class ViewVerifier {
         chain[layer] = MipPyramid::build({t.begin(), t.begin() + view_.square.level_texels(0)}, view_.square.width,
                                          view_.square.height);
       }
-      check_pyramid(out, std::string("fis_modified[texture/") + mip_strategy_name(m) + "]", gpu, chain);
+      check_pyramid(out, std::string(kFisModified) + "[texture/" + mip_strategy_name(m) + "]", gpu, chain);
     }
   }
 

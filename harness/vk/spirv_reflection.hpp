@@ -5,8 +5,10 @@
 // the kernel's, not what its host believes (device_limits.hpp checks them against a device).
 #include <vulkan/vulkan.h>
 
+#include <array>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -20,10 +22,14 @@ struct ReflectedDescriptor {
 };
 
 struct KernelInterface {
+  bool compute = false;  // an entry point of the GLCompute execution model
   std::vector<ReflectedDescriptor> descriptors;
-  uint32_t push_constant_bytes = 0;
+  uint32_t push_constant_bytes = 0;  // 0: no push-constant block
   uint32_t shared_memory_bytes = 0;  // Workgroup variables, laid out without padding between them
   uint32_t workgroup_size[3] = {1, 1, 1};
+  // The specialization constant id each component of the work-group size takes (local_size_x_id
+  // = 0 gives {0, ...}); nullopt: a literal size.
+  std::array<std::optional<uint32_t>, 3> workgroup_size_spec_ids;
 };
 
 // `spec_values`: specialization constant id -> 32-bit value, as the pipeline passes them; the

@@ -22,25 +22,52 @@ GeneratorFactory factory(KmeansSpace space, bool segmented_sum) {
 
 }  // namespace
 
+const char* kmeans_kernel_file(KmeansKernel kernel) {
+  switch (kernel) {
+    case KmeansKernel::kFill: return "kmeans_fill.comp";
+    case KmeansKernel::kPrepare: return "kmeans_prepare.comp";
+    case KmeansKernel::kPdfMip: return "kmeans_pdf_mip.comp";
+    case KmeansKernel::kSeed: return "kmeans_seed.comp";
+    case KmeansKernel::kGridCount: return "kmeans_grid_count.comp";
+    case KmeansKernel::kGridFill: return "kmeans_grid_fill.comp";
+    case KmeansKernel::kAssign: return "kmeans_assign.comp";
+    case KmeansKernel::kScanBlocks: return "kmeans_scan_blocks.comp";
+    case KmeansKernel::kScanAdd: return "kmeans_scan_add.comp";
+    case KmeansKernel::kRadixHistogram: return "kmeans_radix_histogram.comp";
+    case KmeansKernel::kRadixScatter: return "kmeans_radix_scatter.comp";
+    case KmeansKernel::kRanges: return "kmeans_ranges.comp";
+    case KmeansKernel::kUpdatePieces: return "kmeans_update_pieces.comp";
+    case KmeansKernel::kUpdateCentres: return "kmeans_update_centres.comp";
+    case KmeansKernel::kSum: return "kmeans_sum.comp";
+    case KmeansKernel::kSegsumPieces: return "kmeans_segsum_pieces.comp";
+    case KmeansKernel::kSegsumClusters: return "kmeans_segsum_clusters.comp";
+  }
+  return "";  // not reached: every enumerator is handled above
+}
+
+std::vector<KmeansKernel> kmeans_kernels(bool segmented_sum) {
+  std::vector<KmeansKernel> out;
+  for (int k = static_cast<int>(KmeansKernel::kFill); k <= static_cast<int>(KmeansKernel::kUpdateCentres); ++k)
+    out.push_back(static_cast<KmeansKernel>(k));
+  if (segmented_sum) {
+    out.push_back(KmeansKernel::kSegsumPieces);
+    out.push_back(KmeansKernel::kSegsumClusters);
+  } else {
+    out.push_back(KmeansKernel::kSum);
+  }
+  return out;
+}
+
 GeneratorDescriptor kmeans_descriptor(KmeansSpace space, bool segmented_sum) {
   const bool two_d = space == KmeansSpace::k2d;
-  // The kernels KmeansGenerator builds pipelines from; the sum pass is kmeans_sum.comp
-  // (sequential, the paper's) or the two segmented-reduction kernels; the host's regions of the
-  // same names are the lines of each (Table 3 counts the one the generator runs, DESIGN.md §10).
+  // The kernels KmeansGenerator builds pipelines from (kmeans_kernels); the host's regions named
+  // after the sum are the lines of each (Table 3 counts the one the generator runs, DESIGN.md §10).
   SourceSet sources{
       {"harness/generators/kmeans/kmeans_generator.hpp", "harness/generators/kmeans/kmeans_generator.cpp"},
-      {"kernels/kmeans_fill.comp", "kernels/kmeans_prepare.comp", "kernels/kmeans_pdf_mip.comp",
-       "kernels/kmeans_seed.comp", "kernels/kmeans_grid_count.comp", "kernels/kmeans_grid_fill.comp",
-       "kernels/kmeans_assign.comp", "kernels/kmeans_scan_blocks.comp", "kernels/kmeans_scan_add.comp",
-       "kernels/kmeans_radix_histogram.comp", "kernels/kmeans_radix_scatter.comp", "kernels/kmeans_ranges.comp",
-       "kernels/kmeans_update_pieces.comp", "kernels/kmeans_update_centres.comp"},
+      {},
       {{"sequential_sum", !segmented_sum}, {"segmented_sum", segmented_sum}, {"verify", false}}};
-  if (segmented_sum) {
-    sources.kernels.push_back("kernels/kmeans_segsum_pieces.comp");
-    sources.kernels.push_back("kernels/kmeans_segsum_clusters.comp");
-  } else {
-    sources.kernels.push_back("kernels/kmeans_sum.comp");
-  }
+  for (KmeansKernel k : kmeans_kernels(segmented_sum))
+    sources.kernels.push_back(std::string("kernels/") + kmeans_kernel_file(k));
   return GeneratorDescriptor{
       .name = kmeans_generator_name(space, segmented_sum),
       .label = segmented_sum ? std::string(two_d ? "k-means 2D" : "k-means 3D") + ", segmented sum (extra)"

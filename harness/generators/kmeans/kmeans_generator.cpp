@@ -6,6 +6,7 @@
 #include "harness/vk/command_stream.hpp"
 #include "harness/vk/device.hpp"
 #include "harness/generators/device_view.hpp"
+#include "harness/generators/kmeans/kmeans_descriptor.hpp"
 #include "harness/core/error.hpp"
 #include "harness/math/vsgl_math.hpp"
 #include "kernels/include/interface/kmeans.h"
@@ -44,8 +45,8 @@ using gpu::KmeansSumPush;
 using gpu::KmeansUpdatePush;
 
 // A k-means kernel: its storage buffers, push constants and 1D work-group size.
-ComputePipelineDesc kernel_1d(const char* shader, uint32_t buffers, uint32_t push_bytes, uint32_t group) {
-  return {shader, buffers, push_bytes, work_group_size_1d(group)};
+ComputePipelineDesc kernel_1d(KmeansKernel kernel, uint32_t buffers, uint32_t push_bytes, uint32_t group) {
+  return {kmeans_kernel_file(kernel), buffers, push_bytes, work_group_size_1d(group)};
 }
 
 KmeansParams checked(const KmeansParams& p, const DeviceView& view, KmeansSpace space) {
@@ -117,20 +118,22 @@ KmeansGenerator::KmeansGenerator(Device& device, const DeviceView& view, KmeansS
       centre_pieces_(device, bytes<glm::vec4>(pieces_), MemoryUsage::kDeviceLocal, name() + ".centre_pieces"),
       vsgls_(device, bytes<VsglRecord>(params.vsgl_count), MemoryUsage::kDeviceLocal,
              name() + "." + view.label + ".vsgls"),
-      fill_(device, kernel_1d("kmeans_fill.comp", 1, sizeof(KmeansFillPush), kWide)),
-      prepare_(device, {"kmeans_prepare.comp", 4, sizeof(KmeansPreparePush), work_group_size_2d(kTile, kTile)}),
-      pdf_mip_(device, {"kmeans_pdf_mip.comp", 1, sizeof(KmeansMipPush), work_group_size_2d(kTile, kTile)}),
-      seed_(device, kernel_1d("kmeans_seed.comp", 3, sizeof(KmeansSeedPush), kNarrow)),
-      grid_count_(device, kernel_1d("kmeans_grid_count.comp", 2, sizeof(KmeansGridPush), kNarrow)),
-      grid_fill_(device, kernel_1d("kmeans_grid_fill.comp", 3, sizeof(KmeansGridPush), kNarrow)),
-      assign_(device, kernel_1d("kmeans_assign.comp", 5, sizeof(KmeansAssignPush), kWide)),
-      scan_blocks_(device, kernel_1d("kmeans_scan_blocks.comp", 2, sizeof(KmeansScanPush), kWide)),
-      scan_add_(device, kernel_1d("kmeans_scan_add.comp", 2, sizeof(KmeansScanPush), kWide)),
-      radix_histogram_(device, kernel_1d("kmeans_radix_histogram.comp", 4, sizeof(KmeansRadixPush), kRadixGroup)),
-      radix_scatter_(device, kernel_1d("kmeans_radix_scatter.comp", 4, sizeof(KmeansRadixPush), kRadixGroup)),
-      ranges_pipeline_(device, kernel_1d("kmeans_ranges.comp", 2, sizeof(KmeansRangesPush), kNarrow)),
-      update_pieces_(device, kernel_1d("kmeans_update_pieces.comp", 3, sizeof(KmeansPiecesPush), kNarrow)),
-      update_centres_(device, kernel_1d("kmeans_update_centres.comp", 3, sizeof(KmeansUpdatePush), kNarrow)),
+      fill_(device, kernel_1d(KmeansKernel::kFill, 1, sizeof(KmeansFillPush), kWide)),
+      prepare_(device, {kmeans_kernel_file(KmeansKernel::kPrepare), 4, sizeof(KmeansPreparePush),
+                        work_group_size_2d(kTile, kTile)}),
+      pdf_mip_(device,
+               {kmeans_kernel_file(KmeansKernel::kPdfMip), 1, sizeof(KmeansMipPush), work_group_size_2d(kTile, kTile)}),
+      seed_(device, kernel_1d(KmeansKernel::kSeed, 3, sizeof(KmeansSeedPush), kNarrow)),
+      grid_count_(device, kernel_1d(KmeansKernel::kGridCount, 2, sizeof(KmeansGridPush), kNarrow)),
+      grid_fill_(device, kernel_1d(KmeansKernel::kGridFill, 3, sizeof(KmeansGridPush), kNarrow)),
+      assign_(device, kernel_1d(KmeansKernel::kAssign, 5, sizeof(KmeansAssignPush), kWide)),
+      scan_blocks_(device, kernel_1d(KmeansKernel::kScanBlocks, 2, sizeof(KmeansScanPush), kWide)),
+      scan_add_(device, kernel_1d(KmeansKernel::kScanAdd, 2, sizeof(KmeansScanPush), kWide)),
+      radix_histogram_(device, kernel_1d(KmeansKernel::kRadixHistogram, 4, sizeof(KmeansRadixPush), kRadixGroup)),
+      radix_scatter_(device, kernel_1d(KmeansKernel::kRadixScatter, 4, sizeof(KmeansRadixPush), kRadixGroup)),
+      ranges_pipeline_(device, kernel_1d(KmeansKernel::kRanges, 2, sizeof(KmeansRangesPush), kNarrow)),
+      update_pieces_(device, kernel_1d(KmeansKernel::kUpdatePieces, 3, sizeof(KmeansPiecesPush), kNarrow)),
+      update_centres_(device, kernel_1d(KmeansKernel::kUpdateCentres, 3, sizeof(KmeansUpdatePush), kNarrow)),
       fill_grid_set_(device, fill_, {grid_}, name() + ".fill"),
       prepare_set_(device, prepare_, buffer_bindings({view.layers(), {features_}, {pdf_pyramid_}, {grid_}}),
                    name() + ".prepare"),
@@ -157,8 +160,8 @@ KmeansGenerator::KmeansGenerator(Device& device, const DeviceView& view, KmeansS
   // table3: begin segmented_sum
   if (params_.segmented_sum) {
     sum_pieces_.emplace(device, bytes<glm::vec4>(4ull * pieces_), MemoryUsage::kDeviceLocal, name() + ".sum_pieces");
-    segsum_pieces_.emplace(device, kernel_1d("kmeans_segsum_pieces.comp", 3, sizeof(KmeansSumPush), kNarrow));
-    segsum_clusters_.emplace(device, kernel_1d("kmeans_segsum_clusters.comp", 4, sizeof(KmeansSumPush), kNarrow));
+    segsum_pieces_.emplace(device, kernel_1d(KmeansKernel::kSegsumPieces, 3, sizeof(KmeansSumPush), kNarrow));
+    segsum_clusters_.emplace(device, kernel_1d(KmeansKernel::kSegsumClusters, 4, sizeof(KmeansSumPush), kNarrow));
     segsum_pieces_set_.emplace(device, *segsum_pieces_, buffer_bindings({view.layers(), {sorted_}, {*sum_pieces_}}),
                                name() + ".segsum_pieces");
     segsum_clusters_set_.emplace(device, *segsum_clusters_,
@@ -168,7 +171,7 @@ KmeansGenerator::KmeansGenerator(Device& device, const DeviceView& view, KmeansS
   }
   // table3: end segmented_sum
   // table3: begin sequential_sum
-  sum_.emplace(device, kernel_1d("kmeans_sum.comp", 5, sizeof(KmeansSumPush), kNarrow));
+  sum_.emplace(device, kernel_1d(KmeansKernel::kSum, 5, sizeof(KmeansSumPush), kNarrow));
   sum_set_.emplace(device, *sum_, buffer_bindings({view.layers(), {sorted_}, {ranges_}, {centres_}, {vsgls_}}),
                    name() + ".sum");
   // table3: end sequential_sum
