@@ -12,6 +12,7 @@
 #include "harness/core/platform_path.hpp"
 #include "harness/core/atomic_file.hpp"
 #include "harness/core/error.hpp"
+#include "harness/core/generator_ids.hpp"
 #include "harness/compare/export_formats.hpp"
 
 namespace vsgl::cli {
@@ -19,9 +20,10 @@ namespace vsgl::cli {
 Command add_export_command(CLI::App& parent) {
   CLI::App* app = parent.add_subcommand(
       "export",
-      "medians and quartiles under stable names (table1/fis_modified/light_view/filtered_sampling) for "
-      "github-action-benchmark (gab: customSmallerIsBetter) or Bencher (bmf: Bencher Metric Format, ns); several "
-      "runs are merged");
+      "medians and quartiles under stable names (table1/" + std::string(kFisModified) +
+          "/light_view/filtered_sampling) for "
+          "github-action-benchmark (gab: customSmallerIsBetter) or Bencher (bmf: Bencher Metric Format, ns); several "
+          "runs are merged");
   struct Options {
     std::string format;
     std::vector<std::string> runs;
