@@ -14,60 +14,7 @@ namespace {
 
 using ojson = nlohmann::ordered_json;
 
-// Field access that names the file and the JSON pointer of whatever is missing or mistyped.
-class Reader : public OrderedJsonReader {
- public:
-  explicit Reader(std::string what) : OrderedJsonReader(std::move(what), JsonPathStyle::kPointer) {}
-
-  double time(const ojson& v, const std::string& pointer) const {
-    const double t = number(v, pointer);
-    if (!(t > 0)) fail(pointer, "is not a positive time (" + printable_text(v.dump()) + ")");
-    return t;
-  }
-  double time(const ojson& obj, const std::string& pointer, const std::string& key) const {
-    return time(member(obj, pointer, key), pointer + "/" + key);
-  }
-  const ojson& array(const ojson& obj, const std::string& pointer, const std::string& key) const {
-    const ojson& a = member(obj, pointer, key);
-    if (!a.is_array()) wrong_type(a, pointer + "/" + key, "an array");
-    return a;
-  }
-  const ojson& nonempty_array(const ojson& obj, const std::string& pointer, const std::string& key) const {
-    const ojson& a = array(obj, pointer, key);
-    if (a.empty()) fail(pointer + "/" + key, "is empty");
-    return a;
-  }
-  // A parsed file holds non-negative integers as unsigned, a document built in memory may hold
-  // them as signed.
-  std::size_t index(const ojson& v, const std::string& pointer) const {
-    if (!v.is_number_integer() || (!v.is_number_unsigned() && v.get<int64_t>() < 0))
-      wrong_type(v, pointer, "a non-negative integer");
-    return static_cast<std::size_t>(v.get<uint64_t>());
-  }
-  // A number >= 0 (a growth x, an axis value).
-  double non_negative(const ojson& v, const std::string& pointer) const {
-    const double x = number(v, pointer);
-    if (x < 0) fail(pointer, "is negative (" + printable_text(v.dump()) + ")");
-    return x;
-  }
-  std::optional<std::string> optional_string(const ojson& obj, const std::string& pointer,
-                                             const std::string& key) const {
-    if (!obj.contains(key)) return std::nullopt;
-    return string(obj, pointer, key);
-  }
-  // An object of strings, in the file's order ("values", "slice").
-  std::vector<std::pair<std::string, std::string>> string_map(const ojson& o, const std::string& pointer) const {
-    if (!o.is_object()) wrong_type(o, pointer, "an object");
-    std::vector<std::pair<std::string, std::string>> out;
-    for (const auto& [k, v] : o.items()) {
-      if (!v.is_string()) wrong_type(v, pointer + "/" + k, "a string");
-      out.emplace_back(k, v.get<std::string>());
-    }
-    return out;
-  }
-};
-
-SweepTimingStats read_stats(const Reader& r, const ojson& series, const std::string& p) {
+SweepTimingStats read_stats(const OrderedJsonReader& r, const ojson& series, const std::string& p) {
   if (!series.is_object()) r.wrong_type(series, p, "an object");
   const ojson& stats = r.object(series, p, "stats");
   const std::string sp = p + "/stats";
@@ -84,7 +31,7 @@ SweepTimingStats read_stats(const Reader& r, const ojson& series, const std::str
   return out;
 }
 
-SweepCase read_case(const Reader& r, const ojson& c, const std::string& p) {
+SweepCase read_case(const OrderedJsonReader& r, const ojson& c, const std::string& p) {
   if (!c.is_object()) r.wrong_type(c, p, "an object");
   SweepCase out;
   out.generator = r.string(c, p, "generator");
@@ -101,7 +48,7 @@ SweepCase read_case(const Reader& r, const ojson& c, const std::string& p) {
   return out;
 }
 
-SweepAxisModel read_axis(const Reader& r, const ojson& a, const std::string& p) {
+SweepAxisModel read_axis(const OrderedJsonReader& r, const ojson& a, const std::string& p) {
   if (!a.is_object()) r.wrong_type(a, p, "an object");
   SweepAxisModel out;
   out.name = r.string(a, p, "name");
@@ -124,7 +71,7 @@ SweepAxisModel read_axis(const Reader& r, const ojson& a, const std::string& p) 
 }
 
 // A point's "values": each axis's value as text, as an index into that axis's values.
-std::vector<std::size_t> read_value_index(const Reader& r, const ojson& pj, const std::string& p,
+std::vector<std::size_t> read_value_index(const OrderedJsonReader& r, const ojson& pj, const std::string& p,
                                           const std::vector<SweepAxisModel>& axes) {
   const ojson& values = r.object(pj, p, "values");
   for (const auto& [name, text] : r.string_map(values, p + "/values")) {
@@ -144,11 +91,11 @@ std::vector<std::size_t> read_value_index(const Reader& r, const ojson& pj, cons
   return out;
 }
 
-SweepPoint read_point(const Reader& r, const ojson& pj, const std::string& p, std::size_t position,
+SweepPoint read_point(const OrderedJsonReader& r, const ojson& pj, const std::string& p, std::size_t position,
                       const std::vector<SweepAxisModel>& axes) {
   if (!pj.is_object()) r.wrong_type(pj, p, "an object");
   SweepPoint out;
-  out.index = r.index(r.member(pj, p, "index"), p + "/index");
+  out.index = static_cast<std::size_t>(r.uint64(pj, p, "index"));
   if (out.index != position)
     r.fail(p + "/index", "is " + std::to_string(out.index) + ", not its position " + std::to_string(position));
   out.value_index = read_value_index(r, pj, p, axes);
@@ -158,7 +105,7 @@ SweepPoint read_point(const Reader& r, const ojson& pj, const std::string& p, st
   return out;
 }
 
-SweepFitModel read_fit(const Reader& r, const ojson& f, const std::string& p, const SweepModel& m) {
+SweepFitModel read_fit(const OrderedJsonReader& r, const ojson& f, const std::string& p, const SweepModel& m) {
   if (!f.is_object()) r.wrong_type(f, p, "an object");
   SweepFitModel out;
   const std::string axis = r.string(f, p, "axis");
@@ -175,7 +122,7 @@ SweepFitModel read_fit(const Reader& r, const ojson& f, const std::string& p, co
            "has " + std::to_string(xs.size()) + " values for " + std::to_string(points.size()) + " points");
   for (std::size_t k = 0; k < points.size(); ++k) {
     const std::string pp = p + "/points/" + std::to_string(k);
-    const std::size_t i = r.index(points[k], pp);
+    const auto i = static_cast<std::size_t>(r.uint64(points[k], pp));
     if (i >= m.points.size()) r.fail(pp, "is " + std::to_string(i) + ", past the last point");
     const SweepCase* c = m.points[i].find(out.generator, out.view);
     if (c == nullptr || c->find(out.phase) == nullptr)
@@ -216,7 +163,7 @@ SweepFitModel read_fit(const Reader& r, const ojson& f, const std::string& p, co
   return out;
 }
 
-std::vector<SweepClaim> read_claims(const Reader& r, const ojson& a) {
+std::vector<SweepClaim> read_claims(const OrderedJsonReader& r, const ojson& a) {
   if (!a.is_array()) r.wrong_type(a, "/claims", "an array");
   std::vector<SweepClaim> out;
   for (std::size_t i = 0; i < a.size(); ++i) {
@@ -272,7 +219,7 @@ std::string sweep_slice_text(const std::vector<std::pair<std::string, std::strin
 }
 
 SweepModel read_sweep_model(const nlohmann::ordered_json& doc, const std::string& what) {
-  const Reader r(what);
+  const OrderedJsonReader r(what, JsonPathStyle::kPointer);
   if (!doc.is_object()) r.fail("", "is not a JSON object");
   // The kind first: a table or quality JSON is told apart from a damaged sweep.
   if (!doc.contains("kind")) r.fail("/kind", "missing field: not a sweep JSON (kind \"sweep\")");
