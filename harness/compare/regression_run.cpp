@@ -25,7 +25,7 @@ std::string text_or(const json& obj, const std::string& key, const std::string& 
   return it != obj.end() && it->is_string() ? it->get<std::string>() : fallback;
 }
 
-RunSeries series_of(const TimingStats& stats, std::string name, int table, const std::string& generator,
+RunSeries series_of(const TimingStatistics& stats, std::string name, int table, const std::string& generator,
                     const std::string& view, const std::string& phase) {
   RunSeries s;
   s.name = std::move(name);

@@ -16,26 +16,12 @@ ojson number_or_null(const std::optional<double>& v) { return v ? ojson(*v) : oj
 
 // ---- writing ----
 
-ojson stats_json(const TimingStats& s) {
-  ojson o{{"median_ms", s.median_ms}, {"paper_ms", number_or_null(s.paper_ms)}};
-  if (s.min_ms) o["min_ms"] = *s.min_ms;
-  if (s.max_ms) o["max_ms"] = *s.max_ms;
-  o["q1_ms"] = s.q1_ms;
-  o["q3_ms"] = s.q3_ms;
-  if (s.mean_ms) o["mean_ms"] = *s.mean_ms;
-  if (s.stdev_ms) o["stdev_ms"] = *s.stdev_ms;
-  if (s.relative_iqr) o["relative_iqr"] = *s.relative_iqr;
-  if (s.count) o["count"] = *s.count;
-  o["samples_ms"] = s.samples_ms;
-  return o;
-}
-
 ojson generator_json(const GeneratorTiming& g) {
   ojson views = ojson::object();
   for (const auto& [view, v] : g.views) {
     ojson phases = ojson::object();
-    for (const PhaseTiming& p : v.phases) phases[p.phase] = stats_json(p.stats);
-    ojson vj{{"phases", phases}, {"total", stats_json(v.total)}};
+    for (const PhaseTiming& p : v.phases) phases[p.phase] = to_json(p.stats, StatisticsLayout::kTable);
+    ojson vj{{"phases", phases}, {"total", to_json(v.total, StatisticsLayout::kTable)}};
     if (v.dispatch_calls) vj["dispatch_calls"] = *v.dispatch_calls;
     views[view] = vj;
   }
@@ -43,7 +29,7 @@ ojson generator_json(const GeneratorTiming& g) {
   if (g.label) o["label"] = *g.label;
   if (g.in_paper) o["in_paper"] = *g.in_paper;
   o["views"] = views;
-  o["total"] = stats_json(g.total);
+  o["total"] = to_json(g.total, StatisticsLayout::kTable);
   return o;
 }
 
@@ -164,34 +150,12 @@ ojson table3_counting_json(const Table3Counting& c) {
 
 }  // namespace
 
-nlohmann::ordered_json to_json(const TableClaim& c) {
-  return ojson{{"id", c.id},
-               {"claim", c.claim},
-               {"criterion", c.criterion},
-               {"measured", c.measured},
-               {"holds", c.holds ? ojson(*c.holds) : ojson(nullptr)},
-               {"note", c.note},
-               {"informative_only", c.informative_only}};
-}
-
 namespace {
 
 // ---- reading ----
 
-TimingStats read_stats(const OrderedJsonReader& r, const ojson& s, const std::string& p) {
-  TimingStats out;
-  out.samples_ms = r.times(s, p, "samples_ms");
-  out.median_ms = r.time(s, p, "median_ms");
-  out.q1_ms = r.time(s, p, "q1_ms");
-  out.q3_ms = r.time(s, p, "q3_ms");
-  out.paper_ms = r.optional_number(s, p, "paper_ms");
-  out.min_ms = r.optional_number(s, p, "min_ms");
-  out.max_ms = r.optional_number(s, p, "max_ms");
-  out.mean_ms = r.optional_number(s, p, "mean_ms");
-  out.stdev_ms = r.optional_number(s, p, "stdev_ms");
-  out.relative_iqr = r.optional_number(s, p, "relative_iqr");
-  out.count = r.optional_uint64(s, p, "count");
-  return out;
+TimingStatistics read_stats(const OrderedJsonReader& r, const ojson& s, const std::string& p) {
+  return timing_statistics_from_json(r, s, p, StatisticsLayout::kTable);
 }
 
 GeneratorTiming read_generator(const OrderedJsonReader& r, const std::string& name, const ojson& gj,
@@ -348,24 +312,11 @@ std::vector<Table3Row> read_table3(const OrderedJsonReader& r, const ojson& o, c
   return rows;
 }
 
-std::vector<TableClaim> read_claims(const OrderedJsonReader& r, const ojson& a) {
+std::vector<Claim> read_claims(const OrderedJsonReader& r, const ojson& a) {
   if (!a.is_array()) r.wrong_type(a, "/claims", "an array");
-  std::vector<TableClaim> out;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    const std::string p = "/claims/" + std::to_string(i);
-    const ojson& c = a[i];
-    if (!c.is_object()) r.wrong_type(c, p, "an object");
-    TableClaim claim;
-    claim.id = r.string(c, p, "id");
-    claim.claim = r.string(c, p, "claim");
-    claim.criterion = r.string(c, p, "criterion");
-    claim.measured = r.object(c, p, "measured");
-    const ojson& holds = r.member(c, p, "holds");
-    if (!holds.is_null()) claim.holds = r.boolean(c, p, "holds");
-    claim.note = r.string(c, p, "note");
-    claim.informative_only = r.boolean(c, p, "informative_only");
-    out.push_back(std::move(claim));
-  }
+  std::vector<Claim> out;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    out.push_back(claim_from_json(r, a[i], "/claims/" + std::to_string(i), ClaimLayout::kTable));
   return out;
 }
 
@@ -474,7 +425,7 @@ nlohmann::ordered_json to_json(const TableModel& m) {
   if (m.table3_counting) doc["table3_counting"] = table3_counting_json(*m.table3_counting);
   if (m.claims) {
     ojson claims = ojson::array();
-    for (const TableClaim& c : *m.claims) claims.push_back(to_json(c));
+    for (const Claim& c : *m.claims) claims.push_back(to_json(c, ClaimLayout::kTable));
     doc["claims"] = claims;
   }
   return doc;
