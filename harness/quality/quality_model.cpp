@@ -191,7 +191,11 @@ void to_json(json& j, const QualityModel& m) {
     sweep[name] = out;
   }
   j["k_sweep"] = sweep;
-  if (!m.claims_document.is_null()) j["claims"] = m.claims_document;
+  if (m.claims) {
+    json claims = json::array();
+    for (const Claim& c : *m.claims) claims.push_back(json(to_json(c, ClaimLayout::kQuality)));
+    j["claims"] = claims;
+  }
   json timings = json::object();
   for (const auto& [k, v] : m.timings_s) timings[k] = v;
   j["timings_s"] = timings;
@@ -297,16 +301,10 @@ QualityModel quality_model_from_json(const json& doc, const std::string& what) {
       m.k_sweep.emplace_back(g, std::move(out));
     }
   if (doc.contains("claims")) {
-    const json& claims = r.member(doc, "", "claims");
-    if (!claims.is_array()) r.wrong_type(claims, "/claims", "an array");
-    m.claims_document = claims;
-    for (std::size_t i = 0; i < claims.size(); ++i) {
-      const std::string p = r.element("/claims", i);
-      const json& c = claims[i];
-      if (!c.is_object()) r.wrong_type(c, p, "an object");
-      m.claims.push_back({r.string(c, p, "claim"), r.string(c, p, "measure"), r.string(c, p, "verdict"),
-                          r.optional_number(c, p, "fis_tok15"), r.optional_number(c, p, "fis_modified")});
-    }
+    const json& claims = r.array(doc, "", "claims");
+    m.claims.emplace();
+    for (std::size_t i = 0; i < claims.size(); ++i)
+      m.claims->push_back(claim_from_json(r, claims[i], r.element("/claims", i), ClaimLayout::kQuality));
   }
   if (doc.contains("timings_s"))
     for (const auto& [k, v] : r.object(doc, "", "timings_s").items())
