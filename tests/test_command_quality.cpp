@@ -1,6 +1,7 @@
 // `vsgl-bench quality` as a user runs it: usage and input errors exit with their codes, and a run on
-// a recorded tiny capture (plus a 3-frame sequence) writes quality.json (schema, capture hashes,
-// claims with verdicts), quality.md and the pictures.
+// a recorded tiny capture (plus a 3-frame sequence) writes quality.json (conforming to
+// results/schema/quality.schema.json: schema, capture hashes, claims with verdicts), quality.md and
+// the pictures.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -10,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.hpp"
+#include "harness/core/json_schema_subset.hpp"
 #include "test_support.hpp"
 
 namespace vsgl {
@@ -46,6 +48,10 @@ TEST(QualityCli, TinyCaptureWritesJsonMarkdownAndPictures) {
   const auto j = nlohmann::json::parse(in);
   EXPECT_EQ(j["schema"], "vsgl-quality");
   EXPECT_EQ(j["schema_version"], 3);  // stdev: sample (n - 1) since version 3
+  // What the writer writes is what the committed schema describes.
+  for (const std::string& problem : validate_against_schema(
+           j, test::read_json(std::filesystem::path(VSGL_SOURCE_DIR) / "results/schema/quality.schema.json")))
+    ADD_FAILURE() << problem;
   EXPECT_TRUE(j["capture"]["hashes"]["rsm"].contains("pdf")) << j["capture"]["hashes"].dump();
   EXPECT_EQ(j["flicker_static"]["generators"]["fis_modified"]["frames"], 3);
   EXPECT_EQ(j["flicker_animated"]["frames"], 3);

@@ -1,7 +1,8 @@
 // The schema subset validator (harness/core/json_schema_subset) against the committed schemas
-// and results: every subschema uses only what it enforces, every committed table conforms, and
-// the deliberately broken tables of tests/data/table_schema_mutations.json are rejected (as
-// tests/validate_results.py checks with python3-jsonschema: the two validators agree on them).
+// and results: every subschema uses only what it enforces, every committed result conforms to its
+// kind's schema, and the deliberately broken tables and quality reports of
+// tests/data/{table,quality}_schema_mutations.json are rejected (as tests/validate_results.py
+// checks with python3-jsonschema: the two validators agree on them).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -191,8 +192,10 @@ json mutated(json doc, const json& mutation) {
   return doc;
 }
 
-TEST(CommittedResults, DeliberatelyBrokenTablesAreRejected) {
-  const json spec = read_json(kSource / "tests/data/table_schema_mutations.json");
+// Each mutation of `spec_file` ({base, schema, mutations}) turns its committed base file into one
+// the schema must refuse: the schema checks what it says, down into the nested objects.
+void expect_mutations_rejected(const std::string& spec_file) {
+  const json spec = read_json(kSource / spec_file);
   const json base = read_json(kSource / spec["base"].get<std::string>());
   const json schema = read_json(kSource / spec["schema"].get<std::string>());
   ASSERT_TRUE(validate_against_schema(base, schema).empty());
@@ -203,6 +206,14 @@ TEST(CommittedResults, DeliberatelyBrokenTablesAreRejected) {
     ASSERT_NE(broken, base);  // the pointer reached something
     EXPECT_FALSE(validate_against_schema(broken, schema).empty()) << "accepted";
   }
+}
+
+TEST(CommittedResults, DeliberatelyBrokenTablesAreRejected) {
+  expect_mutations_rejected("tests/data/table_schema_mutations.json");
+}
+
+TEST(CommittedResults, DeliberatelyBrokenQualityReportsAreRejected) {
+  expect_mutations_rejected("tests/data/quality_schema_mutations.json");
 }
 
 }  // namespace

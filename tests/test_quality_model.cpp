@@ -43,7 +43,8 @@ TEST(QualityModel, CommittedReportsRenderAsCommitted) {
     SCOPED_TRACE(f.string());
     const QualityModel m = quality_model_from_json(read_report(f), f.string());
     EXPECT_EQ(m.views.size(), 2u);
-    EXPECT_FALSE(m.claims.empty());
+    ASSERT_TRUE(m.claims);
+    EXPECT_FALSE(m.claims->empty());
     std::ifstream in(fs::path(f).replace_filename("quality.md"), std::ios::binary);
     std::ostringstream committed;
     committed << in.rdbuf();

@@ -4,8 +4,9 @@ harness/core/json_schema_subset (tests/test_json_schema_subset.cpp runs the same
 it). Each schema in results/schema/ is checked against the meta-schema its $schema names; every
 JSON file under results/ by its kind (tests/data/result_kinds.json): a table against the table
 schema of its version (table.schema.json, or a frozen older one such as table.v2.schema.json), a
-sweep against sweep.schema.json, a kind without a schema only parsed; and every deliberately
-broken table of tests/data/table_schema_mutations.json must be rejected, as the subset validator
+sweep against sweep.schema.json, a quality report against quality.schema.json, a kind without a
+schema only parsed; and every deliberately broken table and quality report of
+tests/data/{table,quality}_schema_mutations.json must be rejected, as the subset validator
 rejects it.
 
 Usage: validate_results.py SOURCE_DIR            the committed results
@@ -141,15 +142,17 @@ def main():
         return 1
     failures += check_files(root, root / "results", "results/", schemas, kinds, exceptions)
 
-    spec = json.loads((root / "tests/data/table_schema_mutations.json").read_text())
-    base = json.loads((root / spec["base"]).read_text())
-    validator = schemas[pathlib.Path(spec["schema"]).name]
-    for mutation in spec["mutations"]:
-        if validator.is_valid(apply_mutation(base, mutation)):
-            print(f"FAIL accepted a table with {mutation['what']}")
-            failures += 1
-        else:
-            print(f"ok   rejected a table with {mutation['what']}")
+    mutation_specs = (("table", "table_schema_mutations.json"), ("quality report", "quality_schema_mutations.json"))
+    for kind, spec_file in mutation_specs:
+        spec = json.loads((root / "tests/data" / spec_file).read_text())
+        base = json.loads((root / spec["base"]).read_text())
+        validator = schemas[pathlib.Path(spec["schema"]).name]
+        for mutation in spec["mutations"]:
+            if validator.is_valid(apply_mutation(base, mutation)):
+                print(f"FAIL accepted a {kind} with {mutation['what']}")
+                failures += 1
+            else:
+                print(f"ok   rejected a {kind} with {mutation['what']}")
 
     print(f"{failures} failure(s)")
     return 1 if failures else 0

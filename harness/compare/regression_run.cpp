@@ -20,37 +20,12 @@ using json = nlohmann::ordered_json;
 // Order-independent copy for equality (capture hashes, workload config).
 nlohmann::json unordered(const json& j) { return nlohmann::json::parse(j.dump()); }
 
-// Field access that names the file and the JSON pointer of whatever is missing or mistyped.
-// Run files are read with JSON pointers in their messages; times must be positive.
-class Reader : public OrderedJsonReader {
- public:
-  explicit Reader(std::string what) : OrderedJsonReader(std::move(what), JsonPathStyle::kPointer) {}
-  std::string text(const json& obj, const std::string& pointer, const std::string& key) const {
-    return string(obj, pointer, key);
-  }
-  double time(const json& v, const std::string& pointer) const {
-    const double t = number(v, pointer);
-    if (!(t > 0)) fail(pointer, "is not a positive time (" + v.dump() + ")");
-    return t;
-  }
-  // An optional flag: absent is `fallback`, present must be a boolean.
-  bool flag(const json& obj, const std::string& pointer, const std::string& key, bool fallback) const {
-    const auto it = obj.find(key);
-    if (it == obj.end()) return fallback;
-    if (!it->is_boolean()) fail(pointer + "/" + key, std::string("is ") + it->type_name() + ", not a boolean");
-    return it->get<bool>();
-  }
-  double time(const json& obj, const std::string& pointer, const std::string& key) const {
-    return time(member(obj, pointer, key), pointer + "/" + key);
-  }
-};
-
 std::string text_or(const json& obj, const std::string& key, const std::string& fallback) {
   const auto it = obj.find(key);
   return it != obj.end() && it->is_string() ? it->get<std::string>() : fallback;
 }
 
-RunSeries series_of(const TimingStats& stats, std::string name, int table, const std::string& generator,
+RunSeries series_of(const TimingStatistics& stats, std::string name, int table, const std::string& generator,
                     const std::string& view, const std::string& phase) {
   RunSeries s;
   s.name = std::move(name);
@@ -65,12 +40,12 @@ RunSeries series_of(const TimingStats& stats, std::string name, int table, const
 
 // What identifies a run and must be in its file, beyond what the table model itself requires.
 template <typename T>
-const T& required(const Reader& r, const std::optional<T>& v, const std::string& pointer) {
+const T& required(const OrderedJsonReader& r, const std::optional<T>& v, const std::string& pointer) {
   if (!v) r.fail(pointer, "missing field");
   return *v;
 }
 
-BenchRun parse_table_json(const json& doc, const Reader& r) {
+BenchRun parse_table_json(const json& doc, const OrderedJsonReader& r) {
   const TableModel m = table_model_from_json(doc, r.where());
   BenchRun run;
   run.format = "table";
@@ -117,7 +92,7 @@ BenchRun parse_table_json(const json& doc, const Reader& r) {
   return run;
 }
 
-double to_ms(double value, const std::string& unit, const Reader& r, const std::string& pointer) {
+double to_ms(double value, const std::string& unit, const OrderedJsonReader& r, const std::string& pointer) {
   if (unit == "ns") return value * 1e-6;
   if (unit == "us") return value * 1e-3;
   if (unit == "ms") return value;
@@ -125,8 +100,8 @@ double to_ms(double value, const std::string& unit, const Reader& r, const std::
   r.fail(pointer, "unknown time unit " + quoted_text(unit));
 }
 
-json parse_embedded(const Reader& r, const json& context, const std::string& key) {
-  const std::string text = r.text(context, "/context", key);
+json parse_embedded(const OrderedJsonReader& r, const json& context, const std::string& key) {
+  const std::string text = r.string(context, "/context", key);
   try {
     return json::parse(text);
   } catch (const json::exception& e) {
@@ -134,11 +109,11 @@ json parse_embedded(const Reader& r, const json& context, const std::string& key
   }
 }
 
-BenchRun parse_gbench_json(const json& doc, const Reader& r) {
+BenchRun parse_gbench_json(const json& doc, const OrderedJsonReader& r) {
   BenchRun run;
   run.format = "gbench";
   const json& context = r.object(doc, "", "context");
-  run.device = r.text(context, "/context", "vsgl_device");
+  run.device = r.string(context, "/context", "vsgl_device");
   run.device_type = text_or(context, "vsgl_device_type", "");
   run.git_commit = text_or(context, "vsgl_git_commit", "unknown");
   run.date = text_or(context, "date", "");
@@ -151,7 +126,7 @@ BenchRun parse_gbench_json(const json& doc, const Reader& r) {
     const json& b = benchmarks[i];
     const std::string bp = "/benchmarks/" + std::to_string(i);
     if (text_or(b, "run_type", "iteration") == "aggregate") continue;  // mean/median/stddev of the repetitions
-    const std::string name = r.text(b, bp, "name");
+    const std::string name = r.string(b, bp, "name");
     if (r.flag(b, bp, "error_occurred", false))
       r.fail(bp, "benchmark " + quoted_text(name) + " reported an error: " +
                      quoted_text(text_or(b, "error_message", "(no message)")));
@@ -162,7 +137,7 @@ BenchRun parse_gbench_json(const json& doc, const Reader& r) {
     for (std::string part; std::getline(ss, part, '/');) parts.push_back(part);
     if (parts.size() < 4 || parts[0].rfind("table", 0) != 0 || (parts[0] != "table1" && parts[0] != "table2"))
       r.fail(bp + "/name", quoted_text(name) + " is not a vsgl-gbench benchmark name (tableN/generator/view/phase/...)");
-    const double ms = to_ms(r.time(b, bp, "real_time"), r.text(b, bp, "time_unit"), r, bp + "/time_unit");
+    const double ms = to_ms(r.time(b, bp, "real_time"), r.string(b, bp, "time_unit"), r, bp + "/time_unit");
     if (!std::isfinite(ms) || !(ms > 0)) r.fail(bp + "/real_time", "is not a positive time in ms (out of range)");
     const std::string stable = parts[0] + "/" + parts[1] + "/" + parts[2] + "/" + parts[3];
     auto [it, fresh] = index.try_emplace(stable, run.series.size());
@@ -210,7 +185,7 @@ const RunSeries* BenchRun::find(const std::string& name) const {
 }
 
 BenchRun parse_bench_run(const nlohmann::ordered_json& doc, const std::string& what) {
-  const Reader r(what);
+  const OrderedJsonReader r(what, JsonPathStyle::kPointer);
   if (!doc.is_object()) r.fail("", "is not a JSON object (neither a table JSON nor Google Benchmark JSON)");
   BenchRun run;
   if (doc.contains("benchmarks") && doc.contains("context")) run = parse_gbench_json(doc, r);

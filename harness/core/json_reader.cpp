@@ -82,12 +82,26 @@ bool BasicJsonReader<Json>::boolean(const json& object, const std::string& paren
 }
 
 template <typename Json>
+uint64_t BasicJsonReader<Json>::uint64(const json& value, const std::string& path) const {
+  // nlohmann parses every non-negative integer literal as number_unsigned; one set in memory from
+  // a signed value is number_integer.
+  if (!value.is_number_integer() || (!value.is_number_unsigned() && value.template get<int64_t>() < 0))
+    wrong_type(value, path, "a non-negative integer");
+  return value.template get<uint64_t>();
+}
+
+template <typename Json>
+uint64_t BasicJsonReader<Json>::uint64(const json& object, const std::string& parent, std::string_view key) const {
+  return uint64(member(object, parent, key), child(parent, key));
+}
+
+template <typename Json>
 uint32_t BasicJsonReader<Json>::uint32(const json& object, const std::string& parent, std::string_view key) const {
   const json& value = member(object, parent, key);
-  // nlohmann parses every non-negative integer literal as number_unsigned.
-  if (!value.is_number_unsigned() || value.template get<unsigned long long>() > std::numeric_limits<uint32_t>::max())
+  if (!value.is_number_integer() || (!value.is_number_unsigned() && value.template get<int64_t>() < 0) ||
+      value.template get<uint64_t>() > std::numeric_limits<uint32_t>::max())
     wrong_type(value, child(parent, key), "an unsigned 32-bit integer");
-  return static_cast<uint32_t>(value.template get<unsigned long long>());
+  return static_cast<uint32_t>(value.template get<uint64_t>());
 }
 
 template <typename Json>
@@ -110,6 +124,113 @@ float BasicJsonReader<Json>::number32(const json& value, const std::string& path
     fail(path, "(" + number_text(v) + ") is out of float32 range");
   }
   return static_cast<float>(v);
+}
+
+template <typename Json>
+double BasicJsonReader<Json>::non_negative(const json& value, const std::string& path) const {
+  const double x = number(value, path);
+  if (x < 0) fail(path, "is negative (" + printable_text(value.dump()) + ")");
+  return x;
+}
+
+template <typename Json>
+double BasicJsonReader<Json>::time(const json& value, const std::string& path) const {
+  const double t = number(value, path);
+  if (!(t > 0)) fail(path, "is not a positive time (" + printable_text(value.dump()) + ")");
+  return t;
+}
+
+template <typename Json>
+double BasicJsonReader<Json>::time(const json& object, const std::string& parent, std::string_view key) const {
+  return time(member(object, parent, key), child(parent, key));
+}
+
+template <typename Json>
+std::vector<double> BasicJsonReader<Json>::times(const json& object, const std::string& parent,
+                                                 std::string_view key) const {
+  const std::string path = child(parent, key);
+  const json& a = member(object, parent, key);
+  if (!a.is_array() || a.empty()) fail(path, "is not a non-empty array");
+  std::vector<double> out;
+  for (std::size_t i = 0; i < a.size(); ++i) out.push_back(time(a[i], element(path, i)));
+  return out;
+}
+
+template <typename Json>
+std::vector<double> BasicJsonReader<Json>::numbers(const json& object, const std::string& parent,
+                                                   std::string_view key) const {
+  const std::string path = child(parent, key);
+  const json& a = array(object, parent, key);
+  std::vector<double> out;
+  for (std::size_t i = 0; i < a.size(); ++i) out.push_back(number(a[i], element(path, i)));
+  return out;
+}
+
+template <typename Json>
+std::vector<std::pair<std::string, std::string>> BasicJsonReader<Json>::string_map(const json& value,
+                                                                                   const std::string& path) const {
+  if (!value.is_object()) wrong_type(value, path, "an object");
+  std::vector<std::pair<std::string, std::string>> out;
+  for (auto it = value.begin(); it != value.end(); ++it) {
+    if (!it->is_string()) wrong_type(*it, child(path, it.key()), "a string");
+    out.emplace_back(it.key(), it->template get<std::string>());
+  }
+  return out;
+}
+
+template <typename Json>
+std::optional<std::string> BasicJsonReader<Json>::optional_string(const json& object, const std::string& parent,
+                                                                  std::string_view key) const {
+  const auto it = object.find(std::string(key));
+  if (it == object.end() || it->is_null()) return std::nullopt;
+  return string(object, parent, key);
+}
+
+template <typename Json>
+std::optional<double> BasicJsonReader<Json>::optional_number(const json& object, const std::string& parent,
+                                                             std::string_view key) const {
+  const auto it = object.find(std::string(key));
+  if (it == object.end() || it->is_null()) return std::nullopt;
+  return number(*it, child(parent, key));
+}
+
+template <typename Json>
+std::optional<uint64_t> BasicJsonReader<Json>::optional_uint64(const json& object, const std::string& parent,
+                                                               std::string_view key) const {
+  const auto it = object.find(std::string(key));
+  if (it == object.end() || it->is_null()) return std::nullopt;
+  return uint64(*it, child(parent, key));
+}
+
+template <typename Json>
+const Json* BasicJsonReader<Json>::optional_object(const json& object, const std::string& parent,
+                                                   std::string_view key) const {
+  const auto it = object.find(std::string(key));
+  if (it == object.end() || it->is_null()) return nullptr;
+  return &this->object(object, parent, key);
+}
+
+template <typename Json>
+bool BasicJsonReader<Json>::flag(const json& object, const std::string& parent, std::string_view key,
+                                 bool fallback) const {
+  const auto it = object.find(std::string(key));
+  if (it == object.end()) return fallback;
+  return boolean(object, parent, key);
+}
+
+template <typename Json>
+const Json& BasicJsonReader<Json>::array(const json& object, const std::string& parent, std::string_view key) const {
+  const json& value = member(object, parent, key);
+  if (!value.is_array()) wrong_type(value, child(parent, key), "an array");
+  return value;
+}
+
+template <typename Json>
+const Json& BasicJsonReader<Json>::nonempty_array(const json& object, const std::string& parent,
+                                                  std::string_view key) const {
+  const json& value = array(object, parent, key);
+  if (value.empty()) fail(child(parent, key), "is empty");
+  return value;
 }
 
 template <typename Json>

@@ -15,64 +15,19 @@ namespace {
 using ojson = nlohmann::ordered_json;
 
 // Field access that names the file and the JSON pointer of whatever is missing or mistyped.
-class Reader : public OrderedJsonReader {
- public:
-  explicit Reader(std::string what) : OrderedJsonReader(std::move(what), JsonPathStyle::kPointer) {}
+using Reader = OrderedJsonReader;  // core/json_reader.hpp, with JSON pointers
 
-  double time(const ojson& v, const std::string& pointer) const {
-    const double t = number(v, pointer);
-    if (!(t > 0)) fail(pointer, "is not a positive time (" + printable_text(v.dump()) + ")");
-    return t;
-  }
-  double time(const ojson& obj, const std::string& pointer, const std::string& key) const {
-    return time(member(obj, pointer, key), pointer + "/" + key);
-  }
-  const ojson& array(const ojson& obj, const std::string& pointer, const std::string& key) const {
-    const ojson& a = member(obj, pointer, key);
-    if (!a.is_array()) wrong_type(a, pointer + "/" + key, "an array");
-    return a;
-  }
-  const ojson& nonempty_array(const ojson& obj, const std::string& pointer, const std::string& key) const {
-    const ojson& a = array(obj, pointer, key);
-    if (a.empty()) fail(pointer + "/" + key, "is empty");
-    return a;
-  }
-  // A parsed file holds non-negative integers as unsigned, a document built in memory may hold
-  // them as signed.
-  std::size_t index(const ojson& v, const std::string& pointer) const {
-    if (!v.is_number_integer() || (!v.is_number_unsigned() && v.get<int64_t>() < 0))
-      wrong_type(v, pointer, "a non-negative integer");
-    return static_cast<std::size_t>(v.get<uint64_t>());
-  }
-  // A number >= 0 (a growth x, an axis value).
-  double non_negative(const ojson& v, const std::string& pointer) const {
-    const double x = number(v, pointer);
-    if (x < 0) fail(pointer, "is negative (" + printable_text(v.dump()) + ")");
-    return x;
-  }
-  std::optional<std::string> optional_string(const ojson& obj, const std::string& pointer,
-                                             const std::string& key) const {
-    if (!obj.contains(key)) return std::nullopt;
-    return string(obj, pointer, key);
-  }
-  // An object of strings, in the file's order ("values", "slice").
-  std::vector<std::pair<std::string, std::string>> string_map(const ojson& o, const std::string& pointer) const {
-    if (!o.is_object()) wrong_type(o, pointer, "an object");
-    std::vector<std::pair<std::string, std::string>> out;
-    for (const auto& [k, v] : o.items()) {
-      if (!v.is_string()) wrong_type(v, pointer + "/" + k, "a string");
-      out.emplace_back(k, v.get<std::string>());
-    }
-    return out;
-  }
-};
+// A count or an index into the document (size_t; the reader's non-negative integer).
+std::size_t index(const Reader& r, const ojson& v, const std::string& pointer) {
+  return static_cast<std::size_t>(r.uint64(v, pointer));
+}
 
 SweepTimingStats read_stats(const Reader& r, const ojson& series, const std::string& p) {
   if (!series.is_object()) r.wrong_type(series, p, "an object");
   const ojson& stats = r.object(series, p, "stats");
   const std::string sp = p + "/stats";
   SweepTimingStats out;
-  out.count = r.index(r.member(stats, sp, "count"), sp + "/count");
+  out.count = index(r, r.member(stats, sp, "count"), sp + "/count");
   out.median_ms = r.time(stats, sp, "median");
   out.q1_ms = r.time(stats, sp, "q1");
   out.q3_ms = r.time(stats, sp, "q3");
@@ -184,7 +139,7 @@ SweepPoint read_point(const Reader& r, const ojson& pj, const std::string& p, st
                       const std::vector<SweepAxisModel>& axes) {
   if (!pj.is_object()) r.wrong_type(pj, p, "an object");
   SweepPoint out;
-  out.index = r.index(r.member(pj, p, "index"), p + "/index");
+  out.index = index(r, r.member(pj, p, "index"), p + "/index");
   if (out.index != position)
     r.fail(p + "/index", "is " + std::to_string(out.index) + ", not its position " + std::to_string(position));
   out.value_index = read_value_index(r, pj, p, axes);
@@ -217,7 +172,7 @@ SweepFitModel read_fit(const Reader& r, const ojson& f, const std::string& p, co
            "has " + std::to_string(xs.size()) + " values for " + std::to_string(points.size()) + " points");
   for (std::size_t k = 0; k < points.size(); ++k) {
     const std::string pp = p + "/points/" + std::to_string(k);
-    const std::size_t i = r.index(points[k], pp);
+    const std::size_t i = index(r, points[k], pp);
     if (i >= m.points.size()) r.fail(pp, "is " + std::to_string(i) + ", past the last point");
     const SweepCase* c = m.points[i].find(out.generator, out.view);
     if (c == nullptr || c->find(out.phase) == nullptr)
@@ -240,8 +195,8 @@ SweepFitModel read_fit(const Reader& r, const ojson& f, const std::string& p, co
                              r.number(growth, gp, "low"),
                              r.number(growth, gp, "high"),
                              r.number(growth, gp, "confidence"),
-                             r.index(r.member(growth, gp, "resamples"), gp + "/resamples"),
-                             r.index(r.member(growth, gp, "points"), gp + "/points"),
+                             index(r, r.member(growth, gp, "resamples"), gp + "/resamples"),
+                             index(r, r.member(growth, gp, "points"), gp + "/points"),
                              r.string(growth, gp, "text")};
   }
   out.note = r.optional_string(f, p, "note").value_or("");
@@ -279,7 +234,7 @@ SweepClaimMeasure read_claim_measure(const Reader& r, const ojson& m, const std:
     const ojson& c = changes[k];
     if (!c.is_object()) r.wrong_type(c, cp, "an object");
     out.changes.push_back(SweepClaimChange{r.non_negative(r.member(c, cp, "gamma"), cp + "/gamma"),
-                                           r.index(r.member(c, cp, "point"), cp + "/point"), r.number(c, cp, "change"),
+                                           index(r, r.member(c, cp, "point"), cp + "/point"), r.number(c, cp, "change"),
                                            r.number(c, cp, "low"), r.number(c, cp, "high")});
   }
   return out;
@@ -489,7 +444,7 @@ std::string sweep_slice_text(const std::vector<std::pair<std::string, std::strin
 }
 
 SweepModel read_sweep_model(const nlohmann::ordered_json& doc, const std::string& what) {
-  const Reader r(what);
+  const Reader r(what, JsonPathStyle::kPointer);
   if (!doc.is_object()) r.fail("", "is not a JSON object");
   // The kind first: a table or quality JSON is told apart from a damaged sweep.
   if (!doc.contains("kind")) r.fail("/kind", "missing field: not a sweep JSON (kind \"sweep\")");

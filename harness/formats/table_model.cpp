@@ -16,26 +16,12 @@ ojson number_or_null(const std::optional<double>& v) { return v ? ojson(*v) : oj
 
 // ---- writing ----
 
-ojson stats_json(const TimingStats& s) {
-  ojson o{{"median_ms", s.median_ms}, {"paper_ms", number_or_null(s.paper_ms)}};
-  if (s.min_ms) o["min_ms"] = *s.min_ms;
-  if (s.max_ms) o["max_ms"] = *s.max_ms;
-  o["q1_ms"] = s.q1_ms;
-  o["q3_ms"] = s.q3_ms;
-  if (s.mean_ms) o["mean_ms"] = *s.mean_ms;
-  if (s.stdev_ms) o["stdev_ms"] = *s.stdev_ms;
-  if (s.relative_iqr) o["relative_iqr"] = *s.relative_iqr;
-  if (s.count) o["count"] = *s.count;
-  o["samples_ms"] = s.samples_ms;
-  return o;
-}
-
 ojson generator_json(const GeneratorTiming& g) {
   ojson views = ojson::object();
   for (const auto& [view, v] : g.views) {
     ojson phases = ojson::object();
-    for (const PhaseTiming& p : v.phases) phases[p.phase] = stats_json(p.stats);
-    ojson vj{{"phases", phases}, {"total", stats_json(v.total)}};
+    for (const PhaseTiming& p : v.phases) phases[p.phase] = to_json(p.stats, StatisticsLayout::kTable);
+    ojson vj{{"phases", phases}, {"total", to_json(v.total, StatisticsLayout::kTable)}};
     if (v.dispatch_calls) vj["dispatch_calls"] = *v.dispatch_calls;
     views[view] = vj;
   }
@@ -43,7 +29,7 @@ ojson generator_json(const GeneratorTiming& g) {
   if (g.label) o["label"] = *g.label;
   if (g.in_paper) o["in_paper"] = *g.in_paper;
   o["views"] = views;
-  o["total"] = stats_json(g.total);
+  o["total"] = to_json(g.total, StatisticsLayout::kTable);
   return o;
 }
 
@@ -164,101 +150,16 @@ ojson table3_counting_json(const Table3Counting& c) {
 
 }  // namespace
 
-nlohmann::ordered_json to_json(const TableClaim& c) {
-  return ojson{{"id", c.id},
-               {"claim", c.claim},
-               {"criterion", c.criterion},
-               {"measured", c.measured},
-               {"holds", c.holds ? ojson(*c.holds) : ojson(nullptr)},
-               {"note", c.note},
-               {"informative_only", c.informative_only}};
-}
-
 namespace {
 
 // ---- reading ----
 
-// Field access that names the file and the JSON pointer of whatever is missing or mistyped.
-class Reader : public OrderedJsonReader {
- public:
-  explicit Reader(std::string what) : OrderedJsonReader(std::move(what), JsonPathStyle::kPointer) {}
-
-  double time(const ojson& v, const std::string& pointer) const {
-    const double t = number(v, pointer);
-    if (!(t > 0)) fail(pointer, "is not a positive time (" + printable_text(v.dump()) + ")");
-    return t;
-  }
-  double time(const ojson& obj, const std::string& pointer, const std::string& key) const {
-    return time(member(obj, pointer, key), pointer + "/" + key);
-  }
-  std::vector<double> times(const ojson& obj, const std::string& pointer, const std::string& key) const {
-    const ojson& a = member(obj, pointer, key);
-    if (!a.is_array() || a.empty()) fail(pointer + "/" + key, "is not a non-empty array");
-    std::vector<double> out;
-    for (std::size_t i = 0; i < a.size(); ++i) out.push_back(time(a[i], pointer + "/" + key + "/" + std::to_string(i)));
-    return out;
-  }
-  // A parsed file holds non-negative integers as unsigned, a document built in memory as signed.
-  uint64_t uint64(const ojson& obj, const std::string& pointer, const std::string& key) const {
-    const ojson& v = member(obj, pointer, key);
-    if (!v.is_number_integer() || (!v.is_number_unsigned() && v.get<int64_t>() < 0))
-      wrong_type(v, pointer + "/" + key, "a non-negative integer");
-    return v.get<uint64_t>();
-  }
-  uint32_t count32(const ojson& obj, const std::string& pointer, const std::string& key) const {
-    const uint64_t v = uint64(obj, pointer, key);
-    if (v > UINT32_MAX) fail(pointer + "/" + key, "is out of the unsigned 32-bit range");
-    return static_cast<uint32_t>(v);
-  }
-  // Absent (or null) is none; present must be of the type.
-  std::optional<double> optional_number(const ojson& obj, const std::string& pointer, const std::string& key) const {
-    const auto it = obj.find(key);
-    if (it == obj.end() || it->is_null()) return std::nullopt;
-    return number(*it, pointer + "/" + key);
-  }
-  std::optional<uint64_t> optional_uint64(const ojson& obj, const std::string& pointer, const std::string& key) const {
-    if (!obj.contains(key)) return std::nullopt;
-    return uint64(obj, pointer, key);
-  }
-  std::optional<std::string> optional_string(const ojson& obj, const std::string& pointer, const std::string& key) const {
-    if (!obj.contains(key)) return std::nullopt;
-    return string(obj, pointer, key);
-  }
-  bool flag(const ojson& obj, const std::string& pointer, const std::string& key, bool fallback) const {
-    const auto it = obj.find(key);
-    if (it == obj.end()) return fallback;
-    if (!it->is_boolean()) fail(pointer + "/" + key, std::string("is ") + it->type_name() + ", not a boolean");
-    return it->get<bool>();
-  }
-  // A top-level object that may be absent or null (then: nullptr).
-  const ojson* optional_section(const ojson& doc, const std::string& key) const {
-    const auto it = doc.find(key);
-    if (it == doc.end() || it->is_null()) return nullptr;
-    return &object(doc, "", key);
-  }
-  const ojson* optional_object(const ojson& obj, const std::string& pointer, const std::string& key) const {
-    if (!obj.contains(key)) return nullptr;
-    return &object(obj, pointer, key);
-  }
-};
-
-TimingStats read_stats(const Reader& r, const ojson& s, const std::string& p) {
-  TimingStats out;
-  out.samples_ms = r.times(s, p, "samples_ms");
-  out.median_ms = r.time(s, p, "median_ms");
-  out.q1_ms = r.time(s, p, "q1_ms");
-  out.q3_ms = r.time(s, p, "q3_ms");
-  out.paper_ms = r.optional_number(s, p, "paper_ms");
-  out.min_ms = r.optional_number(s, p, "min_ms");
-  out.max_ms = r.optional_number(s, p, "max_ms");
-  out.mean_ms = r.optional_number(s, p, "mean_ms");
-  out.stdev_ms = r.optional_number(s, p, "stdev_ms");
-  out.relative_iqr = r.optional_number(s, p, "relative_iqr");
-  out.count = r.optional_uint64(s, p, "count");
-  return out;
+TimingStatistics read_stats(const OrderedJsonReader& r, const ojson& s, const std::string& p) {
+  return timing_statistics_from_json(r, s, p, StatisticsLayout::kTable);
 }
 
-GeneratorTiming read_generator(const Reader& r, const std::string& name, const ojson& gj, const std::string& gp) {
+GeneratorTiming read_generator(const OrderedJsonReader& r, const std::string& name, const ojson& gj,
+                               const std::string& gp) {
   if (!gj.is_object()) r.wrong_type(gj, gp, "an object");
   GeneratorTiming g;
   g.name = name;
@@ -276,25 +177,25 @@ GeneratorTiming read_generator(const Reader& r, const std::string& name, const o
       v.phases.push_back({phase, read_stats(r, stats, vp + "/phases/" + phase)});
     }
     v.total = read_stats(r, r.object(vj, vp, "total"), vp + "/total");
-    if (vj.contains("dispatch_calls")) v.dispatch_calls = r.count32(vj, vp, "dispatch_calls");
+    if (vj.contains("dispatch_calls")) v.dispatch_calls = r.uint32(vj, vp, "dispatch_calls");
     g.views[view] = std::move(v);
   }
   g.total = read_stats(r, r.object(gj, gp, "total"), gp + "/total");
   return g;
 }
 
-MeasuredVsPaper read_measured_paper(const Reader& r, const ojson& o, const std::string& p) {
+MeasuredVsPaper read_measured_paper(const OrderedJsonReader& r, const ojson& o, const std::string& p) {
   if (!o.is_object()) r.wrong_type(o, p, "an object");
   return {r.number(o, p, "measured"), r.optional_number(o, p, "paper")};
 }
 
-KeyedRatios read_keyed(const Reader& r, const ojson& o, const std::string& p) {
+KeyedRatios read_keyed(const OrderedJsonReader& r, const ojson& o, const std::string& p) {
   KeyedRatios rows;
   for (const auto& [k, v] : o.items()) rows.emplace_back(k, read_measured_paper(r, v, p + "/" + k));
   return rows;
 }
 
-PairedDifference read_paired(const Reader& r, const ojson& o, const std::string& p) {
+PairedDifference read_paired(const OrderedJsonReader& r, const ojson& o, const std::string& p) {
   PairedDifference d;
   d.rounds = r.uint64(o, p, "rounds");
   d.median_us = r.number(o, p, "median_us");
@@ -308,7 +209,7 @@ PairedDifference read_paired(const Reader& r, const ojson& o, const std::string&
   return d;
 }
 
-TableRatios read_ratios(const Reader& r, const ojson& o, const std::string& p) {
+TableRatios read_ratios(const OrderedJsonReader& r, const ojson& o, const std::string& p) {
   TableRatios out;
   if (const ojson* m = r.optional_object(o, p, "modified_minus_tok15_us")) out.modified_minus_tok15_us = read_keyed(r, *m, p + "/modified_minus_tok15_us");
   if (const ojson* po = r.optional_object(o, p, "paired_modified_minus_tok15")) {
@@ -331,7 +232,7 @@ TableRatios read_ratios(const Reader& r, const ojson& o, const std::string& p) {
   return out;
 }
 
-PassTraffic read_pass(const Reader& r, const ojson& o, const std::string& p) {
+PassTraffic read_pass(const OrderedJsonReader& r, const ojson& o, const std::string& p) {
   if (!o.is_object()) r.wrong_type(o, p, "an object");
   PassTraffic t;
   t.min_bytes_read = r.uint64(o, p, "min_bytes_read");
@@ -345,7 +246,7 @@ PassTraffic read_pass(const Reader& r, const ojson& o, const std::string& p) {
   return t;
 }
 
-TableBandwidth read_bandwidth(const Reader& r, const ojson& o, const std::string& p) {
+TableBandwidth read_bandwidth(const OrderedJsonReader& r, const ojson& o, const std::string& p) {
   TableBandwidth b;
   const ojson& c = r.object(o, p, "copy");
   const std::string cp = p + "/copy";
@@ -372,7 +273,7 @@ TableBandwidth read_bandwidth(const Reader& r, const ojson& o, const std::string
   return b;
 }
 
-std::vector<Table3Row> read_table3(const Reader& r, const ojson& o, const std::string& p) {
+std::vector<Table3Row> read_table3(const OrderedJsonReader& r, const ojson& o, const std::string& p) {
   std::vector<Table3Row> rows;
   for (const auto& [g, v] : o.items()) {
     const std::string gp = p + "/" + g;
@@ -381,15 +282,15 @@ std::vector<Table3Row> read_table3(const Reader& r, const ojson& o, const std::s
     row.generator = g;
     row.shaders = read_measured_paper(r, r.object(v, gp, "shaders"), gp + "/shaders");
     const ojson& d = r.object(v, gp, "dispatch_calls");
-    row.dispatch_camera_view = r.count32(d, gp + "/dispatch_calls", "camera_view");
-    row.dispatch_light_view = r.count32(d, gp + "/dispatch_calls", "light_view");
+    row.dispatch_camera_view = r.uint32(d, gp + "/dispatch_calls", "camera_view");
+    row.dispatch_light_view = r.uint32(d, gp + "/dispatch_calls", "light_view");
     row.dispatch_paper = r.optional_number(d, gp + "/dispatch_calls", "paper");
     if (const ojson* it = r.optional_object(d, gp + "/dispatch_calls", "iterations"))
       for (const auto& [view, vj] : it->items()) {
         const std::string ip = gp + "/dispatch_calls/iterations/" + view;
         if (!vj.is_object()) r.wrong_type(vj, ip, "an object");
-        row.dispatch_iterations[view] = {r.count32(vj, ip, "iterations"), r.count32(vj, ip, "per_iteration"),
-                                         r.count32(vj, ip, "outside")};
+        row.dispatch_iterations[view] = {r.uint32(vj, ip, "iterations"), r.uint32(vj, ip, "per_iteration"),
+                                         r.uint32(vj, ip, "outside")};
       }
     const ojson& l = r.object(v, gp, "lines_of_code");
     const std::string lp = gp + "/lines_of_code";
@@ -411,28 +312,15 @@ std::vector<Table3Row> read_table3(const Reader& r, const ojson& o, const std::s
   return rows;
 }
 
-std::vector<TableClaim> read_claims(const Reader& r, const ojson& a) {
+std::vector<Claim> read_claims(const OrderedJsonReader& r, const ojson& a) {
   if (!a.is_array()) r.wrong_type(a, "/claims", "an array");
-  std::vector<TableClaim> out;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    const std::string p = "/claims/" + std::to_string(i);
-    const ojson& c = a[i];
-    if (!c.is_object()) r.wrong_type(c, p, "an object");
-    TableClaim claim;
-    claim.id = r.string(c, p, "id");
-    claim.claim = r.string(c, p, "claim");
-    claim.criterion = r.string(c, p, "criterion");
-    claim.measured = r.object(c, p, "measured");
-    const ojson& holds = r.member(c, p, "holds");
-    if (!holds.is_null()) claim.holds = r.boolean(c, p, "holds");
-    claim.note = r.string(c, p, "note");
-    claim.informative_only = r.boolean(c, p, "informative_only");
-    out.push_back(std::move(claim));
-  }
+  std::vector<Claim> out;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    out.push_back(claim_from_json(r, a[i], "/claims/" + std::to_string(i), ClaimLayout::kTable));
   return out;
 }
 
-CaptureSummary read_capture(const Reader& r, const ojson& c) {
+CaptureSummary read_capture(const OrderedJsonReader& r, const ojson& c) {
   CaptureSummary out;
   out.fields = c;
   if (const ojson* h = r.optional_object(c, "/capture", "hashes")) out.hashes = *h;
@@ -463,7 +351,7 @@ SceneIdentity name_only_scene(const std::string& name, const TableModel& m) {
 }
 
 // Schema 3's object; schema 2's plain name.
-std::optional<SceneIdentity> read_scene(const Reader& r, const ojson& doc, const TableModel& m) {
+std::optional<SceneIdentity> read_scene(const OrderedJsonReader& r, const ojson& doc, const TableModel& m) {
   const auto it = doc.find("scene");
   if (it == doc.end()) return std::nullopt;
   if (it->is_string()) {
@@ -497,7 +385,7 @@ int TableModel::vsgl_count(const std::string& view) const {
 }
 
 CaptureSummary capture_summary_from_json(const nlohmann::ordered_json& capture, const std::string& what) {
-  const Reader r(what);
+  const OrderedJsonReader r(what, JsonPathStyle::kPointer);
   if (!capture.is_object()) r.wrong_type(capture, "/capture", "an object");
   return read_capture(r, capture);
 }
@@ -537,14 +425,14 @@ nlohmann::ordered_json to_json(const TableModel& m) {
   if (m.table3_counting) doc["table3_counting"] = table3_counting_json(*m.table3_counting);
   if (m.claims) {
     ojson claims = ojson::array();
-    for (const TableClaim& c : *m.claims) claims.push_back(to_json(c));
+    for (const Claim& c : *m.claims) claims.push_back(to_json(c, ClaimLayout::kTable));
     doc["claims"] = claims;
   }
   return doc;
 }
 
 TableModel table_model_from_json(const nlohmann::ordered_json& doc, const std::string& what) {
-  const Reader r(what);
+  const OrderedJsonReader r(what, JsonPathStyle::kPointer);
   if (!doc.is_object()) r.fail("", "is not a JSON object");
   TableModel m;
   const ojson& version = r.member(doc, "", "schema_version");
@@ -558,7 +446,7 @@ TableModel table_model_from_json(const nlohmann::ordered_json& doc, const std::s
   m.title = r.optional_string(doc, "", "title");
   m.unit = r.optional_string(doc, "", "unit");
 
-  if (const ojson* device = r.optional_section(doc, "device")) {
+  if (const ojson* device = r.optional_object(doc, "", "device")) {
     m.device.fields = *device;
     m.device.name = r.optional_string(*device, "/device", "name");
     m.device.type = device->contains("type") && (*device)["type"].is_string() ? (*device)["type"].get<std::string>() : "";
@@ -571,14 +459,14 @@ TableModel table_model_from_json(const nlohmann::ordered_json& doc, const std::s
   m.timestamp_period_ns = r.optional_number(doc, "", "timestamp_period_ns");
   m.timestamp_valid_bits = r.optional_uint64(doc, "", "timestamp_valid_bits");
 
-  if (const ojson* build = r.optional_section(doc, "build")) {
+  if (const ojson* build = r.optional_object(doc, "", "build")) {
     m.build.fields = *build;
     m.build.git_commit = r.optional_string(*build, "/build", "git_commit");
     m.build.git_dirty = r.flag(*build, "/build", "git_dirty", false);
   } else {
     m.build.fields = nullptr;
   }
-  if (const ojson* run = r.optional_section(doc, "run")) {
+  if (const ojson* run = r.optional_object(doc, "", "run")) {
     m.run.fields = *run;
     m.run.started_utc = r.optional_string(*run, "/run", "started_utc");
     m.run.quick = r.flag(*run, "/run", "quick", false);
@@ -592,9 +480,9 @@ TableModel table_model_from_json(const nlohmann::ordered_json& doc, const std::s
   } else {
     m.run.fields = nullptr;
   }
-  if (const ojson* config = r.optional_section(doc, "config")) m.config = *config;
+  if (const ojson* config = r.optional_object(doc, "", "config")) m.config = *config;
   else m.config = nullptr;
-  if (const ojson* capture = r.optional_section(doc, "capture")) m.capture = read_capture(r, *capture);
+  if (const ojson* capture = r.optional_object(doc, "", "capture")) m.capture = read_capture(r, *capture);
   else m.capture.fields = nullptr;
   m.scene = read_scene(r, doc, m);
   if (const ojson* p = r.optional_object(doc, "", "paper"))

@@ -18,33 +18,22 @@
 
 #include <nlohmann/json.hpp>
 
+#include "harness/formats/claim.hpp"
 #include "harness/formats/scene_identity.hpp"
+#include "harness/formats/timing_statistics.hpp"
 
 namespace vsgl {
 
 inline constexpr int kTableSchemaVersion = 3;  // 3: `scene` is an object (SceneIdentity)
 
-// DESIGN.md §9's statistics of one series (ms), with the paper's value beside it.
-struct TimingStats {
-  std::vector<double> samples_ms;  // every timed replay, positive
-  double median_ms = 0;
-  double q1_ms = 0;
-  double q3_ms = 0;
-  std::optional<double> paper_ms;  // null in the file: the paper has no number here
-  std::optional<double> min_ms, max_ms, mean_ms;
-  std::optional<double> stdev_ms;  // sample standard deviation (n - 1)
-  std::optional<double> relative_iqr;
-  std::optional<uint64_t> count;
-};
-
 struct PhaseTiming {
   std::string phase;  // "additional", "mipmapping", "filtered_sampling", "cluster_assignment", ...
-  TimingStats stats;
+  TimingStatistics stats;  // StatisticsLayout::kTable, with the paper's number
 };
 
 struct ViewTiming {
   std::vector<PhaseTiming> phases;  // in the generator's order
-  TimingStats total;
+  TimingStatistics total;
   std::optional<uint32_t> dispatch_calls;
 };
 
@@ -53,7 +42,7 @@ struct GeneratorTiming {
   std::optional<std::string> label;  // the paper's column name
   std::optional<bool> in_paper;
   std::map<std::string, ViewTiming> views;  // "camera_view", "light_view"
-  TimingStats total;  // per round: camera view + light view
+  TimingStatistics total;                   // per round: camera view + light view
 };
 
 struct MeasuredVsPaper {
@@ -173,17 +162,6 @@ struct Table3Counting {
   std::optional<Table3Difference> difference;
 };
 
-// One of the paper's claims checked on this run (report/table_claims.hpp).
-struct TableClaim {
-  std::string id;
-  std::string claim;
-  std::string criterion;
-  nlohmann::ordered_json measured = nlohmann::ordered_json::object();
-  std::optional<bool> holds;  // null: not measured or inconclusive (see note)
-  std::string note;
-  bool informative_only = false;
-};
-
 struct DriverSummary {
   std::string name, info, version;
 };
@@ -251,7 +229,7 @@ struct TableModel {
   std::optional<TableBandwidth> bandwidth;
   std::optional<std::vector<Table3Row>> table3;
   std::optional<Table3Counting> table3_counting;
-  std::optional<std::vector<TableClaim>> claims;
+  std::optional<std::vector<Claim>> claims;  // ClaimLayout::kTable (report/table_claims.hpp)
 
   // The scene the run timed: `scene`, else (schema 1) the capture's scene name, its kind inferred
   // as for a schema 2 name. Not written back: only `scene` is.
@@ -264,7 +242,6 @@ struct TableModel {
 // The document, keys in the order of the schema. Throws std::invalid_argument for a model that
 // cannot be written (a required view missing).
 nlohmann::ordered_json to_json(const TableModel& model);
-nlohmann::ordered_json to_json(const TableClaim& claim);
 
 // Reads a table document; `what` names it in messages. Throws InputError naming the JSON pointer
 // of whatever is missing or mistyped, and a time that is not positive. A table that is null (a

@@ -12,6 +12,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "harness/formats/claim.hpp"
+
 namespace vsgl {
 
 // Kernel counts n(t) against 1 on one footprint (DESIGN.md §11a); `overlap` on the box floor/excess.
@@ -81,11 +83,6 @@ struct KSweepRow {
   PowerSummary power;
 };
 
-struct QualityClaimRow {
-  std::string claim, measure, verdict;
-  std::optional<double> fis_tok15, fis_modified;
-};
-
 struct QualityModel {
   std::string schema = "vsgl-quality";
   nlohmann::json schema_version;
@@ -121,10 +118,10 @@ struct QualityModel {
   };
   std::optional<Animated> flicker_animated;
   std::vector<std::pair<std::string, std::vector<KSweepRow>>> k_sweep;  // in the file's order
-  std::vector<QualityClaimRow> claims;  // empty before add_claim_verdicts
-  // The claims array as add_claim_verdicts wrote it (rows carry claim-specific fields), raw;
-  // null before add_claim_verdicts, and then not written.
-  nlohmann::json claims_document;
+  // ClaimLayout::kQuality: the numbers each claim was judged on (fis_tok15, fis_modified, and a
+  // claim's own, such as the Fig. 1 margin) are its `measured`. None before add_claim_verdicts,
+  // and then not written.
+  std::optional<std::vector<Claim>> claims;
   std::vector<std::pair<std::string, double>> timings_s;
 };
 

@@ -4,8 +4,10 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <optional>
 #include <sstream>
 #include <string_view>
+#include <vector>
 
 #include "harness/core/error.hpp"
 #include "harness/core/generator_ids.hpp"
@@ -14,6 +16,7 @@ namespace vsgl {
 namespace {
 
 using nlohmann::json;
+using ojson = nlohmann::ordered_json;
 
 // The two FIS generators every quality claim compares (core/generator_ids.hpp).
 const std::string kTok15(kFisTok15), kModified(kFisModified);
@@ -30,12 +33,34 @@ std::string arrow(double a, double b) { return num(a) + " -> " + num(b); }
 // "does not hold" when it is higher by more than that, else "no clear difference".
 constexpr double kTie = 0.01;
 
-json claim(const std::string& text, const std::string& source, const std::string& measure, double tok15,
-           double modified) {
+// A claim of the quality document (ClaimLayout::kQuality): a verdict, or else the note that says
+// why there is none.
+Claim quality_claim(const std::string& text, const std::string& source, const std::string& measure, ojson measured,
+                    std::optional<bool> holds, const std::string& note) {
+  Claim c;
+  c.text = text;
+  c.source = source;
+  c.criterion = measure;
+  c.measured = std::move(measured);
+  c.holds = holds;
+  if (!holds) c.note = note;
+  return c;
+}
+
+// Holds when `difference` is below -margin, does not hold above +margin; else `tie`.
+Claim margin_claim(const std::string& text, const std::string& source, const std::string& measure, ojson measured,
+                   double difference, double margin, const std::string& tie) {
+  const std::optional<bool> holds = difference < -margin  ? std::optional<bool>(true)
+                                    : difference > margin ? std::optional<bool>(false)
+                                                          : std::nullopt;
+  return quality_claim(text, source, measure, std::move(measured), holds, tie);
+}
+
+Claim claim(const std::string& text, const std::string& source, const std::string& measure, double tok15,
+            double modified) {
   const double rel = tok15 != 0.0 ? (modified - tok15) / std::abs(tok15) : modified - tok15;
-  const char* verdict = rel < -kTie ? "holds" : rel > kTie ? "does not hold" : "no clear difference (within 1%)";
-  return json{{"claim", text}, {"source", source},    {"measure", measure},
-              {kTok15, tok15}, {kModified, modified}, {"verdict", verdict}};
+  return margin_claim(text, source, measure, ojson{{kTok15, tok15}, {kModified, modified}}, rel, kTie,
+                      "no clear difference (within 1%)");
 }
 
 // Fig. 1's verdict (DESIGN.md §11a): judged on each generator's excess of the count-weighted coverage
@@ -47,24 +72,22 @@ json claim(const std::string& text, const std::string& source, const std::string
 constexpr double kExcessMargin = 0.02;
 constexpr const char* kVerdictFootprint = "eq3";
 
-json excess_claim(const std::string& text, const std::string& view, const CoverageSummary& tok15, const CoverageSummary& modified) {
+Claim excess_claim(const std::string& text, const std::string& view, const CoverageSummary& tok15,
+                   const CoverageSummary& modified) {
   static_assert(std::string_view(kVerdictFootprint) == "eq3", "the verdict reads the Eq. 3 footprint");
   const double t = tok15.excess_eq3.count_error, m = modified.excess_eq3.count_error;
-  const double d = t - m;
-  const std::string verdict = d > kExcessMargin    ? "holds"
-                              : d < -kExcessMargin ? "does not hold"
-                                                   : "no clear difference (within " + num(kExcessMargin) + ")";
-  return json{{"claim", text},
-              {"source", "paper_tables.json claims[3]; DESIGN.md §11a"},
-              {"measure", view + ": excess of the count-weighted coverage error sum q|n-1|/sum q over the lattice "
-                                 "floor, Eq. 3 (trilinear) footprint"},
-              {kTok15, t},
-              {kModified, m},
-              {"margin", kExcessMargin},
-              {"footprint", kVerdictFootprint},
-              {"floor", {tok15.floor_eq3.count_error, modified.floor_eq3.count_error}},
-              {"box_footprint_excess", {tok15.excess_box.count_error, modified.excess_box.count_error}},
-              {"verdict", verdict}};
+  const ojson measured{
+      {kTok15, t},
+      {kModified, m},
+      {"margin", kExcessMargin},
+      {"footprint", kVerdictFootprint},
+      {"floor", ojson::array({tok15.floor_eq3.count_error, modified.floor_eq3.count_error})},
+      {"box_footprint_excess", ojson::array({tok15.excess_box.count_error, modified.excess_box.count_error})}};
+  return margin_claim(text, "paper_tables.json claims[3]; DESIGN.md §11a",
+                      view +
+                          ": excess of the count-weighted coverage error sum q|n-1|/sum q over the lattice "
+                          "floor, Eq. 3 (trilinear) footprint",
+                      measured, m - t, kExcessMargin, "no clear difference (within " + num(kExcessMargin) + ")");
 }
 
 const std::string kFig1Claim =
@@ -74,7 +97,7 @@ const std::string kFlickerClaim =
     "Using our kernel size, flickering artifacts are reduced significantly for a high-frequency PDF.";
 
 // Fig. 1 / Fig. 5 on one view: the coverage excess, the spread of the kernel mass, the brightest VSGL.
-void add_view_claims(json& claims, const ViewQuality& v, const std::string& view) {
+void add_view_claims(std::vector<Claim>& claims, const ViewQuality& v, const std::string& view) {
   const auto tok = v.generators.find(kTok15), mod = v.generators.find(kModified);
   if (tok == v.generators.end() || mod == v.generators.end()) return;
   if (!tok->second.coverage || !mod->second.coverage) throw InputError("quality: " + view + ": the FIS generators have no coverage");
@@ -87,10 +110,9 @@ void add_view_claims(json& claims, const ViewQuality& v, const std::string& view
                          tok->second.power.max_over_mean, mod->second.power.max_over_mean));
 }
 
-void add_flicker_claims(json& claims, const QualityModel& m) {
+void add_flicker_claims(std::vector<Claim>& claims, const QualityModel& m) {
   if (m.flicker_static.contains(kTok15) && m.flicker_static.contains(kModified))
-    claims.push_back(claim(kFlickerClaim, "paper §1, §4 (text)",
-                           "static scene, per-frame lattice offset: luminance-weighted temporal CV",
+    claims.push_back(claim(kFlickerClaim, "paper §1, §4 (text)", "static scene, per-frame lattice offset: luminance-weighted temporal CV",
                            m.flicker_static.at(kTok15).weighted_cv, m.flicker_static.at(kModified).weighted_cv));
   if (!m.flicker_animated) return;
   const auto& f = m.flicker_animated->generators;
@@ -101,7 +123,7 @@ void add_flicker_claims(json& claims, const QualityModel& m) {
 }
 
 // Fig. 6: from the smallest to the largest K of the sweep, flicker should fall and the error grow.
-void add_k_sweep_claims(json& claims, const QualityModel& m) {
+void add_k_sweep_claims(std::vector<Claim>& claims, const QualityModel& m) {
   for (const std::string& gen : {kModified, kTok15}) {
     const auto it = std::find_if(m.k_sweep.begin(), m.k_sweep.end(), [&](const auto& s) { return s.first == gen; });
     if (it == m.k_sweep.end() || it->second.size() < 2) continue;
@@ -109,19 +131,19 @@ void add_k_sweep_claims(json& claims, const QualityModel& m) {
     const KSweepRow& hi = it->second.back();
     const double cv_lo = lo.weighted_cv, cv_hi = hi.weighted_cv;
     const double e_lo = lo.error.relative_rmse, e_hi = hi.error.relative_rmse;
-    json c = json{{"claim", "K > 1 trades illumination detail for temporal coherence (Fig. 6)."},
-                  {"source", "paper_tables.json claims[4]"},
-                  {"measure", gen + ": K = " + num(lo.K) + " -> " + num(hi.K) + ": flicker (weighted CV) " +
-                                  arrow(cv_lo, cv_hi) + ", relative RMSE vs reference " + arrow(e_lo, e_hi)},
-                  {"generator", gen},
-                  {"flicker", {cv_lo, cv_hi}},
-                  {"relative_rmse", {e_lo, e_hi}}};
     const bool coherence = cv_hi < cv_lo, blur = e_hi > e_lo;
-    c["verdict"] = coherence && blur ? "holds"
-                   : coherence       ? "partly: coherence improves, error does not grow"
-                   : blur            ? "partly: error grows, coherence does not improve"
-                                     : "does not hold";
-    claims.push_back(c);
+    const std::optional<bool> holds =
+        coherence == blur ? std::optional<bool>(coherence && blur) : std::optional<bool>(std::nullopt);
+    claims.push_back(quality_claim(
+        "K > 1 trades illumination detail for temporal coherence (Fig. 6).", "paper_tables.json claims[4]",
+        std::string(gen) + ": K = " + num(lo.K) + " -> " + num(hi.K) + ": flicker (weighted CV) " +
+            arrow(cv_lo, cv_hi) + ", relative RMSE vs reference " + arrow(e_lo, e_hi),
+        ojson{{"generator", gen},
+              {"flicker", ojson::array({cv_lo, cv_hi})},
+              {"relative_rmse", ojson::array({e_lo, e_hi})}},
+        holds,
+        coherence ? "partly: coherence improves, error does not grow"
+                  : "partly: error grows, coherence does not improve"));
   }
 }
 
@@ -129,7 +151,7 @@ void add_k_sweep_claims(json& claims, const QualityModel& m) {
 
 void add_claim_verdicts(json& r) {
   const QualityModel m = quality_model_from_json(r, "the quality document");
-  json claims = json::array();
+  std::vector<Claim> claims;
   for (const char* view : {"light_view", "camera_view"}) add_view_claims(claims, m.views.at(view), view);
   add_flicker_claims(claims, m);
   add_k_sweep_claims(claims, m);
@@ -137,9 +159,11 @@ void add_claim_verdicts(json& r) {
                         "Modified FIS is about 7-9 times faster than the k-means generators.",
                         "FIS cost is almost independent of the PDF; k-means cost is not.",
                         "Modified FIS needs about five times fewer lines of code than k-means (Table 3)."})
-    claims.push_back(json{{"claim", t}, {"source", "paper_tables.json claims"}, {"verdict", "not measured here"},
-                          {"measure", "a timing/code-size claim: see `vsgl-bench tables`"}});
-  r["claims"] = claims;
+    claims.push_back(quality_claim(t, "paper_tables.json claims", "a timing/code-size claim: see `vsgl-bench tables`",
+                                   ojson::object(), std::nullopt, "not measured here"));
+  json document = json::array();
+  for (const Claim& c : claims) document.push_back(json(to_json(c, ClaimLayout::kQuality)));
+  r["claims"] = document;
 }
 
 namespace {
@@ -154,14 +178,15 @@ void write_heading(std::ostringstream& md, const QualityModel& m) {
 }
 
 void write_claims(std::ostringstream& md, const QualityModel& m) {
-  md << "## Claims\n\n| claim | measure | " << kTok15 << " | " << kModified << " | verdict |\n|---|---|---|---|---|\n";
-  for (const QualityClaimRow& c : m.claims) {
-    md << "| " << c.claim << " | " << c.measure << " | ";
-    if (c.fis_tok15)
-      md << num(*c.fis_tok15) << " | " << num(c.fis_modified.value_or(0.0));
+  md << "## Claims\n\n| claim | measure | fis_tok15 | fis_modified | verdict |\n|---|---|---|---|---|\n";
+  for (const Claim& c : m.claims.value_or(std::vector<Claim>{})) {
+    md << "| " << c.text << " | " << c.criterion << " | ";
+    const auto tok15 = c.measured.find(kTok15);
+    if (tok15 != c.measured.end() && tok15->is_number())
+      md << num(tok15->get<double>()) << " | " << num(c.measured.value(kModified, 0.0));
     else
       md << " | ";
-    md << " | **" << c.verdict << "** |\n";
+    md << " | **" << stated_verdict(c) << "** |\n";
   }
   md << "\nFig. 1 (the coverage rows) is judged on each generator's *excess* over its lattice floor: the "
         "count-weighted coverage error e = sum q |n - 1| / sum q (n = kernels covering texel t) of the generator on "

@@ -42,9 +42,17 @@ std::string paper_kmeans_text(const std::string& separator) {
   return out;
 }
 
-TableClaim claim(const std::string& text, const std::string& id, const std::string& criterion, ojson measured,
-                 std::optional<bool> holds, const std::string& note, bool informative) {
-  return TableClaim{id, text, criterion, std::move(measured), holds, note, informative};
+Claim claim(const std::string& text, const std::string& id, const std::string& criterion, ojson measured,
+            std::optional<bool> holds, const std::string& note, bool informative) {
+  Claim c;
+  c.id = id;
+  c.text = text;
+  c.criterion = criterion;
+  c.measured = std::move(measured);
+  c.holds = holds;
+  c.note = note;
+  c.informative = informative;
+  return c;
 }
 
 }  // namespace
@@ -59,11 +67,11 @@ OverheadVerdict judge_overhead(double low_us, double high_us, double bound_us, b
 
 nlohmann::ordered_json claims_json(const MeasuredTable& t, const MeasuredTable* other, const ReportContext& ctx) {
   ojson out = ojson::array();
-  for (const TableClaim& c : table_claims(t, other, ctx)) out.push_back(to_json(c));
+  for (const Claim& c : table_claims(t, other, ctx)) out.push_back(to_json(c, ClaimLayout::kTable));
   return out;
 }
 
-std::vector<TableClaim> table_claims(const MeasuredTable& t, const MeasuredTable* other, const ReportContext& ctx) {
+std::vector<Claim> table_claims(const MeasuredTable& t, const MeasuredTable* other, const ReportContext& ctx) {
   const auto& texts = ctx.paper.at("claims");
   if (!texts.is_array() || texts.size() != 6)
     throw InputError(ctx.paper_path + ": expected the paper's 6 claims, found " + std::to_string(texts.size()));
@@ -71,7 +79,7 @@ std::vector<TableClaim> table_claims(const MeasuredTable& t, const MeasuredTable
   // A CPU device (lavapipe) says nothing about GPU performance: its verdicts are informative.
   const bool informative = ctx.device.type == VK_PHYSICAL_DEVICE_TYPE_CPU;
   const bool tok = has_generator(t, kTok15), mod = has_generator(t, kModified);
-  std::vector<TableClaim> out;
+  std::vector<Claim> out;
 
   {  // 1: the modified kernel costs only microseconds more. Judged on the 95 % interval of the
      // per-round differences of the generator totals (DESIGN.md §9), never on one noisy number: holds

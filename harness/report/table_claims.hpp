@@ -7,14 +7,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "harness/formats/claim.hpp"
 #include "harness/report/measured_table.hpp"
 
 namespace vsgl {
-
-// A claim whose interval straddles its bound is neither held nor refuted: holds = null with
-// this note (or one that starts with the prefix and says why, e.g. too few rounds).
-inline constexpr const char* kInconclusivePrefix = "inconclusive";
-inline constexpr const char* kInconclusiveNote = "inconclusive at this noise";
 
 // Claim 3 (the paper's "FIS cost is almost independent of the PDF"): how far a FIS total may move
 // when only the PDF changes, between the two tables' scenes here and along the sweep's
@@ -30,8 +26,9 @@ struct OverheadVerdict {
 // Throws std::invalid_argument for low > high or a bound that is not positive.
 OverheadVerdict judge_overhead(double low_us, double high_us, double bound_us, bool reaches_nominal);
 
-// `other` is the other paper table of the same run (claim 3 compares them), or nullptr.
-std::vector<TableClaim> table_claims(const MeasuredTable& t, const MeasuredTable* other, const ReportContext& ctx);
+// `other` is the other paper table of the same run (claim 3 compares them), or nullptr. An open
+// verdict's note is kInconclusiveNote or starts with kInconclusivePrefix (formats/claim.hpp).
+std::vector<Claim> table_claims(const MeasuredTable& t, const MeasuredTable* other, const ReportContext& ctx);
 // The same as the table JSON's "claims" array.
 nlohmann::ordered_json claims_json(const MeasuredTable& t, const MeasuredTable* other, const ReportContext& ctx);
 

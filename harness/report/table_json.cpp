@@ -20,23 +20,6 @@ using ojson = nlohmann::ordered_json;
 // The two FIS columns the overhead compares (core/generator_ids.hpp).
 const std::string kTok15(kFisTok15), kModified(kFisModified);
 
-TimingStats timing_stats(const std::vector<double>& samples, std::optional<double> paper_ms) {
-  const SampleStats s = summarize(samples);
-  TimingStats out;
-  out.samples_ms = samples;
-  out.median_ms = s.median;
-  out.q1_ms = s.q1;
-  out.q3_ms = s.q3;
-  out.paper_ms = paper_ms;
-  out.min_ms = s.min;
-  out.max_ms = s.max;
-  out.mean_ms = s.mean;
-  out.stdev_ms = s.stdev;
-  out.relative_iqr = relative_iqr(s);
-  out.count = s.count;
-  return out;
-}
-
 GeneratorTiming generator_timing(const MeasuredTable& t, const std::string& g, const ReportContext& ctx) {
   GeneratorTiming out;
   out.name = g;
@@ -46,12 +29,14 @@ GeneratorTiming generator_timing(const MeasuredTable& t, const std::string& g, c
     const CaseTiming& c = need_case(t, g, view);
     ViewTiming v;
     for (std::size_t p = 0; p < c.phases.size(); ++p)
-      v.phases.push_back({c.phases[p], timing_stats(c.phase_ms[p], paper_number(ctx.paper, {"tables", std::to_string(t.number), g, view, c.phases[p]}))});
-    v.total = timing_stats(c.total_ms, paper_view_total(ctx.paper, t.number, g, view));
+      v.phases.push_back(
+          {c.phases[p], timing_statistics(c.phase_ms[p], paper_number(ctx.paper, {"tables", std::to_string(t.number), g,
+                                                                                  view, c.phases[p]}))});
+    v.total = timing_statistics(c.total_ms, paper_view_total(ctx.paper, t.number, g, view));
     v.dispatch_calls = c.dispatch_count;
     out.views[view] = std::move(v);
   }
-  out.total = timing_stats(generator_totals(t, g), paper_total(ctx.paper, t.number, g));
+  out.total = timing_statistics(generator_totals(t, g), paper_total(ctx.paper, t.number, g));
   return out;
 }
 

@@ -245,17 +245,12 @@ void write_table3(std::ostringstream& os, const TableModel& t, const std::vector
   }
 }
 
-std::string claim_verdict(const TableClaim& c) {
-  if (c.holds) return *c.holds ? "holds" : "does not hold";
-  return c.note.rfind(kInconclusivePrefix, 0) == 0 ? "inconclusive" : "not measured";
-}
-
-void write_claims(std::ostringstream& os, const std::vector<TableClaim>& claims) {
+void write_claims(std::ostringstream& os, const std::vector<Claim>& claims) {
   os << "\n### The paper's claims on this run\n\n";
-  for (const TableClaim& c : claims) {
+  for (const Claim& c : claims) {
     const bool measured = !c.measured.empty();
-    os << "- **" << claim_verdict(c) << "**" << (c.informative_only && measured ? " (informative: CPU device)" : "") << " — "
-       << c.claim << "\n  - criterion: " << c.criterion;
+    os << "- **" << claim_verdict(c) << "**" << (c.informative && measured ? " (informative: CPU device)" : "") << " — "
+       << c.text << "\n  - criterion: " << c.criterion;
     if (measured) os << "\n  - measured: `" << c.measured.dump() << "`";
     if (!c.note.empty()) os << "\n  - " << c.note;
     os << "\n";
