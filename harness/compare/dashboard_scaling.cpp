@@ -28,7 +28,7 @@ std::string series_name(const SweepFitModel& f) {
   return f.generator + " " + f.view + (slice.empty() ? "" : ", " + slice);
 }
 
-const SweepTimingStats& stats_at(const SweepModel& m, const SweepFitModel& f, std::size_t k) {
+const TimingStatistics& stats_at(const SweepModel& m, const SweepFitModel& f, std::size_t k) {
   // read_sweep_model checked that every point of a fit timed its case and phase.
   return *m.points[f.points[k]].find(f.generator, f.view)->find(f.phase);
 }
@@ -49,7 +49,7 @@ std::string totals_plot(const SweepModel& m, std::size_t axis) {
     s.name = series_name(*f);
     for (std::size_t k = 0; k < f->points.size(); ++k) {
       if (!(f->growth_x[k] > 0)) continue;
-      const SweepTimingStats& st = stats_at(m, *f, k);
+      const TimingStatistics& st = stats_at(m, *f, k);
       const std::string value = a.values[m.points[f->points[k]].value_index[axis]].text;
       s.points.push_back(LogLogPoint{f->growth_x[k], st.median_ms, st.q1_ms, st.q3_ms,
                                      s.name + " at " + a.name + "=" + value + ": median " + ms(st.median_ms) +
@@ -90,7 +90,7 @@ std::string totals_table(const SweepModel& m, std::size_t axis) {
       std::string cell = "–";
       for (std::size_t k = 0; k < f->points.size(); ++k)
         if (m.points[f->points[k]].value_index[axis] == v) {
-          const SweepTimingStats& st = stats_at(m, *f, k);
+          const TimingStatistics& st = stats_at(m, *f, k);
           cell = ms(st.median_ms) + " (" + ms(st.q1_ms) + "–" + ms(st.q3_ms) + ")";
         }
       os << "<td class=\"num\">" << xml_escape(cell) << "</td>";

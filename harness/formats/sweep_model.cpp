@@ -22,26 +22,8 @@ std::size_t index(const Reader& r, const ojson& v, const std::string& pointer) {
   return static_cast<std::size_t>(r.uint64(v, pointer));
 }
 
-SweepTimingStats read_stats(const Reader& r, const ojson& series, const std::string& p) {
-  if (!series.is_object()) r.wrong_type(series, p, "an object");
-  const ojson& stats = r.object(series, p, "stats");
-  const std::string sp = p + "/stats";
-  SweepTimingStats out;
-  out.count = index(r, r.member(stats, sp, "count"), sp + "/count");
-  out.median_ms = r.time(stats, sp, "median");
-  out.q1_ms = r.time(stats, sp, "q1");
-  out.q3_ms = r.time(stats, sp, "q3");
-  out.min_ms = r.time(stats, sp, "min");
-  out.max_ms = r.time(stats, sp, "max");
-  out.mean_ms = r.time(stats, sp, "mean");
-  out.stdev_ms = r.non_negative(r.member(stats, sp, "stdev"), sp + "/stdev");
-  if (!(out.q1_ms <= out.median_ms && out.median_ms <= out.q3_ms))
-    r.fail(sp, "has quartiles that do not enclose the median (q1 " + number_text(out.q1_ms, 6) + ", median " +
-                   number_text(out.median_ms, 6) + ", q3 " + number_text(out.q3_ms, 6) + ")");
-  const ojson& samples = r.nonempty_array(series, p, "samples_ms");
-  for (std::size_t i = 0; i < samples.size(); ++i)
-    out.samples_ms.push_back(r.time(samples[i], p + "/samples_ms/" + std::to_string(i)));
-  return out;
+TimingStatistics read_stats(const Reader& r, const ojson& series, const std::string& p) {
+  return timing_statistics_from_json(r, series, p, StatisticsLayout::kSweep);
 }
 
 SweepCase read_case(const Reader& r, const ojson& c, const std::string& p) {
@@ -282,20 +264,24 @@ ojson values_json(const std::vector<SweepAxisModel>& axes, const std::vector<std
   return values;
 }
 
-ojson stats_json(const SweepTimingStats& s) {
-  return ojson{{"count", s.count}, {"median", s.median_ms}, {"q1", s.q1_ms},     {"q3", s.q3_ms},
-               {"min", s.min_ms},  {"max", s.max_ms},       {"mean", s.mean_ms}, {"stdev", s.stdev_ms}};
+// A named series: its name first, then the sweep layout of its statistics.
+ojson named_stats_json(const std::string& name, const TimingStatistics& s) {
+  const ojson series = to_json(s, StatisticsLayout::kSweep);
+  ojson out = ojson::object();
+  out["name"] = name;
+  out["stats"] = series.at("stats");
+  out["samples_ms"] = series.at("samples_ms");
+  return out;
 }
 
 ojson case_json(const SweepCase& c) {
   ojson phases = ojson::array();
-  for (const SweepPhaseTiming& p : c.phases)
-    phases.push_back(ojson{{"name", p.name}, {"stats", stats_json(p.stats)}, {"samples_ms", p.stats.samples_ms}});
+  for (const SweepPhaseTiming& p : c.phases) phases.push_back(named_stats_json(p.name, p.stats));
   return ojson{{"generator", c.generator},
                {"view", c.view},
                {"dispatches", c.dispatches},
                {"phases", phases},
-               {"total", ojson{{"stats", stats_json(c.total)}, {"samples_ms", c.total.samples_ms}}}};
+               {"total", to_json(c.total, StatisticsLayout::kSweep)}};
 }
 
 ojson axis_json(const SweepAxisModel& a) {
@@ -399,7 +385,7 @@ ojson claim_json(const SweepClaim& c) {
 
 }  // namespace
 
-const SweepTimingStats* SweepCase::find(const std::string& phase) const {
+const TimingStatistics* SweepCase::find(const std::string& phase) const {
   if (phase == "total") return &total;
   for (const SweepPhaseTiming& p : phases)
     if (p.name == phase) return &p.stats;

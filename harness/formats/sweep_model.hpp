@@ -18,6 +18,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "harness/formats/timing_statistics.hpp"
 #include "harness/formats/scene_identity.hpp"
 
 namespace vsgl {
@@ -26,19 +27,9 @@ namespace vsgl {
 inline constexpr int kSweepSchemaVersion = 1;
 
 // One series' statistics at a point (ms), as written beside its samples.
-struct SweepTimingStats {
-  std::size_t count = 0;
-  double median_ms = 0;
-  double q1_ms = 0;  // q1 <= median <= q3
-  double q3_ms = 0;
-  double min_ms = 0, max_ms = 0;
-  double mean_ms = 0, stdev_ms = 0;
-  std::vector<double> samples_ms;  // per round, positive
-};
-
 struct SweepPhaseTiming {
   std::string name;
-  SweepTimingStats stats;
+  TimingStatistics stats;
 };
 
 // One generator on one view at a point.
@@ -47,10 +38,10 @@ struct SweepCase {
   std::string view;  // "camera_view", "light_view"
   uint32_t dispatches = 0;
   std::vector<SweepPhaseTiming> phases;
-  SweepTimingStats total;
+  TimingStatistics total;
 
   // The phase's stats, or the total's for "total"; nullptr when the case has no such phase.
-  const SweepTimingStats* find(const std::string& phase) const;
+  const TimingStatistics* find(const std::string& phase) const;
 };
 
 struct SweepAxisValue {

@@ -2,15 +2,10 @@
 
 #include <string>
 
-#include "harness/core/statistics.hpp"
+#include "harness/formats/timing_statistics.hpp"
 
 namespace vsgl {
 namespace {
-
-SweepTimingStats timing_stats(const std::vector<double>& samples) {
-  const SampleStats s = summarize(samples);
-  return SweepTimingStats{s.count, s.median, s.q1, s.q3, s.min, s.max, s.mean, s.stdev, samples};
-}
 
 SweepAxisModel axis_model(const SweepAxis& a) {
   SweepAxisModel out{a.name(), a.spec, growth_symbol(a.parameter), growth_x_title(a.parameter), {}};
@@ -26,9 +21,9 @@ SweepAxisModel axis_model(const SweepAxis& a) {
 }
 
 SweepCase case_model(const CaseTiming& c) {
-  SweepCase out{c.generator, c.view, c.dispatch_count, {}, timing_stats(c.total_ms)};
+  SweepCase out{c.generator, c.view, c.dispatch_count, {}, timing_statistics(c.total_ms)};
   for (std::size_t i = 0; i < c.phases.size(); ++i)
-    out.phases.push_back(SweepPhaseTiming{c.phases[i], timing_stats(c.phase_ms[i])});
+    out.phases.push_back(SweepPhaseTiming{c.phases[i], timing_statistics(c.phase_ms[i])});
   return out;
 }
 

@@ -12,7 +12,7 @@ namespace {
 std::string ms_text(double v) { return number_text(v, 4); }
 
 // "1.234 (IQR 0.0123)": the median and its spread, as the tables print them.
-std::string cell_text(const SweepTimingStats& s) {
+std::string cell_text(const TimingStatistics& s) {
   return ms_text(s.median_ms) + " (IQR " + ms_text(s.q3_ms - s.q1_ms) + ")";
 }
 
@@ -92,7 +92,7 @@ std::string axis_tables(const SweepModel& s, std::size_t a) {
     md += "| " + f.generator + " | " + f.view + " | " + f.phase + " |";
     for (std::size_t i : columns) {
       const SweepCase* c = s.points[i].find(f.generator, f.view);
-      const SweepTimingStats* stats = c != nullptr ? c->find(f.phase) : nullptr;
+      const TimingStatistics* stats = c != nullptr ? c->find(f.phase) : nullptr;
       md += " " + (stats != nullptr ? cell_text(*stats) : std::string("beyond")) + " |";
     }
     md += " " + (f.growth ? f.growth->text : std::string("–")) + " | " + verdict_text(f) + " |\n";

@@ -64,7 +64,7 @@ LogLogSeries fit_series(const SweepModel& s, const SweepFitModel& f, const nlohm
   for (std::size_t k = 0; k < f.points.size(); ++k) {
     if (!(f.growth_x[k] > 0)) continue;
     // read_sweep_model and sweep_document both give every point of a fit its case and phase.
-    const SweepTimingStats& st = *s.points[f.points[k]].find(f.generator, f.view)->find(f.phase);
+    const TimingStatistics& st = *s.points[f.points[k]].find(f.generator, f.view)->find(f.phase);
     ser.points.push_back(LogLogPoint{f.growth_x[k], st.median_ms, st.q1_ms, st.q3_ms, {}});
   }
   if (paper != nullptr)
