@@ -1,4 +1,4 @@
-// The quality model (harness/quality/quality_model.hpp) against the committed quality reports:
+// The quality model (harness/formats/quality_model.hpp) against the committed quality reports:
 // each results/**/quality.json reads into the model and renders as the quality.md committed beside
 // it (the picture list, which is not in the JSON, left out of both); a missing field is named by
 // its JSON pointer.

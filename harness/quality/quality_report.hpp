@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "harness/quality/quality_model.hpp"
+#include "harness/formats/quality_model.hpp"
 #include "harness/quality/quality_run.hpp"
 
 namespace vsgl {

@@ -18,7 +18,7 @@
 #include "harness/reference/fis_reference.hpp"
 #include "harness/generators/generator_registry.hpp"
 #include "harness/quality/quality_metrics.hpp"
-#include "harness/quality/quality_model.hpp"
+#include "harness/formats/quality_model.hpp"
 #include "harness/quality/quality_pictures.hpp"
 #include "harness/quality/quality_reference.hpp"
 #include "harness/timing/run_provenance.hpp"

@@ -1,4 +1,4 @@
-#include "harness/quality/quality_model.hpp"
+#include "harness/formats/quality_model.hpp"
 
 #include "harness/core/json_reader.hpp"
 
