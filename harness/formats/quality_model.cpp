@@ -82,22 +82,26 @@ json counts_json(const CoverageCountsSummary& c) {
 
 json coverage_json(const CoverageSummary& s) {
   const MassSummary& m = s.mass_over_target;
-  return json{{"gap", s.gap},
-              {"overlap", s.overlap},
-              {"gap_plus_overlap", s.gap_plus_overlap},
-              {"texels_with_pdf", s.texels_with_pdf},
-              {"gap_texels", s.gap_texels},
-              {"overlap_texels", s.overlap_texels},
-              {"mass_over_target", json{{"mean", m.mean}, {"stdev", m.stdev}, {"min", m.min}, {"max", m.max}, {"p99", m.p99}}},
-              {"box", counts_json(s.box)},
-              {"eq3", counts_json(s.eq3)},
-              {"lattice_floor", json{{"box", counts_json(s.floor_box)}, {"eq3", counts_json(s.floor_eq3)}}},
-              {"excess", json{{"box", counts_json(s.excess_box)}, {"eq3", counts_json(s.excess_eq3)}}}};
+  return json{
+      {"gap", s.gap},
+      {"overlap", s.overlap},
+      {"gap_plus_overlap", s.gap_plus_overlap},
+      {"texels_with_pdf", s.texels_with_pdf},
+      {"gap_texels", s.gap_texels},
+      {"overlap_texels", s.overlap_texels},
+      {"mass_over_target", json{{"mean", m.mean}, {"stdev", m.stdev}, {"min", m.min}, {"max", m.max}, {"p99", m.p99}}},
+      {"box", counts_json(s.box)},
+      {"eq3", counts_json(s.eq3)},
+      {"lattice_floor", json{{"box", counts_json(s.floor_box)}, {"eq3", counts_json(s.floor_eq3)}}},
+      {"excess", json{{"box", counts_json(s.excess_box)}, {"eq3", counts_json(s.excess_eq3)}}}};
 }
 
 json power_json(const PowerSummary& p) {
-  return json{{"sum_vsgl_power", p.sum_vsgl_power}, {"total_flux", p.total_flux}, {"power_ratio", p.power_ratio},
-              {"max_over_mean", p.max_over_mean}, {"p99_over_mean", p.p99_over_mean}};
+  return json{{"sum_vsgl_power", p.sum_vsgl_power},
+              {"total_flux", p.total_flux},
+              {"power_ratio", p.power_ratio},
+              {"max_over_mean", p.max_over_mean},
+              {"p99_over_mean", p.p99_over_mean}};
 }
 
 json error_json(const ImageErrorSummary& e) {
@@ -139,33 +143,39 @@ void to_json(json& j, const QualityModel& m) {
   config["camera_vsgls"] = m.camera_vsgls;
   config["K"] = m.K;
   config["frames"] = m.frames;
-  j = json{{"schema", m.schema},
-           {"schema_version", m.schema_version},
-           {"scene", m.scene},
-           {"capture", json{{"path", m.capture_path}, {"gbuffer", m.gbuffer_size}, {"rsm", m.rsm_size}, {"hashes", m.capture_hashes}}},
-           {"device", json{{"name", m.device_name}, {"driver", m.device_driver}}},
-           {"build", build},
-           {"config", config},
-           {"views", json::object()},
-           {"reference", json{{"rsm_stride", m.reference_rsm_stride},
-                              {"reference_rsm_side", m.reference_rsm_side},
-                              {"vpls", m.reference_vpls},
-                              {"power_ratio", m.reference_power_ratio},
-                              {"image", m.reference_image},
-                              {"method", m.reference_method}}},
-           {"reference_error", json::object()}};
+  j = json{
+      {"schema", m.schema},
+      {"schema_version", m.schema_version},
+      {"scene", m.scene},
+      {"capture",
+       json{{"path", m.capture_path}, {"gbuffer", m.gbuffer_size}, {"rsm", m.rsm_size}, {"hashes", m.capture_hashes}}},
+      {"device", json{{"name", m.device_name}, {"driver", m.device_driver}}},
+      {"build", build},
+      {"config", config},
+      {"views", json::object()},
+      {"reference", json{{"rsm_stride", m.reference_rsm_stride},
+                         {"reference_rsm_side", m.reference_rsm_side},
+                         {"vpls", m.reference_vpls},
+                         {"power_ratio", m.reference_power_ratio},
+                         {"image", m.reference_image},
+                         {"method", m.reference_method}}},
+      {"reference_error", json::object()}};
   for (const auto& [name, v] : m.views) j["views"][name] = view_json(v);
   for (const auto& [name, e] : m.reference_error) j["reference_error"][name] = error_json(e);
   json fs = json::object();
   for (const auto& [name, f] : m.flicker_static)
-    fs[name] = json{{"frames", f.frames}, {"weighted_cv", f.weighted_cv}, {"power_stdev", f.power_stdev},
+    fs[name] = json{{"frames", f.frames},
+                    {"weighted_cv", f.weighted_cv},
+                    {"power_stdev", f.power_stdev},
                     {"power_relative_stdev", f.power_relative_stdev}};
-  j["flicker_static"] = json{{"image", m.flicker_image}, {"gbuffer_stride", m.flicker_gbuffer_stride}, {"generators", fs}};
+  j["flicker_static"] =
+      json{{"image", m.flicker_image}, {"gbuffer_stride", m.flicker_gbuffer_stride}, {"generators", fs}};
   if (m.flicker_animated) {
     const QualityModel::Animated& a = *m.flicker_animated;
     json gens = json::object();
     for (const auto& [name, f] : a.generators)
-      gens[name] = json{{"weighted_cv", f.weighted_cv}, {"error_cv", f.error_cv}, {"power_relative_stdev", f.power_relative_stdev}};
+      gens[name] = json{
+          {"weighted_cv", f.weighted_cv}, {"error_cv", f.error_cv}, {"power_relative_stdev", f.power_relative_stdev}};
     j["flicker_animated"] = json{{"sequence", a.sequence},
                                  {"scene", a.scene},
                                  {"frames", a.frames},
@@ -270,7 +280,8 @@ QualityModel quality_model_from_json(const json& doc, const std::string& what) {
     const json& hashes = r.member(fa, "/flicker_animated", "frame_content_hashes");
     if (!hashes.is_array()) r.wrong_type(hashes, "/flicker_animated/frame_content_hashes", "an array");
     for (std::size_t i = 0; i < hashes.size(); ++i) {
-      if (!hashes[i].is_string()) r.wrong_type(hashes[i], r.element("/flicker_animated/frame_content_hashes", i), "a string");
+      if (!hashes[i].is_string())
+        r.wrong_type(hashes[i], r.element("/flicker_animated/frame_content_hashes", i), "a string");
       a.frame_content_hashes.push_back(hashes[i].get<std::string>());
     }
     a.reference_weighted_cv = r.number(fa, "/flicker_animated", "reference_weighted_cv");
