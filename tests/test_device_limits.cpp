@@ -7,6 +7,7 @@
 #include "gpu_test.hpp"
 #include "tiny_capture.hpp"
 #include "harness/core/error.hpp"
+#include "harness/core/json_reader.hpp"
 #include "harness/generators/device_view.hpp"
 #include "harness/generators/fis/fis_generator.hpp"
 #include "harness/generators/generator_descriptor.hpp"
@@ -40,8 +41,47 @@ DeviceInfo roomy_device() {
   l.workgroup_size[0] = l.workgroup_size[1] = 1024;
   l.workgroup_size[2] = 64;
   l.workgroup_invocations = 1024;
-  l.rgba32f_features = d.rgba32f_features;
+  l.rgba32f_optimal_tiling = {true, true, true, true, true};
   return d;
+}
+
+// The driver's numbers become the one DeviceLimits every document writes (core/device_limits.hpp):
+// the format features are read bit by bit, and the limits object reads back as it was written,
+// but for the offset alignment, which no file holds.
+TEST(DeviceLimits, TheDriversLimitsAreTheDocumentsLimitsAndReadBackAsWritten) {
+  VkPhysicalDeviceProperties props{};
+  props.limits.maxPerStageDescriptorStorageImages = 16;
+  props.limits.maxComputeWorkGroupSize[2] = 64;
+  props.limits.maxComputeWorkGroupCount[1] = 65535;
+  props.limits.minStorageBufferOffsetAlignment = 256;
+  const DeviceLimits l =
+      read_device_limits(props, 1ull << 32, 32, VK_FORMAT_FEATURE_STORAGE_IMAGE_BIT | VK_FORMAT_FEATURE_BLIT_DST_BIT);
+  EXPECT_FALSE(l.rgba32f_optimal_tiling.sampled_image);
+  EXPECT_TRUE(l.rgba32f_optimal_tiling.storage_image);
+  EXPECT_FALSE(l.rgba32f_optimal_tiling.blit_src);
+  EXPECT_TRUE(l.rgba32f_optimal_tiling.blit_dst);
+  EXPECT_EQ(l.storage_buffer_offset_alignment, 256u);
+
+  const nlohmann::json j = to_json(l);
+  EXPECT_EQ(j["maxPerStageDescriptorStorageImages"], 16u);
+  EXPECT_EQ(j["maxComputeWorkGroupSize"], nlohmann::json({0u, 0u, 64u}));
+  EXPECT_EQ(j["rgba32f_optimal_tiling"]["blit_dst"], true);
+  EXPECT_FALSE(j.contains("minStorageBufferOffsetAlignment"));
+  const DeviceLimits back = device_limits_from_json(JsonReader("limits", JsonPathStyle::kPointer), j, "/limits");
+  EXPECT_EQ(to_json(back), j);
+  EXPECT_EQ(back.workgroup_count[1], 65535u);
+  EXPECT_EQ(back.max_memory_allocation_size, 1ull << 32);
+  EXPECT_EQ(back.storage_buffer_offset_alignment, 1u);
+
+  nlohmann::json unknown = j;
+  unknown["maxFramebufferWidth"] = 4096u;
+  try {
+    device_limits_from_json(JsonReader("limits", JsonPathStyle::kPointer), unknown, "/limits");
+    FAIL() << "an unknown limit was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/limits/maxFramebufferWidth: is not a known limit"), std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(DeviceLimits, SinglePassNeedsAtMostEightStorageImagesPerDispatch) {
@@ -49,7 +89,10 @@ TEST(DeviceLimits, SinglePassNeedsAtMostEightStorageImagesPerDispatch) {
   for (const auto& desc : fis_pipelines(PyramidPath::kTexture, MipStrategy::kSinglePass))
     most = std::max(most, pipeline_needs(desc).storage_images);
   EXPECT_EQ(most, 8u);  // the tail: levels 7..14
-  const auto tiles = pipeline_needs({"fis_mip_single_pass.comp", 1, sizeof(gpu::FisMipPush), {{0, 16}, {1, 16}},
+  const auto tiles = pipeline_needs({"fis_mip_single_pass.comp",
+                                     1,
+                                     sizeof(gpu::FisMipPush),
+                                     {{0, 16}, {1, 16}},
                                      {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1}, {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 6}}});
   EXPECT_EQ(tiles.storage_images, 7u);
   EXPECT_EQ(tiles.workgroup_size[0] * tiles.workgroup_size[1], 256u);
@@ -89,7 +132,7 @@ TEST(DeviceLimits, NoStrategyFitsSoTheTexturePathFallsBackToTheBuffer) {
   DeviceInfo d = roomy_device();
   d.limits.per_stage_storage_images = 1;  // per-level needs 2, single-pass 7
   d.rgba32f_features &= ~VkFormatFeatureFlags{VK_FORMAT_FEATURE_BLIT_SRC_BIT};
-  d.limits.rgba32f_features = d.rgba32f_features;
+  d.limits.rgba32f_optimal_tiling.blit_src = false;
   EXPECT_THROW(effective_mip_strategy(d, std::nullopt), DeviceError);
   std::string reason;
   EXPECT_EQ(effective_pyramid_path(d, PyramidPath::kTexture, &reason), PyramidPath::kBuffer);
@@ -198,8 +241,8 @@ TEST_F(DeviceLimitsTest, ForcedSizeLimitsRefuseBuffersImagesAndBindings) {
       "maxImageArrayLayers");
   Buffer in(limited, 512, MemoryUsage::kDeviceLocal, "test.range.in");
   Buffer out(limited, 512, MemoryUsage::kDeviceLocal, "test.range.out");
-  ComputePipeline pipeline(limited, {"test_division.comp", 2, sizeof(gpu::TestCountPush),
-                                     work_group_size_1d(gpu::kTestGroupSize)});
+  ComputePipeline pipeline(
+      limited, {"test_division.comp", 2, sizeof(gpu::TestCountPush), work_group_size_1d(gpu::kTestGroupSize)});
   expect_device_error([&] { BindingSet set(limited, pipeline, {in, out}, "test.range.set"); }, "maxStorageBufferRange");
   BindingSet fits(limited, pipeline, {BufferBinding(in, 0, 256), BufferBinding(out, 0, 256)}, "test.range.fits");
 }

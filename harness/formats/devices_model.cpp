@@ -1,9 +1,6 @@
 #include "harness/formats/devices_model.hpp"
 
-#include <array>
 #include <cstdint>
-#include <iterator>
-#include <limits>
 #include <string_view>
 
 #include <nlohmann/json.hpp>
@@ -17,74 +14,11 @@ namespace {
 
 using json = nlohmann::json;
 
-// The 32-bit limits, by their key in the file; the three others (two 3-vectors and the 64-bit
-// allocation size) and the format features are written out below.
-struct Limit32 {
-  const char* key;
-  uint32_t DeviceLimitsRecord::*field;
-};
-constexpr Limit32 kLimits32[] = {
-    {"maxPerStageDescriptorStorageImages", &DeviceLimitsRecord::per_stage_storage_images},
-    {"maxPerStageDescriptorSampledImages", &DeviceLimitsRecord::per_stage_sampled_images},
-    {"maxPerStageDescriptorSamplers", &DeviceLimitsRecord::per_stage_samplers},
-    {"maxPerStageDescriptorStorageBuffers", &DeviceLimitsRecord::per_stage_storage_buffers},
-    {"maxPerStageDescriptorUniformBuffers", &DeviceLimitsRecord::per_stage_uniform_buffers},
-    {"maxPerStageResources", &DeviceLimitsRecord::per_stage_resources},
-    {"maxDescriptorSetStorageImages", &DeviceLimitsRecord::set_storage_images},
-    {"maxDescriptorSetSampledImages", &DeviceLimitsRecord::set_sampled_images},
-    {"maxDescriptorSetSamplers", &DeviceLimitsRecord::set_samplers},
-    {"maxDescriptorSetStorageBuffers", &DeviceLimitsRecord::set_storage_buffers},
-    {"maxDescriptorSetUniformBuffers", &DeviceLimitsRecord::set_uniform_buffers},
-    {"maxBoundDescriptorSets", &DeviceLimitsRecord::bound_descriptor_sets},
-    {"maxPushConstantsSize", &DeviceLimitsRecord::push_constants_size},
-    {"maxComputeSharedMemorySize", &DeviceLimitsRecord::compute_shared_memory},
-    {"maxComputeWorkGroupInvocations", &DeviceLimitsRecord::workgroup_invocations},
-    {"maxImageDimension2D", &DeviceLimitsRecord::image_dimension_2d},
-    {"maxImageArrayLayers", &DeviceLimitsRecord::image_array_layers},
-    {"maxStorageBufferRange", &DeviceLimitsRecord::storage_buffer_range},
-    {"subgroupSize", &DeviceLimitsRecord::subgroup_size},
-};
-constexpr std::size_t kLimitKeyCount = std::size(kLimits32) + 4;  // + the two vectors, the size, the features
-
-struct Feature {
-  const char* key;
-  bool Rgba32fFeatures::*field;
-};
-constexpr Feature kFeatures[] = {
-    {"sampled_image", &Rgba32fFeatures::sampled_image},
-    {"sampled_image_filter_linear", &Rgba32fFeatures::sampled_image_filter_linear},
-    {"storage_image", &Rgba32fFeatures::storage_image},
-    {"blit_src", &Rgba32fFeatures::blit_src},
-    {"blit_dst", &Rgba32fFeatures::blit_dst},
-};
-
 // ---- writing ----
-
-json limits_json(const DeviceLimitsRecord& l) {
-  json out = json::object();
-  for (const Limit32& k : kLimits32) out[k.key] = l.*k.field;
-  out["maxComputeWorkGroupSize"] = l.workgroup_size;
-  out["maxComputeWorkGroupCount"] = l.workgroup_count;
-  out["maxMemoryAllocationSize"] = l.max_memory_allocation_size;
-  json features = json::object();
-  for (const Feature& f : kFeatures) features[f.key] = l.rgba32f_optimal_tiling.*f.field;
-  out["rgba32f_optimal_tiling"] = features;
-  return out;
-}
 
 json verdict_json(const SupportVerdict& v) { return json{{"runs", v.runs}, {"reason", v.reason}}; }
 
 // ---- reading ----
-
-// A non-negative integer (a parsed file holds one as unsigned, a document built in memory as
-// signed) of at most `max`.
-uint64_t unsigned_member(const JsonReader& r, const json& object, const std::string& parent, std::string_view key,
-                         uint64_t max = std::numeric_limits<uint64_t>::max()) {
-  const json& v = r.member(object, parent, key);
-  if (!v.is_number_integer() || (!v.is_number_unsigned() && v.get<int64_t>() < 0) || v.get<uint64_t>() > max)
-    r.wrong_type(v, r.child(parent, key), max == UINT32_MAX ? "an unsigned 32-bit integer" : "a non-negative integer");
-  return v.get<uint64_t>();
-}
 
 // An index that may be -1 for none.
 int64_t index_or_none(const JsonReader& r, const json& object, const std::string& parent, std::string_view key) {
@@ -99,40 +33,6 @@ std::optional<std::string> optional_string(const JsonReader& r, const json& obje
                                            std::string_view key) {
   if (!object.contains(std::string(key))) return std::nullopt;
   return r.string(object, parent, key);
-}
-
-std::array<uint32_t, 3> vector3(const JsonReader& r, const json& object, const std::string& parent,
-                                std::string_view key) {
-  const json& a = r.array(object, parent, key, 3);
-  const std::string path = r.child(parent, key);
-  std::array<uint32_t, 3> out{};
-  for (std::size_t i = 0; i < 3; ++i) {
-    if (!a[i].is_number_unsigned() || a[i].get<uint64_t>() > UINT32_MAX)
-      r.wrong_type(a[i], r.element(path, i), "an unsigned 32-bit integer");
-    out[i] = a[i].get<uint32_t>();
-  }
-  return out;
-}
-
-DeviceLimitsRecord read_limits(const JsonReader& r, const json& l, const std::string& p) {
-  DeviceLimitsRecord out;
-  for (const Limit32& k : kLimits32) out.*k.field = r.uint32(l, p, k.key);
-  out.workgroup_size = vector3(r, l, p, "maxComputeWorkGroupSize");
-  out.workgroup_count = vector3(r, l, p, "maxComputeWorkGroupCount");
-  out.max_memory_allocation_size = unsigned_member(r, l, p, "maxMemoryAllocationSize");
-  const json& f = r.object(l, p, "rgba32f_optimal_tiling");
-  const std::string fp = r.child(p, "rgba32f_optimal_tiling");
-  r.only_keys(f, fp, {"sampled_image", "sampled_image_filter_linear", "storage_image", "blit_src", "blit_dst"});
-  for (const Feature& k : kFeatures) out.rgba32f_optimal_tiling.*k.field = r.boolean(f, fp, k.key);
-  // Every key above is required, so one more is one the model would drop: refuse it.
-  if (l.size() != kLimitKeyCount)
-    for (const auto& [key, value] : l.items()) {
-      bool known = key == "maxComputeWorkGroupSize" || key == "maxComputeWorkGroupCount" ||
-                   key == "maxMemoryAllocationSize" || key == "rgba32f_optimal_tiling";
-      for (const Limit32& k : kLimits32) known = known || key == k.key;
-      if (!known) r.fail(r.child(p, key), "is not a known limit");
-    }
-  return out;
 }
 
 SupportVerdict read_verdict(const JsonReader& r, const json& v, const std::string& p) {
@@ -162,7 +62,7 @@ nlohmann::json to_json(const DeviceRecord& d) {
            {"device_local_bytes", d.device_local_bytes},
            {"usable", d.usable},
            {"unusable_reason", d.unusable_reason}};
-  if (d.limits) out["limits"] = limits_json(*d.limits);
+  if (d.limits) out["limits"] = to_json(*d.limits);
   return out;
 }
 
@@ -219,8 +119,8 @@ DeviceRecord device_from_json(const nlohmann::json& d, const std::string& where,
   out.pipeline_statistics = r.boolean(d, p, "pipeline_statistics");
   out.subgroup_size = r.uint32(d, p, "subgroup_size");
   out.max_compute_shared_memory = r.uint32(d, p, "max_compute_shared_memory");
-  out.device_local_bytes = unsigned_member(r, d, p, "device_local_bytes");
-  if (d.contains("limits")) out.limits = read_limits(r, r.object(d, p, "limits"), r.child(p, "limits"));
+  out.device_local_bytes = r.uint64(d, p, "device_local_bytes");
+  if (d.contains("limits")) out.limits = device_limits_from_json(r, r.object(d, p, "limits"), r.child(p, "limits"));
   out.usable = r.boolean(d, p, "usable");
   out.unusable_reason = r.string(d, p, "unusable_reason");
   return out;

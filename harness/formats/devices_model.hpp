@@ -8,7 +8,6 @@
 // command reads them into the model with device_from_json and support_from_json, and the model
 // writes the file. Files written before the limits and the support existed have neither; they are
 // absent in the model then and not written back, so every committed file round-trips unchanged.
-#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <map>
@@ -18,45 +17,11 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "harness/core/device_limits.hpp"
+
 namespace vsgl {
 
 inline constexpr const char* kDevicesSchemaFile = "results/schema/devices.schema.json";
-
-// VK_FORMAT_R32G32B32A32_SFLOAT's optimal tiling features the FIS paths use.
-struct Rgba32fFeatures {
-  bool sampled_image = false;
-  bool sampled_image_filter_linear = false;
-  bool storage_image = false;
-  bool blit_src = false;
-  bool blit_dst = false;
-};
-
-// The limits of vk/device_limits.hpp, by their Vulkan names in the file.
-struct DeviceLimitsRecord {
-  uint32_t per_stage_storage_images = 0;  // maxPerStageDescriptorStorageImages
-  uint32_t per_stage_sampled_images = 0;
-  uint32_t per_stage_samplers = 0;
-  uint32_t per_stage_storage_buffers = 0;
-  uint32_t per_stage_uniform_buffers = 0;
-  uint32_t per_stage_resources = 0;
-  uint32_t set_storage_images = 0;  // maxDescriptorSetStorageImages
-  uint32_t set_sampled_images = 0;
-  uint32_t set_samplers = 0;
-  uint32_t set_storage_buffers = 0;
-  uint32_t set_uniform_buffers = 0;
-  uint32_t bound_descriptor_sets = 0;
-  uint32_t push_constants_size = 0;
-  uint32_t compute_shared_memory = 0;
-  std::array<uint32_t, 3> workgroup_size{};
-  uint32_t workgroup_invocations = 0;
-  std::array<uint32_t, 3> workgroup_count{};
-  uint32_t image_dimension_2d = 0;
-  uint32_t image_array_layers = 0;
-  uint32_t storage_buffer_range = 0;
-  uint64_t max_memory_allocation_size = 0;
-  uint32_t subgroup_size = 0;
-  Rgba32fFeatures rgba32f_optimal_tiling;
-};
 
 // One physical device as a run saw it.
 struct DeviceRecord {
@@ -78,7 +43,7 @@ struct DeviceRecord {
   uint32_t subgroup_size = 0;
   uint32_t max_compute_shared_memory = 0;
   uint64_t device_local_bytes = 0;
-  std::optional<DeviceLimitsRecord> limits;  // absent in older files
+  std::optional<DeviceLimits> limits;  // absent in older files
   bool usable = false;
   std::string unusable_reason;  // empty when usable
 };

@@ -35,42 +35,12 @@ DeviceLimits read_device_limits(const VkPhysicalDeviceProperties& props, uint64_
   d.storage_buffer_offset_alignment = l.minStorageBufferOffsetAlignment;
   d.max_memory_allocation_size = max_allocation;
   d.subgroup_size = subgroup_size;
-  d.rgba32f_features = rgba32f_features;
+  const auto has = [&](VkFormatFeatureFlags bit) { return (rgba32f_features & bit) != 0; };
+  d.rgba32f_optimal_tiling = {has(VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT),
+                              has(VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT),
+                              has(VK_FORMAT_FEATURE_STORAGE_IMAGE_BIT), has(VK_FORMAT_FEATURE_BLIT_SRC_BIT),
+                              has(VK_FORMAT_FEATURE_BLIT_DST_BIT)};
   return d;
-}
-
-nlohmann::json to_json(const DeviceLimits& d) {
-  const VkFormatFeatureFlags f = d.rgba32f_features;
-  return nlohmann::json{
-      {"maxPerStageDescriptorStorageImages", d.per_stage_storage_images},
-      {"maxPerStageDescriptorSampledImages", d.per_stage_sampled_images},
-      {"maxPerStageDescriptorSamplers", d.per_stage_samplers},
-      {"maxPerStageDescriptorStorageBuffers", d.per_stage_storage_buffers},
-      {"maxPerStageDescriptorUniformBuffers", d.per_stage_uniform_buffers},
-      {"maxPerStageResources", d.per_stage_resources},
-      {"maxDescriptorSetStorageImages", d.set_storage_images},
-      {"maxDescriptorSetSampledImages", d.set_sampled_images},
-      {"maxDescriptorSetSamplers", d.set_samplers},
-      {"maxDescriptorSetStorageBuffers", d.set_storage_buffers},
-      {"maxDescriptorSetUniformBuffers", d.set_uniform_buffers},
-      {"maxBoundDescriptorSets", d.bound_descriptor_sets},
-      {"maxPushConstantsSize", d.push_constants_size},
-      {"maxComputeSharedMemorySize", d.compute_shared_memory},
-      {"maxComputeWorkGroupSize", {d.workgroup_size[0], d.workgroup_size[1], d.workgroup_size[2]}},
-      {"maxComputeWorkGroupInvocations", d.workgroup_invocations},
-      {"maxComputeWorkGroupCount", {d.workgroup_count[0], d.workgroup_count[1], d.workgroup_count[2]}},
-      {"maxImageDimension2D", d.image_dimension_2d},
-      {"maxImageArrayLayers", d.image_array_layers},
-      {"maxStorageBufferRange", d.storage_buffer_range},
-      {"maxMemoryAllocationSize", d.max_memory_allocation_size},
-      {"subgroupSize", d.subgroup_size},
-      {"rgba32f_optimal_tiling",
-       {{"sampled_image", (f & VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT) != 0},
-        {"sampled_image_filter_linear", (f & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT) != 0},
-        {"storage_image", (f & VK_FORMAT_FEATURE_STORAGE_IMAGE_BIT) != 0},
-        {"blit_src", (f & VK_FORMAT_FEATURE_BLIT_SRC_BIT) != 0},
-        {"blit_dst", (f & VK_FORMAT_FEATURE_BLIT_DST_BIT) != 0}}},
-  };
 }
 
 nlohmann::json to_json(const PipelineNeeds& n) {

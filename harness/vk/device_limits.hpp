@@ -1,9 +1,11 @@
 #pragma once
-// The device limits vsgl-bench's kernels and captures depend on, and the check of one pipeline's
-// needs against them. Every pipeline is checked BEFORE it is created (DESIGN.md §9: a device that
+// The device limits (core/device_limits.hpp) as the driver reports them, and the check of one
+// pipeline's needs against them. Every pipeline is checked BEFORE it is created (DESIGN.md §9: a device that
 // enforces a limit the pipeline exceeds gives undefined behaviour, not an error), so a need that
 // does not fit is a DeviceError naming the limit, its value and what was needed.
 #include <vulkan/vulkan.h>
+
+#include "harness/core/device_limits.hpp"
 
 #include <cstdint>
 #include <nlohmann/json_fwd.hpp>
@@ -12,38 +14,8 @@
 
 namespace vsgl {
 
-struct DeviceLimits {
-  // Descriptors one compute stage may access, by type (VkPhysicalDeviceLimits::maxPerStage*).
-  uint32_t per_stage_storage_images = 0;
-  uint32_t per_stage_sampled_images = 0;
-  uint32_t per_stage_samplers = 0;
-  uint32_t per_stage_storage_buffers = 0;
-  uint32_t per_stage_uniform_buffers = 0;
-  uint32_t per_stage_resources = 0;
-  // ... and one pipeline layout's sets together (maxDescriptorSet*).
-  uint32_t set_storage_images = 0;
-  uint32_t set_sampled_images = 0;
-  uint32_t set_samplers = 0;
-  uint32_t set_storage_buffers = 0;
-  uint32_t set_uniform_buffers = 0;
-  uint32_t bound_descriptor_sets = 0;
-  uint32_t push_constants_size = 0;
-  uint32_t compute_shared_memory = 0;
-  uint32_t workgroup_size[3] = {0, 0, 0};
-  uint32_t workgroup_invocations = 0;
-  uint32_t workgroup_count[3] = {0, 0, 0};
-  uint32_t image_dimension_2d = 0;
-  uint32_t image_array_layers = 0;
-  uint32_t storage_buffer_range = 0;
-  uint64_t storage_buffer_offset_alignment = 1;  // minStorageBufferOffsetAlignment
-  uint64_t max_memory_allocation_size = 0;  // VkPhysicalDeviceMaintenance3Properties (Vulkan 1.1)
-  uint32_t subgroup_size = 0;
-  VkFormatFeatureFlags rgba32f_features = 0;  // optimal tiling, VK_FORMAT_R32G32B32A32_SFLOAT
-};
-
 DeviceLimits read_device_limits(const VkPhysicalDeviceProperties& props, uint64_t max_allocation,
                                 uint32_t subgroup_size, VkFormatFeatureFlags rgba32f_features);
-nlohmann::json to_json(const DeviceLimits& limits);
 
 // What one compute pipeline needs: its set layout's descriptors by type (a combined image sampler
 // counts as one sampled image and one sampler, as the per-stage limits count it), its push
