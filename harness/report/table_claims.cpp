@@ -17,7 +17,7 @@ namespace {
 using ojson = nlohmann::ordered_json;
 
 // The thresholds of the claims, each named once (the criterion texts print them).
-constexpr double kOverheadFloorUs = 10.0;       // claim 1: modified - Tok15 within max(10 us, 1 %)
+constexpr double kOverheadFloorUs = 10.0;  // claim 1: modified - Tok15 within max(10 us, 1 %)
 constexpr double kOverheadFraction = 0.01;
 constexpr double kKmeansOverModifiedMin = 7.0;  // claim 2: k-means at least 7x the modified FIS
 constexpr double kLinesRatioMin = 4.0;          // claim 6: k-means at least 4x the lines of FIS
@@ -42,24 +42,138 @@ std::string paper_kmeans_text(const std::string& separator) {
   return out;
 }
 
-Claim claim(const std::string& text, const std::string& id, const std::string& criterion, ojson measured,
-            std::optional<bool> holds, const std::string& note, bool informative) {
-  Claim c;
-  c.id = id;
-  c.text = text;
-  c.criterion = criterion;
-  c.measured = std::move(measured);
-  c.holds = holds;
-  c.note = note;
-  c.informative = informative;
+// 1: the modified kernel costs only microseconds more. Judged on the 95 % interval of the
+// per-round differences of the generator totals (DESIGN.md §9), never on one noisy number: holds
+// when the whole interval lies within the bound, fails when it lies wholly outside.
+Claim overhead_claim(const std::string& text, const MeasuredTable& t, bool informative) {
+  Claim c{.id = "modified_overhead",
+          .text = text,
+          .criterion = "95% interval of the per-round difference total(" + kModified + ") - total(" + kTok15 +
+                       ") (Hodges-Lehmann, Wilcoxon signed-rank) within +-max(" + number(kOverheadFloorUs) + " us, " +
+                       number(100 * kOverheadFraction) +
+                       "% of the median Tok15 total); outside it: "
+                       "does not hold; straddling it: inconclusive",
+          .informative = informative};
+  if (!has_generator(t, kTok15) || !has_generator(t, kModified)) {
+    c.note = "needs " + kTok15 + " and " + kModified + " in this run";
+    return c;
+  }
+  const double tok_ms = median_total(t, kTok15);
+  const double bound_us = std::max(kOverheadFloorUs, kOverheadFraction * 1e3 * tok_ms);
+  const PairedInterval p = paired_overhead(t);
+  const OverheadVerdict v = judge_overhead(1e3 * p.low, 1e3 * p.high, bound_us, p.reaches_nominal());
+  c.note = v.note;
+  if (!p.reaches_nominal())
+    c.note = std::string(kInconclusivePrefix) + ": " + std::to_string(p.count) + " rounds reach only " +
+             number(100 * p.confidence) + "% confidence (95% needs at least 6 rounds)";
+  c.measured = ojson{{"overhead_us", 1e3 * p.hodges_lehmann},
+                     {"ci_low_us", 1e3 * p.low},
+                     {"ci_high_us", 1e3 * p.high},
+                     {"confidence", p.confidence},
+                     {"rounds", p.count},
+                     {"median_of_round_differences_us", 1e3 * p.median},
+                     {"difference_of_medians_us", 1e3 * (median_total(t, kModified) - tok_ms)},
+                     {"bound_us", bound_us},
+                     {"tok15_total_ms", tok_ms}};
+  c.holds = v.holds;
   return c;
 }
 
+// 2: modified FIS is several times faster than the paper's k-means generators.
+Claim kmeans_speed_claim(const std::string& text, const MeasuredTable& t, bool informative) {
+  ojson measured = ojson::object();
+  bool all = true, any = false;
+  if (has_generator(t, kModified))
+    for (const auto& k : paper_kmeans_names())
+      if (has_generator(t, k)) {
+        const double ratio = median_total(t, k) / median_total(t, kModified);
+        measured[k] = ratio;
+        all = all && ratio >= kKmeansOverModifiedMin;
+        any = true;
+      }
+  return Claim{.id = "modified_vs_kmeans_speed",
+               .text = text,
+               .criterion = "median total(" + paper_kmeans_text(" and ") + ") / median total(" + kModified +
+                            ") >= " + number(kKmeansOverModifiedMin) + " for each",
+               .measured = measured,
+               .holds = any ? std::optional<bool>(all) : std::nullopt,
+               .note = any ? "" : "needs " + kModified + " and a paper k-means generator in this run",
+               .informative = informative};
+}
+
+// 3: FIS cost does not depend on the PDF, k-means cost does: the change from Table 1 to Table 2.
+Claim pdf_change_claim(const std::string& text, const MeasuredTable& t, const MeasuredTable* other, bool informative) {
+  Claim c{.id = "pdf_independence",
+          .text = text,
+          .criterion = "Table 1 -> Table 2 change of the median total: |change| <= " + number(100 * kFisPdfChangeMax) +
+                       "% for both FIS generators, and larger for each paper k-means generator than for either FIS "
+                       "generator",
+          .informative = informative};
+  if (other == nullptr) {
+    c.note = "needs both tables in one run";
+    return c;
+  }
+  const MeasuredTable& t1 = t.number == 1 ? t : *other;
+  const MeasuredTable& t2 = t.number == 1 ? *other : t;
+  double fis_max = -1;
+  bool fis_ok = true, kmeans_ok = true, fis_any = false, kmeans_any = false;
+  for (const auto& g : paper_generator_names()) {
+    if (!has_generator(t1, g) || !has_generator(t2, g)) continue;
+    const double change = median_total(t2, g) / median_total(t1, g) - 1.0;
+    c.measured[g] = change;
+    if (generator_descriptor(g).family == GeneratorFamily::kFis) {
+      fis_any = true;
+      fis_ok = fis_ok && std::abs(change) <= kFisPdfChangeMax;
+      fis_max = std::max(fis_max, std::abs(change));
+    }
+  }
+  for (const auto& g : paper_kmeans_names())
+    if (c.measured.contains(g)) {
+      kmeans_any = true;
+      kmeans_ok = kmeans_ok && std::abs(c.measured[g].get<double>()) > fis_max;
+    }
+  if (fis_any && kmeans_any) c.holds = fis_ok && kmeans_ok;
+  else if (fis_any)
+    c.note = "FIS part measured (|change| <= " + number(100 * kFisPdfChangeMax) +
+             "%: " + std::string(fis_ok ? "yes" : "no") + "); the k-means part needs " + paper_kmeans_text(" or ");
+  else c.note = "needs both FIS generators' or a FIS and a paper k-means generator's timings in both tables";
+  return c;
+}
+
+// 4 and 5: image quality, which the tables do not measure (`vsgl-bench quality` does).
+Claim not_timed_claim(const std::string& text, const std::string& id, const std::string& note, bool informative) {
+  return Claim{.id = id, .text = text, .criterion = "not a timing claim", .note = note, .informative = informative};
+}
+
+// 6: lines of code, counted from the sources (whether or not k-means was timed). Not a timing:
+// the same on every device, so never informative only.
+Claim lines_claim(const std::string& text, const ReportContext& ctx) {
+  ojson measured = ojson::object();
+  bool all = true, any = false;
+  if (ctx.lines.count(kModified))
+    for (const auto& k : paper_kmeans_names())
+      if (ctx.lines.count(k)) {
+        const double ratio = static_cast<double>(ctx.lines.at(k).total) / ctx.lines.at(kModified).total;
+        measured[k] = ratio;
+        all = all && ratio >= kLinesRatioMin;
+        any = true;
+      }
+  return Claim{.id = "lines_of_code",
+               .text = text,
+               .criterion = "lines_of_code(" + paper_kmeans_text(" and ") + ") / lines_of_code(" + kModified +
+                            ") >= " + number(kLinesRatioMin) + " for each",
+               .measured = measured,
+               .holds = any ? std::optional<bool>(all) : std::nullopt,
+               .note = any ? "" : "needs the line counts of " + kModified + " and k-means",
+               .informative = false};
+}
 }  // namespace
 
 OverheadVerdict judge_overhead(double low_us, double high_us, double bound_us, bool reaches_nominal) {
-  if (!(low_us <= high_us) || !(bound_us > 0)) throw std::invalid_argument("an overhead interval needs low <= high and a positive bound");
-  if (!reaches_nominal) return {std::nullopt, std::string(kInconclusivePrefix) + ": the interval falls short of 95% confidence"};
+  if (!(low_us <= high_us) || !(bound_us > 0))
+    throw std::invalid_argument("an overhead interval needs low <= high and a positive bound");
+  if (!reaches_nominal)
+    return {std::nullopt, std::string(kInconclusivePrefix) + ": the interval falls short of 95% confidence"};
   if (low_us >= -bound_us && high_us <= bound_us) return {true, ""};
   if (low_us > bound_us || high_us < -bound_us) return {false, ""};
   return {std::nullopt, kInconclusiveNote};
@@ -78,120 +192,15 @@ std::vector<Claim> table_claims(const MeasuredTable& t, const MeasuredTable* oth
   const auto text = [&](std::size_t i) { return texts[i].get<std::string>(); };
   // A CPU device (lavapipe) says nothing about GPU performance: its verdicts are informative.
   const bool informative = ctx.device.type == VK_PHYSICAL_DEVICE_TYPE_CPU;
-  const bool tok = has_generator(t, kTok15), mod = has_generator(t, kModified);
-  std::vector<Claim> out;
-
-  {  // 1: the modified kernel costs only microseconds more. Judged on the 95 % interval of the
-     // per-round differences of the generator totals (DESIGN.md §9), never on one noisy number: holds
-     // when the whole interval lies within the bound, fails when it lies wholly outside.
-    const std::string crit = "95% interval of the per-round difference total(" + kModified + ") - total(" + kTok15 +
-                             ") (Hodges-Lehmann, Wilcoxon signed-rank) within +-max(" + number(kOverheadFloorUs) +
-                             " us, " + number(100 * kOverheadFraction) +
-                             "% of the median Tok15 total); outside it: "
-                             "does not hold; straddling it: inconclusive";
-    if (tok && mod) {
-      const double tok_ms = median_total(t, kTok15);
-      const double bound_us = std::max(kOverheadFloorUs, kOverheadFraction * 1e3 * tok_ms);
-      const PairedInterval p = paired_overhead(t);
-      const OverheadVerdict v = judge_overhead(1e3 * p.low, 1e3 * p.high, bound_us, p.reaches_nominal());
-      std::string note = v.note;
-      if (!p.reaches_nominal())
-        note = std::string(kInconclusivePrefix) + ": " + std::to_string(p.count) + " rounds reach only " +
-               number(100 * p.confidence) + "% confidence (95% needs at least 6 rounds)";
-      out.push_back(claim(text(0), "modified_overhead", crit,
-                          ojson{{"overhead_us", 1e3 * p.hodges_lehmann},
-                                {"ci_low_us", 1e3 * p.low},
-                                {"ci_high_us", 1e3 * p.high},
-                                {"confidence", p.confidence},
-                                {"rounds", p.count},
-                                {"median_of_round_differences_us", 1e3 * p.median},
-                                {"difference_of_medians_us", 1e3 * (median_total(t, kModified) - tok_ms)},
-                                {"bound_us", bound_us},
-                                {"tok15_total_ms", tok_ms}},
-                          v.holds, note, informative));
-    } else {
-      out.push_back(claim(text(0), "modified_overhead", crit, ojson::object(), std::nullopt,
-                          "needs " + kTok15 + " and " + kModified + " in this run", informative));
-    }
-  }
-  {  // 2: modified FIS is several times faster than the paper's k-means generators.
-    const std::string crit = "median total(" + paper_kmeans_text(" and ") + ") / median total(" + kModified +
-                             ") >= " + number(kKmeansOverModifiedMin) + " for each";
-    ojson measured = ojson::object();
-    bool all = true, any = false;
-    if (mod)
-      for (const auto& k : paper_kmeans_names())
-        if (has_generator(t, k)) {
-          const double ratio = median_total(t, k) / median_total(t, kModified);
-          measured[k] = ratio;
-          all = all && ratio >= kKmeansOverModifiedMin;
-          any = true;
-        }
-    out.push_back(claim(text(1), "modified_vs_kmeans_speed", crit, measured,
-                        any ? std::optional<bool>(all) : std::nullopt,
-                        any ? "" : "needs " + kModified + " and a paper k-means generator in this run", informative));
-  }
-  {  // 3: FIS cost does not depend on the PDF, k-means cost does.
-    const std::string crit = "Table 1 -> Table 2 change of the median total: |change| <= " + number(100 * kFisPdfChangeMax) +
-                             "% for both FIS generators, and larger for each paper k-means generator than for either FIS generator";
-    ojson measured = ojson::object();
-    std::optional<bool> holds;
-    std::string note;
-    if (other == nullptr) {
-      note = "needs both tables in one run";
-    } else {
-      const MeasuredTable& t1 = t.number == 1 ? t : *other;
-      const MeasuredTable& t2 = t.number == 1 ? *other : t;
-      double fis_max = -1;
-      bool fis_ok = true, kmeans_ok = true, fis_any = false, kmeans_any = false;
-      for (const auto& g : paper_generator_names()) {
-        if (!has_generator(t1, g) || !has_generator(t2, g)) continue;
-        const double change = median_total(t2, g) / median_total(t1, g) - 1.0;
-        measured[g] = change;
-        if (generator_descriptor(g).family == GeneratorFamily::kFis) {
-          fis_any = true;
-          fis_ok = fis_ok && std::abs(change) <= kFisPdfChangeMax;
-          fis_max = std::max(fis_max, std::abs(change));
-        }
-      }
-      for (const auto& g : paper_kmeans_names())
-        if (measured.contains(g)) {
-          kmeans_any = true;
-          kmeans_ok = kmeans_ok && std::abs(measured[g].get<double>()) > fis_max;
-        }
-      if (fis_any && kmeans_any) holds = fis_ok && kmeans_ok;
-      else note = "needs both FIS generators' or a FIS and a paper k-means generator's timings in both tables";
-      if (fis_any && !kmeans_any) {
-        holds = std::nullopt;
-        note = "FIS part measured (|change| <= " + number(100 * kFisPdfChangeMax) +
-               "%: " + std::string(fis_ok ? "yes" : "no") + "); the k-means part needs " + paper_kmeans_text(" or ");
-      }
-    }
-    out.push_back(claim(text(2), "pdf_independence", crit, measured, holds, note, informative));
-  }
-  out.push_back(claim(text(3), "kernel_overlaps_quality", "not a timing claim", ojson::object(), std::nullopt,
-                      "image quality (Fig. 1, Fig. 5) is checked by `vsgl-bench verify`/quality, not by the tables",
-                      informative));
-  out.push_back(claim(text(4), "k_temporal_coherence", "not a timing claim", ojson::object(), std::nullopt,
-                      "temporal coherence for K > 1 (Fig. 6) is not measured by the tables", informative));
-  {  // 6: lines of code, counted from the sources (whether or not k-means was timed).
-    const std::string crit = "lines_of_code(" + paper_kmeans_text(" and ") + ") / lines_of_code(" + kModified +
-                             ") >= " + number(kLinesRatioMin) + " for each";
-    ojson measured = ojson::object();
-    bool all = true, any = false;
-    if (ctx.lines.count(kModified))
-      for (const auto& k : paper_kmeans_names())
-        if (ctx.lines.count(k)) {
-          const double ratio = static_cast<double>(ctx.lines.at(k).total) / ctx.lines.at(kModified).total;
-          measured[k] = ratio;
-          all = all && ratio >= kLinesRatioMin;
-          any = true;
-        }
-    // Not a timing: the same on every device.
-    out.push_back(claim(text(5), "lines_of_code", crit, measured, any ? std::optional<bool>(all) : std::nullopt,
-                        any ? "" : "needs the line counts of " + kModified + " and k-means", false));
-  }
-  return out;
+  return {overhead_claim(text(0), t, informative),
+          kmeans_speed_claim(text(1), t, informative),
+          pdf_change_claim(text(2), t, other, informative),
+          not_timed_claim(text(3), "kernel_overlaps_quality",
+                          "image quality (Fig. 1, Fig. 5) is checked by `vsgl-bench verify`/quality, not by the tables",
+                          informative),
+          not_timed_claim(text(4), "k_temporal_coherence",
+                          "temporal coherence for K > 1 (Fig. 6) is not measured by the tables", informative),
+          lines_claim(text(5), ctx)};
 }
 
 }  // namespace vsgl
