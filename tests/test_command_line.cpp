@@ -22,17 +22,18 @@ namespace {
 using test::run_cli;
 using test::run_cli_without_vulkan;
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+bool mentions(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 TEST(CliUsage, TopLevelHelpListsEveryCommandAndTheExitCodeTable) {
   const auto r = run_cli_without_vulkan("--help");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   for (const char* command :
        {"devices", "record", "verify", "shade", "quality", "tables", "sweep", "compare", "export", "dashboard"})
-    EXPECT_TRUE(contains(r.output, command)) << command << "\n" << r.output;
-  for (const auto& e : cli::exit_code_table()) EXPECT_TRUE(contains(r.output, e.meaning)) << e.meaning << "\n" << r.output;
-  EXPECT_TRUE(contains(r.output, "70")) << r.output;
-  EXPECT_FALSE(contains(r.output, "--copy-mib")) << "command options belong to the command's help\n" << r.output;
+    EXPECT_TRUE(mentions(r.output, command)) << command << "\n" << r.output;
+  for (const auto& e : cli::exit_code_table())
+    EXPECT_TRUE(mentions(r.output, e.meaning)) << e.meaning << "\n" << r.output;
+  EXPECT_TRUE(mentions(r.output, "70")) << r.output;
+  EXPECT_FALSE(mentions(r.output, "--copy-mib")) << "command options belong to the command's help\n" << r.output;
   const auto help = run_cli_without_vulkan("help");
   EXPECT_EQ(help.exit_code, 0) << help.output;
   EXPECT_EQ(help.output, r.output);
@@ -59,39 +60,39 @@ TEST(CliUsage, TopLevelHelpListsEachCommandInOneLine) {
   }
   EXPECT_EQ(listed, (std::vector<std::string>{"devices", "record", "verify", "shade", "quality", "tables", "sweep",
                                               "compare", "export", "dashboard"}));
-  EXPECT_FALSE(contains(r.output, "geometric-mean summary")) << "the whole description is the command's\n" << r.output;
+  EXPECT_FALSE(mentions(r.output, "geometric-mean summary")) << "the whole description is the command's\n" << r.output;
   const auto compare = run_cli_without_vulkan("compare --help");
   ASSERT_EQ(compare.exit_code, 0) << compare.output;
-  EXPECT_TRUE(contains(compare.output, "geometric-mean summary")) << compare.output;
+  EXPECT_TRUE(mentions(compare.output, "geometric-mean summary")) << compare.output;
 }
 
 TEST(CliUsage, EachCommandsHelpShowsOnlyItsOwnOptions) {
   const auto quality = run_cli_without_vulkan("quality --help");
   ASSERT_EQ(quality.exit_code, 0) << quality.output;
   for (const char* own : {"--capture", "--k-sweep", "--flicker-width", "--light-vsgls", "--pyramid", "--device", "--validate"})
-    EXPECT_TRUE(contains(quality.output, own)) << own << "\n" << quality.output;
+    EXPECT_TRUE(mentions(quality.output, own)) << own << "\n" << quality.output;
   for (const char* other : {"--copy-mib", "--gltf", "--allow-mismatch", "--repetitions", "--stride"})
-    EXPECT_FALSE(contains(quality.output, other)) << other << "\n" << quality.output;
+    EXPECT_FALSE(mentions(quality.output, other)) << other << "\n" << quality.output;
 
   const auto tables = run_cli_without_vulkan("tables --help");
   ASSERT_EQ(tables.exit_code, 0) << tables.output;
   for (const char* own : {"--copy-mib", "--quick", "--capture", "--captures", "--kmeans-iterations", "--iterations"})
-    EXPECT_TRUE(contains(tables.output, own)) << own << "\n" << tables.output;
-  EXPECT_FALSE(contains(tables.output, "--k-sweep")) << tables.output;
+    EXPECT_TRUE(mentions(tables.output, own)) << own << "\n" << tables.output;
+  EXPECT_FALSE(mentions(tables.output, "--k-sweep")) << tables.output;
   // The paper's N, shown as the defaults from the one place they are defined.
-  EXPECT_TRUE(contains(tables.output, std::to_string(kPaperCameraVsgls))) << tables.output;
-  EXPECT_TRUE(contains(tables.output, std::to_string(kPaperLightVsgls))) << tables.output;
+  EXPECT_TRUE(mentions(tables.output, std::to_string(kPaperCameraVsgls))) << tables.output;
+  EXPECT_TRUE(mentions(tables.output, std::to_string(kPaperLightVsgls))) << tables.output;
 
   const auto verify = run_cli_without_vulkan("verify --help");
   ASSERT_EQ(verify.exit_code, 0) << verify.output;
-  EXPECT_TRUE(contains(verify.output, "k-means")) << "verify checks the k-means generators too\n" << verify.output;
-  EXPECT_FALSE(contains(verify.output, "--generators")) << verify.output;
+  EXPECT_TRUE(mentions(verify.output, "k-means")) << "verify checks the k-means generators too\n" << verify.output;
+  EXPECT_FALSE(mentions(verify.output, "--generators")) << verify.output;
 
   const auto compare = run_cli_without_vulkan("compare --help");
   ASSERT_EQ(compare.exit_code, 0) << compare.output;
-  EXPECT_TRUE(contains(compare.output, "--noise-factor")) << compare.output;
-  EXPECT_TRUE(contains(compare.output, "relative IQR")) << "--noise-factor is described\n" << compare.output;
-  EXPECT_FALSE(contains(compare.output, "--device")) << compare.output;
+  EXPECT_TRUE(mentions(compare.output, "--noise-factor")) << compare.output;
+  EXPECT_TRUE(mentions(compare.output, "relative IQR")) << "--noise-factor is described\n" << compare.output;
+  EXPECT_FALSE(mentions(compare.output, "--device")) << compare.output;
 }
 
 TEST(CliUsage, ControlWithoutADriverAnyCommandReachingTheDeviceExitsFour) {
@@ -144,7 +145,7 @@ TEST(CliUsage, BadCommandLinesExitTwoBeforeVulkanNamingTheOption) {
     SCOPED_TRACE(c.args);
     const auto r = run_cli_without_vulkan(c.args);
     EXPECT_EQ(r.exit_code, 2) << r.output;
-    EXPECT_TRUE(contains(r.output, c.expect)) << r.output;
+    EXPECT_TRUE(mentions(r.output, c.expect)) << r.output;
   }
 }
 
@@ -182,7 +183,7 @@ TEST(CliUsage, DocumentedOptionsAreAccepted) {
   // --sequence is accepted and checked before the device (a missing sequence is bad input).
   const auto sequence = run_cli_without_vulkan("quality --capture x --sequence /nonexistent/vsgl_sequence");
   EXPECT_EQ(sequence.exit_code, 3) << sequence.output;
-  EXPECT_TRUE(contains(sequence.output, "/nonexistent/vsgl_sequence")) << sequence.output;
+  EXPECT_TRUE(mentions(sequence.output, "/nonexistent/vsgl_sequence")) << sequence.output;
 }
 
 TEST(CliUsage, AMissingInputFileIsBadInputBeforeVulkan) {
@@ -193,8 +194,8 @@ TEST(CliUsage, AMissingInputFileIsBadInputBeforeVulkan) {
     SCOPED_TRACE(args);
     const auto r = run_cli_without_vulkan(args);
     EXPECT_EQ(r.exit_code, 3) << r.output;
-    EXPECT_TRUE(contains(r.output, "/nonexistent/vsgl_")) << r.output;
-    EXPECT_TRUE(contains(r.output, "no such file")) << r.output;
+    EXPECT_TRUE(mentions(r.output, "/nonexistent/vsgl_")) << r.output;
+    EXPECT_TRUE(mentions(r.output, "no such file")) << r.output;
   }
 }
 
@@ -212,14 +213,15 @@ TEST(ExitCodes, AnUnexpectedExceptionIsAnInternalErrorNotAFailedCheck) {
   EXPECT_EQ(code, static_cast<int>(ExitCode::kInternal));
   EXPECT_EQ(code, 70);
   EXPECT_NE(code, static_cast<int>(ExitCode::kFailure));
-  EXPECT_TRUE(contains(message, "internal error: index out of range; please report it with the command line")) << message;
+  EXPECT_TRUE(mentions(message, "internal error: index out of range; please report it with the command line"))
+      << message;
 }
 
 TEST(ExitCodes, TheHelpFooterIsTheTable) {
   const std::string help = cli::exit_codes_help();
   for (const auto& e : cli::exit_code_table()) {
-    EXPECT_TRUE(contains(help, std::to_string(static_cast<int>(e.code)) + " ")) << help;
-    EXPECT_TRUE(contains(help, e.meaning)) << help;
+    EXPECT_TRUE(mentions(help, std::to_string(static_cast<int>(e.code)) + " ")) << help;
+    EXPECT_TRUE(mentions(help, e.meaning)) << help;
   }
 }
 

@@ -30,7 +30,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::size_t count(const std::string& text, const std::string& what) {
+std::size_t occurrences(const std::string& text, const std::string& what) {
   std::size_t n = 0;
   for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + what.size())) ++n;
   return n;
@@ -42,8 +42,8 @@ TEST(DashboardSvg, StackedBarsDrawEverySegmentWithItsNumber) {
   const std::vector<LegendEntry> legend{{"a", "camera: a", "#ff0000"}, {"b", "light: b", "#0000ff"}};
   const std::string svg = stacked_bar_chart_svg(
       "T <1>", "run", {StackedBar{"g1", {{"a", 1.0, "a1"}, {"b", 2.0, "b1"}}}, StackedBar{"g2", {{"a", 0.5, "a2"}}}}, legend, 300, 200);
-  EXPECT_EQ(count(svg, "<rect class=\"segment\""), 3u);
-  EXPECT_EQ(count(svg, "<g class=\"bar\""), 2u);
+  EXPECT_EQ(occurrences(svg, "<rect class=\"segment\""), 3u);
+  EXPECT_EQ(occurrences(svg, "<g class=\"bar\""), 2u);
   EXPECT_NE(svg.find("T &lt;1&gt;"), std::string::npos);  // escaped
   EXPECT_NE(svg.find(">3.00</text>"), std::string::npos);  // the stacked total above g1
   EXPECT_NE(svg.find("<title>b1</title>"), std::string::npos);
@@ -56,9 +56,9 @@ TEST(DashboardSvg, TimeSeriesJoinsPointsInOrder) {
                                           {Series{"dev A", "#123456", {{0, 1.0, 0.9, 1.1, "p"}, {2, 2.0, 1.9, 2.1, "q"}}},
                                            Series{"dev B", "#654321", {{1, 100.0, 90.0, 110.0, "r"}}}},
                                           300, 200);
-  EXPECT_EQ(count(svg, "<circle class=\"point\""), 3u);
-  EXPECT_EQ(count(svg, "<polyline"), 1u);  // one series has two points
-  EXPECT_EQ(count(svg, "class=\"whisker\""), 3u);
+  EXPECT_EQ(occurrences(svg, "<circle class=\"point\""), 3u);
+  EXPECT_EQ(occurrences(svg, "<polyline"), 1u);  // one series has two points
+  EXPECT_EQ(occurrences(svg, "class=\"whisker\""), 3u);
   EXPECT_THROW(time_series_svg("t", {"r1"}, {Series{"d", "#000", {{1, 1.0, 1.0, 1.0, ""}}}}, 300, 200), std::invalid_argument);
   EXPECT_THROW(time_series_svg("t", {"r1"}, {Series{"d", "#000", {{0, 0.0, 0.0, 1.0, ""}}}}, 300, 200), std::invalid_argument);
 }
@@ -74,9 +74,9 @@ TEST(DashboardPage, CommittedResultsGiveBothTablesBesideThePaper) {
   EXPECT_EQ(std::regex_search(html, std::regex("(src|href)=\"https?:")), false) << "the page must not fetch anything";
   EXPECT_NE(html.find("id=\"table1\""), std::string::npos);
   EXPECT_NE(html.find("id=\"table2\""), std::string::npos);
-  EXPECT_EQ(count(html, "class=\"chart bars paper\""), 2u);  // the paper's GTX 970 chart per table
-  EXPECT_GE(count(html, "class=\"chart bars run\""), 2u);
-  EXPECT_GE(count(html, "class=\"chart timeseries\""), 2u * 4u);  // a total per generator and table
+  EXPECT_EQ(occurrences(html, "class=\"chart bars paper\""), 2u);  // the paper's GTX 970 chart per table
+  EXPECT_GE(occurrences(html, "class=\"chart bars run\""), 2u);
+  EXPECT_GE(occurrences(html, "class=\"chart timeseries\""), 2u * 4u);  // a total per generator and table
   EXPECT_NE(html.find("Paper: NVIDIA GeForce GTX 970"), std::string::npos);
   EXPECT_NE(html.find("kmeans_3d light_view sum: 20.49 ms (paper)"), std::string::npos);  // Table 2's value
 }
@@ -133,20 +133,20 @@ TEST(DashboardPage, ScalingSectionDrawsEachSweepAxisWithItsFits) {
   EXPECT_NE(html.find("id=\"table1\""), std::string::npos);  // the tables stay
   ASSERT_NE(html.find("<section class=\"scaling\" id=\"scaling\">"), std::string::npos);
   EXPECT_EQ(html.find("class=\"no-sweep\""), std::string::npos);
-  EXPECT_EQ(count(html, "<section class=\"sweep\""), 2u);
-  EXPECT_EQ(count(html, "class=\"chart loglog\""), 2u);  // one plot per axis
+  EXPECT_EQ(occurrences(html, "<section class=\"sweep\""), 2u);
+  EXPECT_EQ(occurrences(html, "class=\"chart loglog\""), 2u);  // one plot per axis
 
   const std::string n = between(html, "id=\"sweep1\"", "id=\"sweep2\"");
   EXPECT_NE(n.find("tiny, procedural: GPU A, 2026-02-01, commit 0123456 (quick)"), std::string::npos) << n;
   EXPECT_NE(n.find("<code>b/sweep.json</code>"), std::string::npos);
-  EXPECT_EQ(count(n, "<g class=\"series\""), 4u);  // a series per generator and view
+  EXPECT_EQ(occurrences(n, "<g class=\"series\""), 4u);  // a series per generator and view
   for (const char* s :
        {"fis_modified camera_view", "fis_modified light_view", "kmeans_3d camera_view", "kmeans_3d light_view"})
-    EXPECT_EQ(count(n, std::string("data-series=\"") + s + "\""), 1u) << s;
-  EXPECT_EQ(count(n, "<circle class=\"point\""), 4u * 3u);
+    EXPECT_EQ(occurrences(n, std::string("data-series=\"") + s + "\""), 1u) << s;
+  EXPECT_EQ(occurrences(n, "<circle class=\"point\""), 4u * 3u);
   EXPECT_NE(n.find("cost \u221d N^1.00 ["), std::string::npos);  // FIS camera filtered sampling
   EXPECT_NE(n.find("cost \u221d N^2.00 ["), std::string::npos);  // the light view's, flagged
-  EXPECT_GE(count(n, "<tr class=\"flagged\">"), 1u);
+  EXPECT_GE(occurrences(n, "<tr class=\"flagged\">"), 1u);
   EXPECT_NE(n.find("<strong>faster</strong>"), std::string::npos);
   EXPECT_NE(n.find("<td>filtered_sampling</td><td class=\"growth\">cost \u221d N^2.00"), std::string::npos);
   EXPECT_NE(n.find("fit(s) exclude the growth"), std::string::npos);
@@ -155,9 +155,9 @@ TEST(DashboardPage, ScalingSectionDrawsEachSweepAxisWithItsFits) {
   const std::string g = between(html, "id=\"sweep2\"", "</section>");
   EXPECT_NE(g.find("GPU &lt;&amp;&gt; &quot;B&quot;"), std::string::npos) << "escaped";
   EXPECT_EQ(html.find("GPU <&>"), std::string::npos);
-  EXPECT_EQ(count(g, "<circle class=\"point\""), 4u * 2u) << "gamma = 0 is off the log axis";
+  EXPECT_EQ(occurrences(g, "<circle class=\"point\""), 4u * 2u) << "gamma = 0 is off the log axis";
   EXPECT_NE(g.find("<th>pdf-sharpness=0 *</th>"), std::string::npos) << "but in the table";
-  EXPECT_EQ(count(between(g, "class=\"sweep-totals\"", "</table>"), "<tr>"), 1u + 4u);
+  EXPECT_EQ(occurrences(between(g, "class=\"sweep-totals\"", "</table>"), "<tr>"), 1u + 4u);
   EXPECT_NE(g.find("class=\"claims\""), std::string::npos);
   EXPECT_NE(g.find("<td>pdf_independence</td>"), std::string::npos);
   EXPECT_NE(g.find("does not hold"), std::string::npos);
@@ -177,14 +177,14 @@ TEST(DashboardPage, AnIncompleteSweepIsMarkedAndStillDrawn) {
   const auto runs = find_sweep_runs(dir.path());
   ASSERT_EQ(runs.size(), 3u);
   const std::string html = scaling_section_html(runs, "results");
-  EXPECT_EQ(count(html, "<section class=\"sweep\""), 3u);
-  EXPECT_EQ(count(html, "class=\"incomplete\""), 2u) << "the heading and the line of one sweep only";
+  EXPECT_EQ(occurrences(html, "<section class=\"sweep\""), 3u);
+  EXPECT_EQ(occurrences(html, "class=\"incomplete\""), 2u) << "the heading and the line of one sweep only";
   const std::string c = between(html, "GPU C", "</section>");
   EXPECT_NE(c.find("<span class=\"incomplete\">incomplete: 2 of 4 points</span></h3>"), std::string::npos) << c;
   EXPECT_NE(c.find("after 2 of 4 points"), std::string::npos) << c;
   EXPECT_NE(c.find("(2 points)"), std::string::npos) << c;
-  EXPECT_EQ(count(c, "class=\"chart loglog\""), 1u);
-  EXPECT_EQ(count(c, "<circle class=\"point\""), 2u * 2u);  // two points of each view's series
+  EXPECT_EQ(occurrences(c, "class=\"chart loglog\""), 1u);
+  EXPECT_EQ(occurrences(c, "<circle class=\"point\""), 2u * 2u);  // two points of each view's series
   EXPECT_NE(c.find("cost \u221d N^"), std::string::npos) << "fitted over the two points";
 }
 
@@ -194,9 +194,9 @@ TEST(DashboardPage, ScalingSectionSaysInOneLineThatThereIsNoSweep) {
                      cli::dashboard_generators(), {});
   const std::string section = between(html, "<section class=\"scaling\"", "</section>");
   ASSERT_FALSE(section.empty());
-  EXPECT_EQ(count(section, "<p"), 1u);
+  EXPECT_EQ(occurrences(section, "<p"), 1u);
   EXPECT_NE(section.find("No sweep JSON"), std::string::npos) << section;
-  EXPECT_EQ(count(section, "<svg"), 0u);
+  EXPECT_EQ(occurrences(section, "<svg"), 0u);
 }
 
 TEST(DashboardPage, TheCommittedSweepsLoadAndEachHasItsScalingSection) {
@@ -207,7 +207,7 @@ TEST(DashboardPage, TheCommittedSweepsLoadAndEachHasItsScalingSection) {
                      cli::dashboard_generators(), sweeps);
   const std::string section = between(html, "<section class=\"scaling\"", "</section>");
   EXPECT_EQ(section.find("No sweep JSON"), std::string::npos);
-  EXPECT_GE(count(html, "<svg"), sweeps.size());
+  EXPECT_GE(occurrences(html, "<svg"), sweeps.size());
   EXPECT_NE(html.find("<code>lavapipe/sweep/vsgls/sweep.json</code>"), std::string::npos);
   // Written before "complete" existed: read as complete, no mark.
   for (const SweepRun& r : sweeps) EXPECT_TRUE(r.model.complete) << r.path;
@@ -266,9 +266,10 @@ TEST(DashboardPage, OpensInHeadlessChromiumWithTheChartsRendered) {
 
   ASSERT_EQ(chromium(browser, "--dump-dom", page, dir / "profile", dir / "dom.html"), 0);
   const std::string dom = read_text(dir / "dom.html");
-  EXPECT_EQ(count(dom, "<svg"), count(read_text(page), "<svg")) << "every chart reached the DOM";
-  EXPECT_EQ(count(dom, "class=\"chart bars paper\""), 2u);
-  EXPECT_GE(count(dom, "<rect class=\"segment\""), 2u * 4u * 6u);  // the paper's bars alone: 4 generators x 6 phases
+  EXPECT_EQ(occurrences(dom, "<svg"), occurrences(read_text(page), "<svg")) << "every chart reached the DOM";
+  EXPECT_EQ(occurrences(dom, "class=\"chart bars paper\""), 2u);
+  EXPECT_GE(occurrences(dom, "<rect class=\"segment\""),
+            2u * 4u * 6u);  // the paper's bars alone: 4 generators x 6 phases
 
   const fs::path shot = dir / "shot.png";
   ASSERT_EQ(chromium(browser, "--window-size=1000,900 --screenshot=" + shot.string(), page, dir / "profile", dir / "shot.log"), 0);
@@ -306,14 +307,14 @@ TEST(DashboardPage, OpensInHeadlessChromiumWithTheScalingSectionRendered) {
   EXPECT_NE(made.output.find("(0 table runs, 2 sweep files)"), std::string::npos) << made.output;
   const fs::path page = dir / "site/index.html";
   const std::string html = read_text(page);
-  ASSERT_EQ(count(html, "class=\"chart loglog\""), 2u);
+  ASSERT_EQ(occurrences(html, "class=\"chart loglog\""), 2u);
 
   ASSERT_EQ(chromium(browser, "--dump-dom", page, dir / "profile", dir / "dom.html"), 0);
   const std::string dom = read_text(dir / "dom.html");
-  EXPECT_EQ(count(dom, "class=\"chart loglog\""), 2u) << "every chart reached the DOM";
-  EXPECT_EQ(count(dom, "<g class=\"series\""), count(html, "<g class=\"series\""));
-  EXPECT_EQ(count(dom, "<tr class=\"flagged\">"), count(html, "<tr class=\"flagged\">"));
-  EXPECT_GE(count(dom, "<tr class=\"flagged\">"), 1u);
+  EXPECT_EQ(occurrences(dom, "class=\"chart loglog\""), 2u) << "every chart reached the DOM";
+  EXPECT_EQ(occurrences(dom, "<g class=\"series\""), occurrences(html, "<g class=\"series\""));
+  EXPECT_EQ(occurrences(dom, "<tr class=\"flagged\">"), occurrences(html, "<tr class=\"flagged\">"));
+  EXPECT_GE(occurrences(dom, "<tr class=\"flagged\">"), 1u);
 
   const fs::path shot = dir / "shot.png";
   ASSERT_EQ(chromium(browser, "--window-size=1000,1200 --screenshot=" + shot.string(), page, dir / "profile",

@@ -27,7 +27,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using json = nlohmann::json;
-const fs::path kSource = VSGL_SOURCE_DIR;
+using test::kSource;
 
 std::vector<fs::path> committed_devices_files() {
   std::vector<fs::path> files;

@@ -11,7 +11,7 @@
 namespace vsgl {
 namespace {
 
-bool contains(const std::vector<const char*>& names, const char* name) {
+bool lists(const std::vector<const char*>& names, const char* name) {
   for (const char* n : names)
     if (std::strcmp(n, name) == 0) return true;
   return false;
@@ -23,14 +23,14 @@ TEST(ExtensionChoice, PortabilityEnumerationOnlyWhereTheLoaderListsIt) {
       choose_instance_extensions({"VK_KHR_surface", VK_EXT_DEBUG_UTILS_EXTENSION_NAME, "VK_KHR_xcb_surface"});
   EXPECT_FALSE(plain.portability_enumeration);
   EXPECT_EQ(plain.flags, 0u);
-  EXPECT_FALSE(contains(plain.extensions, VK_KHR_PORTABILITY_ENUMERATION_EXTENSION_NAME));
+  EXPECT_FALSE(lists(plain.extensions, VK_KHR_PORTABILITY_ENUMERATION_EXTENSION_NAME));
 
   // A loader that lists it (Debian 12's, the Vulkan SDK's on macOS): the extension and the flag together.
   const InstanceExtensionChoice portable = choose_instance_extensions(
       {"VK_KHR_surface", VK_KHR_PORTABILITY_ENUMERATION_EXTENSION_NAME, VK_EXT_DEBUG_UTILS_EXTENSION_NAME});
   EXPECT_TRUE(portable.portability_enumeration);
   EXPECT_EQ(portable.flags, static_cast<VkInstanceCreateFlags>(VK_INSTANCE_CREATE_ENUMERATE_PORTABILITY_BIT_KHR));
-  EXPECT_TRUE(contains(portable.extensions, VK_KHR_PORTABILITY_ENUMERATION_EXTENSION_NAME));
+  EXPECT_TRUE(lists(portable.extensions, VK_KHR_PORTABILITY_ENUMERATION_EXTENSION_NAME));
 }
 
 TEST(ExtensionChoice, DebugUtilsOnlyWhereListedAndNothingElseEnabled) {

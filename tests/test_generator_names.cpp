@@ -12,11 +12,12 @@
 #include <vector>
 
 #include "harness/generators/generator_registry.hpp"
+#include "test_support.hpp"
 
 namespace vsgl {
 namespace {
 
-const std::filesystem::path kSource = VSGL_SOURCE_DIR;
+using test::kSource;
 
 TEST(GeneratorNames, NoSourceFileOutsideTheIdsSpellsAGeneratorIdAsALiteral) {
   std::string ids;

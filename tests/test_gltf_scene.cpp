@@ -28,7 +28,7 @@ namespace vsgl {
 namespace {
 
 namespace fs = std::filesystem;
-const fs::path kModels = "/usr/share/assimp/models/glTF2";
+const fs::path kGltfModels = "/usr/share/assimp/models/glTF2";
 
 using test::input_error;
 
@@ -59,7 +59,7 @@ struct RoomOptions {
 // A closed 4 x 3 x 4 m room seen from inside: the floor (y = 0) carries a 16x16 checker texture of
 // 8-texel squares with texture coordinates (x + 2) / 2, (z + 2) / 2, so its squares are 1 m; walls
 // and ceiling are grey. A perspective camera and a KHR_lights_punctual spot under the ceiling.
-fs::path write_room(const fs::path& dir, const RoomOptions& opt = {}) {
+fs::path write_gltf_room(const fs::path& dir, const RoomOptions& opt = {}) {
   struct Face {
     glm::vec3 centre, eu, ev;  // cross(eu, ev) points into the room
   };
@@ -165,9 +165,9 @@ glm::vec3 linear_rgb(const uint8_t (&c)[3]) {
 // ---- Import (no device) --------------------------------------------------------------------------
 
 TEST(GltfImport, TexturedBoxIsTheSameInEveryContainer) {
-  const GltfImport glb = import_gltf(kModels / "BoxTextured-glTF-Binary/BoxTextured.glb");
-  const GltfImport embedded = import_gltf(kModels / "BoxTextured-glTF-Embedded/BoxTextured.gltf");
-  const GltfImport external = import_gltf(kModels / "BoxTextured-glTF/BoxTextured.gltf");
+  const GltfImport glb = import_gltf(kGltfModels / "BoxTextured-glTF-Binary/BoxTextured.glb");
+  const GltfImport embedded = import_gltf(kGltfModels / "BoxTextured-glTF-Embedded/BoxTextured.gltf");
+  const GltfImport external = import_gltf(kGltfModels / "BoxTextured-glTF/BoxTextured.gltf");
   for (const GltfImport* g : {&glb, &embedded, &external}) {
     EXPECT_EQ(g->triangles, 12u);
     EXPECT_EQ(g->scene.name, "BoxTextured");
@@ -191,7 +191,7 @@ TEST(GltfImport, TexturedBoxIsTheSameInEveryContainer) {
 }
 
 TEST(GltfImport, EngineWithManyNodesKeepsItsTransformsAndCamera) {
-  const GltfImport engine = import_gltf(kModels / "2CylinderEngine-glTF-Binary/2CylinderEngine.glb");
+  const GltfImport engine = import_gltf(kGltfModels / "2CylinderEngine-glTF-Binary/2CylinderEngine.glb");
   EXPECT_EQ(engine.triangles, 121496u);  // every TRIANGLES primitive of the default scene's 82 nodes
   EXPECT_EQ(engine.scene.materials.size(), 34u);
   EXPECT_NE(engine.camera_source.find("the file's camera 0"), std::string::npos) << engine.camera_source;
@@ -210,26 +210,28 @@ TEST(GltfImport, EngineWithManyNodesKeepsItsTransformsAndCamera) {
 
 TEST(GltfImport, BrokenSampleFilesGiveTheirExpectedOutcome) {
   // Every index of one triangle points past the 24 vertices.
-  const std::string range = input_error([] { import_gltf(kModels / "IndexOutOfRange/IndexOutOfRange.gltf"); });
+  const std::string range = input_error([] { import_gltf(kGltfModels / "IndexOutOfRange/IndexOutOfRange.gltf"); });
   EXPECT_NE(range.find("IndexOutOfRange.gltf"), std::string::npos) << range;
   EXPECT_NE(range.find("out of range"), std::string::npos) << range;
-  EXPECT_NE(input_error([] { import_gltf(kModels / "IndexOutOfRange/AllIndicesOutOfRange.gltf"); }).find("out of range"),
-            std::string::npos);
+  EXPECT_NE(
+      input_error([] { import_gltf(kGltfModels / "IndexOutOfRange/AllIndicesOutOfRange.gltf"); }).find("out of range"),
+      std::string::npos);
   // The .bin the file names is not there.
-  const std::string missing = input_error([] { import_gltf(kModels / "MissingBin/BoxTextured.gltf"); });
+  const std::string missing = input_error([] { import_gltf(kGltfModels / "MissingBin/BoxTextured.gltf"); });
   EXPECT_NE(missing.find("MissingBin/BoxTextured.gltf"), std::string::npos) << missing;
   EXPECT_NE(missing.find("BoxTextured0.bin"), std::string::npos) << missing;
   // Positions of +-infinity.
-  const std::string inf = input_error([] { import_gltf(kModels / "BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb"); });
+  const std::string inf =
+      input_error([] { import_gltf(kGltfModels / "BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb"); });
   EXPECT_NE(inf.find("not finite"), std::string::npos) << inf;
   EXPECT_NE(inf.find("POSITION"), std::string::npos) << inf;
   // 35 vertices or 35 indices of TRIANGLES: not a whole number of triangles.
-  const std::string arrays = input_error([] { import_gltf(kModels / "IncorrectVertexArrays/Cube.gltf"); });
+  const std::string arrays = input_error([] { import_gltf(kGltfModels / "IncorrectVertexArrays/Cube.gltf"); });
   EXPECT_NE(arrays.find("35"), std::string::npos) << arrays;
   EXPECT_NE(arrays.find("whole number of triangles"), std::string::npos) << arrays;
   // glTF 1.0, as JSON and as a version-1 binary container.
   for (const char* f : {"BoxTextured-glTF/BoxTextured.gltf", "BoxTextured-glTF-Binary/BoxTextured.glb"}) {
-    const std::string v1 = input_error([&] { import_gltf(kModels.parent_path() / "glTF" / f); });
+    const std::string v1 = input_error([&] { import_gltf(kGltfModels.parent_path() / "glTF" / f); });
     EXPECT_NE(v1.find("glTF 1.0"), std::string::npos) << v1;
     EXPECT_NE(v1.find("only glTF 2.0"), std::string::npos) << v1;
   }
@@ -262,7 +264,7 @@ TEST(GltfImport, AttributeWithAMissingAccessorIsAnError) {
 
 TEST(GltfImport, BadNormalsAreRepairedAndSaidSo) {
   // BoxBadNormals: zero normals and normals of length 0.1; the box itself is fine.
-  const GltfImport box = import_gltf(kModels / "BoxBadNormals-glTF-Binary/BoxBadNormals.glb");
+  const GltfImport box = import_gltf(kGltfModels / "BoxBadNormals-glTF-Binary/BoxBadNormals.glb");
   EXPECT_EQ(box.triangles, 12u);
   bool replaced = false, normalized = false;
   for (const std::string& n : box.notes) {
@@ -288,14 +290,14 @@ TEST(GltfImport, FilesTheTestBreaksNameTheProblem) {
   RoomOptions bad;
   bad.indices_out_of_range = true;
   bad.mesh_name = "r\xC3\xBCm\n";
-  const std::string range = input_error([&] { import_gltf(write_room(dir, bad)); });
+  const std::string range = input_error([&] { import_gltf(write_gltf_room(dir, bad)); });
   EXPECT_NE(range.find("'r\\xc3\\xbcm\\x0a'"), std::string::npos) << range;
   EXPECT_NE(range.find("99"), std::string::npos) << range;
   // The texture's PNG is not there.
   RoomOptions no_png;
   no_png.missing_texture = true;
   fs::remove(dir / "checker.png");
-  const std::string tex = input_error([&] { import_gltf(write_room(dir, no_png)); });
+  const std::string tex = input_error([&] { import_gltf(write_gltf_room(dir, no_png)); });
   EXPECT_NE(tex.find("checker"), std::string::npos) << tex;
   // A file that is not glTF, and one that is missing.
   std::ofstream(dir / "junk.gltf") << "not json";
@@ -310,14 +312,14 @@ TEST(GltfImport, FilesTheTestBreaksNameTheProblem) {
   // --camera naming a camera the file does not have lists the ones it has.
   GltfCameraChoice cam;
   cam.camera = "nope";
-  const std::string no_cam = input_error([&] { import_gltf(write_room(dir), cam); });
+  const std::string no_cam = input_error([&] { import_gltf(write_gltf_room(dir), cam); });
   EXPECT_NE(no_cam.find("0 'view'"), std::string::npos) << no_cam;
 }
 
 TEST(GltfImport, CameraAndLightChoices) {
   const test::TempDir dir_temp("gltf_choices");
   const fs::path& dir = dir_temp.path();
-  const fs::path room = write_room(dir);
+  const fs::path room = write_gltf_room(dir);
   const GltfImport by_file = import_gltf(room);
   EXPECT_NE(by_file.camera_source.find("camera 0 'view'"), std::string::npos) << by_file.camera_source;
   EXPECT_NE(by_file.light_source.find("spot light 0 'spot'"), std::string::npos) << by_file.light_source;
@@ -347,7 +349,7 @@ TEST(GltfImport, CameraAndLightChoices) {
   // A point light is no spot: the automatic one is used, and the message says why.
   RoomOptions point;
   point.spot_light = false;
-  const GltfImport auto_light = import_gltf(write_room(dir, point));
+  const GltfImport auto_light = import_gltf(write_gltf_room(dir, point));
   EXPECT_NE(auto_light.light_source.find("point/directional"), std::string::npos) << auto_light.light_source;
 
   // Frame 0 of a sequence is the static scene; later frames move camera and light.
@@ -373,7 +375,7 @@ class GltfRecordTest : public test::GpuTest {
 TEST_F(GltfRecordTest, RoomGBufferAndRsmAreExact) {
   const test::TempDir dir_temp("gltf_room");
   const fs::path& dir = dir_temp.path();
-  const GltfImport room = import_gltf(write_room(dir));
+  const GltfImport room = import_gltf(write_gltf_room(dir));
   ASSERT_EQ(room.triangles, 12u);
   const Scene& scene = room.scene;
   const Capture cap = record(scene, RecordSizes{96, 64, 64});
@@ -446,7 +448,7 @@ TEST_F(GltfRecordTest, RoomGBufferAndRsmAreExact) {
 TEST_F(GltfRecordTest, SampleModelsRecordWithTheirTextures) {
   // The textured box, framed automatically: the logo's texels differ, so the diffuse channel is
   // not constant.
-  const GltfImport box = import_gltf(kModels / "BoxTextured-glTF-Binary/BoxTextured.glb");
+  const GltfImport box = import_gltf(kGltfModels / "BoxTextured-glTF-Binary/BoxTextured.glb");
   const Capture b = record(box.scene, RecordSizes{64, 48, 32});
   std::size_t valid = 0;
   float lo = 1.0f, hi = 0.0f;
@@ -463,7 +465,7 @@ TEST_F(GltfRecordTest, SampleModelsRecordWithTheirTextures) {
   EXPECT_GT(lit, 10u) << "the automatic spot reaches the box";
 
   // The engine from its own camera.
-  const GltfImport engine = import_gltf(kModels / "2CylinderEngine-glTF-Binary/2CylinderEngine.glb");
+  const GltfImport engine = import_gltf(kGltfModels / "2CylinderEngine-glTF-Binary/2CylinderEngine.glb");
   const Capture e = record(engine.scene, RecordSizes{64, 48, 32});
   std::size_t seen = 0;
   for (float v : e.gbuffer.planes[kValid]) seen += v != 0.0f ? 1 : 0;
@@ -473,7 +475,7 @@ TEST_F(GltfRecordTest, SampleModelsRecordWithTheirTextures) {
 TEST(GltfRecordCli, RecordsTheRoomWithItsSourceInTheSidecar) {
   const test::TempDir dir_temp("gltf_cli");
   const fs::path& dir = dir_temp.path();
-  const fs::path room = write_room(dir);
+  const fs::path room = write_gltf_room(dir);
   const auto r = test::run_cli("record --gltf " + room.string() + " --out " + (dir / "cap").string() +
                                " --gbuffer 48x32 --rsm 32");
   ASSERT_EQ(r.exit_code, 0) << r.output;
@@ -523,7 +525,7 @@ TEST(GltfRecordCli, RecordsTheRoomWithItsSourceInTheSidecar) {
   EXPECT_FALSE(fs::exists(dir / "blind" / "capture.json"));
   // The textured box alone: a convex object lights nothing of itself (all-zero BRSM PDF), which
   // is refused with the way out; with --ground it records.
-  const std::string box = (kModels / "BoxTextured-glTF-Binary/BoxTextured.glb").string();
+  const std::string box = (kGltfModels / "BoxTextured-glTF-Binary/BoxTextured.glb").string();
   const auto lone = test::run_cli("record --gltf " + box + " --out " + (dir / "box").string() + " --gbuffer 48x32 --rsm 32");
   EXPECT_EQ(lone.exit_code, 3) << lone.output;
   EXPECT_NE(lone.output.find("--ground"), std::string::npos) << lone.output;
@@ -533,7 +535,7 @@ TEST(GltfRecordCli, RecordsTheRoomWithItsSourceInTheSidecar) {
   EXPECT_EQ(grounded.exit_code, 0) << grounded.output;
   EXPECT_NE(grounded.output.find("--ground: a grey floor"), std::string::npos) << grounded.output;
   // A broken file: exit 3 with the file named.
-  const auto broken = test::run_cli("record --gltf " + (kModels / "MissingBin/BoxTextured.gltf").string() +
+  const auto broken = test::run_cli("record --gltf " + (kGltfModels / "MissingBin/BoxTextured.gltf").string() +
                                     " --out " + (dir / "x").string());
   EXPECT_EQ(broken.exit_code, 3) << broken.output;
   EXPECT_NE(broken.output.find("BoxTextured0.bin"), std::string::npos) << broken.output;

@@ -14,6 +14,7 @@
 
 #include "tiny_capture.hpp"
 #include "harness/vk/buffer.hpp"
+#include "kernels/include/interface/testing.h"
 #include "harness/vk/command_stream.hpp"
 #include "harness/vk/compute_pipeline.hpp"
 #include "harness/vk/device.hpp"
@@ -24,10 +25,7 @@
 namespace vsgl {
 namespace {
 
-struct WorkloadPush {  // kernels/test_workload.comp
-  uint32_t count;
-  uint32_t iterations;
-};
+using WorkloadPush = gpu::TestWorkloadPush;  // kernels/test_workload.comp
 
 GpuContext& gpu_av_context() {
   static std::unique_ptr<GpuContext> ctx = [] {

@@ -26,14 +26,14 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 using test::read_json;
 
-const fs::path kSource = VSGL_SOURCE_DIR;
+using test::kSource;
 
 bool mentions(const std::vector<std::string>& problems, const std::string& text) {
   return std::any_of(problems.begin(), problems.end(),
                      [&](const std::string& p) { return p.find(text) != std::string::npos; });
 }
 
-std::string joined(const std::vector<std::string>& lines) {
+std::string lines_joined(const std::vector<std::string>& lines) {
   std::string out;
   for (const auto& l : lines) out += "\n  " + l;
   return out;
@@ -45,7 +45,7 @@ TEST(JsonSchemaSubset, EveryCommittedSchemaUsesOnlyWhatTheValidatorEnforces) {
     if (entry.path().extension() != ".json") continue;
     ++schemas;
     const auto problems = schema_subset_problems(read_json(entry.path()));
-    EXPECT_TRUE(problems.empty()) << entry.path() << ":" << joined(problems);
+    EXPECT_TRUE(problems.empty()) << entry.path() << ":" << lines_joined(problems);
   }
   EXPECT_GE(schemas, 1);
 }
@@ -55,7 +55,7 @@ TEST(JsonSchemaSubset, FindsAnUnsupportedKeywordThreeLevelsDown) {
     "type": "object",
     "properties": {"a": {"type": "array", "items": {"type": "object", "properties": {"b": {"type": "string", "pattern": "x"}}}}}})");
   const auto problems = schema_subset_problems(schema);
-  ASSERT_EQ(problems.size(), 1u) << joined(problems);
+  ASSERT_EQ(problems.size(), 1u) << lines_joined(problems);
   EXPECT_EQ(problems[0].rfind("/properties/a/items/properties/b/pattern:", 0), 0u) << problems[0];
   // The validator refuses the schema even for a document that never reaches that subschema.
   EXPECT_THROW(validate_against_schema(json::object(), schema), std::invalid_argument);
@@ -81,8 +81,8 @@ TEST(JsonSchemaSubset, WalksUnderKeywordsOutsideTheSubsetAndChecksValues) {
   EXPECT_TRUE(mentions(problems, "/properties/h/additionalProperties/$defs: $defs only at the root"));
   EXPECT_TRUE(mentions(problems, "/properties/i/items: must be one schema"));
   EXPECT_TRUE(mentions(problems, "/properties/j/required:"));
-  EXPECT_FALSE(mentions(problems, "/$defs/ok")) << joined(problems);
-  EXPECT_EQ(problems.size(), 11u) << joined(problems);
+  EXPECT_FALSE(mentions(problems, "/$defs/ok")) << lines_joined(problems);
+  EXPECT_EQ(problems.size(), 11u) << lines_joined(problems);
   EXPECT_TRUE(schema_subset_problems(json::parse(R"({"$ref": "#/$defs/a", "$defs": {"a": true}})")).empty());
 }
 
@@ -155,7 +155,7 @@ TEST(CommittedResults, EveryJsonFileConformsToItsSchemaOrIsOfAKindWithoutOne) {
       continue;
     }
     const auto errors = validate_against_schema(doc, schemas.at(schema));
-    EXPECT_TRUE(errors.empty()) << "against " << schema << ":" << joined(errors);
+    EXPECT_TRUE(errors.empty()) << "against " << schema << ":" << lines_joined(errors);
     ++validated;
   }
   for (const auto& [rel, why] : exceptions.items()) EXPECT_TRUE(seen.count(rel)) << rel << ": listed but not committed";

@@ -95,7 +95,7 @@ std::vector<std::string> layering_violations(const fs::path& root, const LayerTa
   return out;
 }
 
-std::string joined(const std::vector<std::string>& lines) {
+std::string joined_lines(const std::vector<std::string>& lines) {
   std::string s;
   for (const auto& l : lines) s += "  " + l + "\n";
   return s;
@@ -125,7 +125,7 @@ TEST(Layering, NoIncludePointsUpTheLayers) {
   const LayerTable table = parse_layer_table(in);
   ASSERT_GE(table.size(), 8u);
   const auto v = layering_violations(VSGL_SOURCE_DIR, table);
-  EXPECT_TRUE(v.empty()) << v.size() << " include(s) break the layering:\n" << joined(v);
+  EXPECT_TRUE(v.empty()) << v.size() << " include(s) break the layering:\n" << joined_lines(v);
 }
 
 // The check itself can fail: a tree with one include of each forbidden kind.
@@ -148,8 +148,8 @@ TEST(Layering, FlagsUpwardSidewaysDetailAndTestingIncludes) {
   write("tests/t.cpp", "#include \"harness/generators/testing/t.hpp\"\n#include \"harness/vk/fine.hpp\"\n");
   write("harness/stray.cpp", "\n");
   const auto v = layering_violations(root, table);
-  ASSERT_EQ(v.size(), 5u) << joined(v);
-  const std::string all = joined(v);
+  ASSERT_EQ(v.size(), 5u) << joined_lines(v);
+  const std::string all = joined_lines(v);
   EXPECT_NE(all.find("harness/core/up.cpp:1: layer 'core' includes 'vk'"), std::string::npos) << all;
   EXPECT_NE(all.find("harness/math/side.cpp:1: layer 'math' includes 'vk'"), std::string::npos) << all;
   EXPECT_NE(all.find("includes the detail/ of layer 'vk'"), std::string::npos) << all;

@@ -84,7 +84,7 @@ std::string xml_problem(const std::string& s, std::string* root = nullptr) {
   return elements == 0 ? "no element" : "";
 }
 
-std::size_t count(const std::string& haystack, const std::string& needle) {
+std::size_t occurrences_of(const std::string& haystack, const std::string& needle) {
   std::size_t n = 0;
   for (std::size_t at = haystack.find(needle); at != std::string::npos; at = haystack.find(needle, at + 1)) ++n;
   return n;
@@ -105,16 +105,16 @@ TEST(LogLogPlot, WellFormedWithALineAndABandPerSeries) {
   EXPECT_EQ(xml_problem(svg, &root), "");
   EXPECT_EQ(root, "svg");
   EXPECT_EQ(svg.rfind("<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"chart loglog\"", 0), 0u);
-  EXPECT_EQ(count(svg, "<g class=\"series\""), 2u);
-  EXPECT_EQ(count(svg, "<path class=\"line\""), 2u);
-  EXPECT_EQ(count(svg, "<path class=\"band\""), 2u);
-  EXPECT_EQ(count(svg, "<circle class=\"point\""), 7u);
-  EXPECT_EQ(count(svg, "class=\"whisker\""), 0u);
+  EXPECT_EQ(occurrences_of(svg, "<g class=\"series\""), 2u);
+  EXPECT_EQ(occurrences_of(svg, "<path class=\"line\""), 2u);
+  EXPECT_EQ(occurrences_of(svg, "<path class=\"band\""), 2u);
+  EXPECT_EQ(occurrences_of(svg, "<circle class=\"point\""), 7u);
+  EXPECT_EQ(occurrences_of(svg, "class=\"whisker\""), 0u);
   // A line per series through its points in x order: M then one L per further point.
   const std::regex line_re(R"re(<path class="line" d="M[0-9.]+,[0-9.]+((?: L[0-9.]+,[0-9.]+)*)")re");
   std::vector<std::size_t> segments;
   for (std::sregex_iterator it(svg.begin(), svg.end(), line_re), end; it != end; ++it)
-    segments.push_back(count((*it)[1].str(), " L"));
+    segments.push_back(occurrences_of((*it)[1].str(), " L"));
   EXPECT_EQ(segments, (std::vector<std::size_t>{2, 3}));
   // The unsorted series is drawn left to right.
   const std::regex xs_re(
@@ -137,20 +137,20 @@ TEST(LogLogPlot, DecadeTicksAxisTitlesAndLegend) {
         << label;
   for (const char* label : {">0.01<", ">0.1<", ">1<", ">10<"})
     EXPECT_NE(svg.find(std::string("class=\"tick y-tick\" text-anchor=\"end\"") + label), std::string::npos) << label;
-  EXPECT_EQ(count(svg, "class=\"tick y-tick\""), 4u);  // three decades: no 2 and 5
+  EXPECT_EQ(occurrences_of(svg, "class=\"tick y-tick\""), 4u);  // three decades: no 2 and 5
   EXPECT_NE(svg.find(">N (lights)</text>"), std::string::npos);
   EXPECT_NE(svg.find("class=\"axis-title y-title\" text-anchor=\"middle\" transform=\"rotate(-90"), std::string::npos);
   EXPECT_NE(svg.find(">Filtered sampling over N</text>"), std::string::npos);
-  EXPECT_EQ(count(svg, "<text x=\"100.0\""), 3u);  // the legend labels, one a row
+  EXPECT_EQ(occurrences_of(svg, "<text x=\"100.0\""), 3u);  // the legend labels, one a row
   EXPECT_NE(svg.find(">fis_tok15</text>"), std::string::npos);
   EXPECT_NE(svg.find(">fis_modified</text>"), std::string::npos);
 }
 
 TEST(LogLogPlot, ReferencePointsAreDrawnApartAndInTheLegend) {
   const std::string svg = loglog_plot_svg(plot(), two_series());
-  EXPECT_EQ(count(svg, "<path class=\"reference\" data-label=\"paper\""), 1u);
+  EXPECT_EQ(occurrences_of(svg, "<path class=\"reference\" data-label=\"paper\""), 1u);
   EXPECT_NE(svg.find("<title>fis_tok15 (paper): x = 100000, 1.7 ms</title>"), std::string::npos);
-  EXPECT_EQ(count(svg, "class=\"legend-reference\""), 1u);
+  EXPECT_EQ(occurrences_of(svg, "class=\"legend-reference\""), 1u);
   EXPECT_NE(svg.find(">fis_tok15: paper</text>"), std::string::npos);
   // A reference outside the data widens the axes to hold it.
   auto far = two_series();
@@ -162,7 +162,7 @@ TEST(LogLogPlot, ReferencePointsAreDrawnApartAndInTheLegend) {
   EXPECT_EQ(wide.find(">100000<"), std::string::npos);
   EXPECT_NE(wide.find(">1000<"), std::string::npos);  // ms, now up to 1000
   EXPECT_NE(wide.find("<title>custom tip</title>"), std::string::npos);
-  EXPECT_EQ(count(wide, "class=\"legend-reference\""), 2u);
+  EXPECT_EQ(occurrences_of(wide, "class=\"legend-reference\""), 2u);
 }
 
 TEST(LogLogPlot, EscapesAllText) {
@@ -182,7 +182,7 @@ TEST(LogLogPlot, EscapesAllText) {
   EXPECT_NE(svg.find("data-series=\"" + escaped + "\""), std::string::npos);
   EXPECT_NE(svg.find("data-label=\"" + escaped + "\""), std::string::npos);
   EXPECT_NE(svg.find(">" + escaped + ": " + escaped + "</text>"), std::string::npos);  // the reference's legend entry
-  EXPECT_GE(count(svg, escaped), 9u);
+  EXPECT_GE(occurrences_of(svg, escaped), 9u);
 }
 
 TEST(LogLogPlot, SameInputSameBytes) {
@@ -198,10 +198,10 @@ TEST(LogLogPlot, SameInputSameBytes) {
 TEST(LogLogPlot, OnePointSeriesGetsAWhiskerInsteadOfALine) {
   const std::string svg = loglog_plot_svg(plot(), {{"single", "", {pt(500, 3)}, {}}});
   EXPECT_EQ(xml_problem(svg), "");
-  EXPECT_EQ(count(svg, "<path class=\"line\""), 0u);
-  EXPECT_EQ(count(svg, "<path class=\"band\""), 0u);
-  EXPECT_EQ(count(svg, "class=\"whisker\""), 1u);
-  EXPECT_EQ(count(svg, "<circle class=\"point\""), 1u);
+  EXPECT_EQ(occurrences_of(svg, "<path class=\"line\""), 0u);
+  EXPECT_EQ(occurrences_of(svg, "<path class=\"band\""), 0u);
+  EXPECT_EQ(occurrences_of(svg, "class=\"whisker\""), 1u);
+  EXPECT_EQ(occurrences_of(svg, "<circle class=\"point\""), 1u);
   EXPECT_NE(svg.find("<title>single: x = 500, median 3 ms (q1 2.7, q3 3.6)</title>"), std::string::npos);
   // A value a decade apart from nothing still gets one full decade on each axis.
   EXPECT_NE(svg.find(">100<"), std::string::npos);

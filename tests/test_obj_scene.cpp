@@ -24,7 +24,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using test::input_error;
-const fs::path kModels = "/usr/share/assimp/models/OBJ";
+const fs::path kObjModels = "/usr/share/assimp/models/OBJ";
 
 fs::path temp_dir(const std::string& name) {
   const fs::path dir = fs::temp_directory_path() / ("vsgl_obj_" + name + "_" + std::to_string(::getpid()));
@@ -79,7 +79,7 @@ std::string room_obj(const std::string& mtllib = "room.mtl") {
          "f 4//6 8//6 7//6 3//6\n";
 }
 
-fs::path write_room(const fs::path& dir) {
+fs::path write_obj_room(const fs::path& dir) {
   write_text(dir / "room.mtl", kRoomMtl);
   write_checker(dir / "checker.png");
   return write_text(dir / "room.obj", room_obj());
@@ -87,7 +87,7 @@ fs::path write_room(const fs::path& dir) {
 
 TEST(ObjImport, QuadRoomMapsItsMaterialsAndTexture) {
   const fs::path dir = temp_dir("room");
-  const GltfImport room = import_obj(write_room(dir));
+  const GltfImport room = import_obj(write_obj_room(dir));
   EXPECT_EQ(room.triangles, 12u) << "six quads, two triangles each";
   EXPECT_EQ(room.bounds_lo, glm::vec3(-2, 0, -2));
   EXPECT_EQ(room.bounds_hi, glm::vec3(2, 3, 2));
@@ -285,31 +285,31 @@ TEST(ObjImport, ModelImportChoosesByExtension) {
   EXPECT_NE(e.find(".obj"), std::string::npos) << e;
   const std::string g = input_error([&] { import_model(write_text(dir / "scene.GLTF", "{}")); });
   EXPECT_NE(g.find("glTF file"), std::string::npos) << "upper-case .GLTF is glTF: " << g;
-  write_room(dir);
+  write_obj_room(dir);
   fs::copy_file(dir / "room.obj", dir / "ROOM.OBJ");
   EXPECT_EQ(import_model(dir / "ROOM.OBJ").triangles, 12u);
   fs::remove_all(dir);
 }
 
 TEST(ObjImport, SampleFiles) {
-  if (!fs::exists(kModels / "box.obj"))
-    GTEST_SKIP() << "Debian's assimp-testmodels is not installed (" << kModels << "): sample OBJ files not imported";
-  const GltfImport box = import_obj(kModels / "box.obj");
+  if (!fs::exists(kObjModels / "box.obj"))
+    GTEST_SKIP() << "Debian's assimp-testmodels is not installed (" << kObjModels << "): sample OBJ files not imported";
+  const GltfImport box = import_obj(kObjModels / "box.obj");
   EXPECT_EQ(box.triangles, 12u);
-  const GltfImport cube = import_obj(kModels / "cube_usemtl.obj");
+  const GltfImport cube = import_obj(kObjModels / "cube_usemtl.obj");
   EXPECT_GE(cube.scene.materials.size(), 3u);
   EXPECT_GT(cube.triangles, 0u);
   std::set<float> ns;
   for (const SceneVertex& v : cube.scene.mesh.vertices) ns.insert(v.roughness);
   EXPECT_GE(ns.size(), 2u) << "several Ns exponents: several roughnesses";
-  const GltfImport concave = import_obj(kModels / "concave_polygon.obj");
+  const GltfImport concave = import_obj(kObjModels / "concave_polygon.obj");
   EXPECT_GT(concave.triangles, 0u);
-  const GltfImport wuson = import_obj(kModels / "WusonOBJ.obj");
+  const GltfImport wuson = import_obj(kObjModels / "WusonOBJ.obj");
   EXPECT_GT(wuson.triangles, 1000u);
   EXPECT_GT(wuson.bounds_hi.y, wuson.bounds_lo.y);
-  const GltfImport spider = import_obj(kModels / "spider.obj");
+  const GltfImport spider = import_obj(kObjModels / "spider.obj");
   EXPECT_GT(spider.scene.textures.size(), 0u) << "spider.mtl's JPEG textures";
-  const std::string e = input_error([&] { import_obj(kModels / "point_cloud.obj"); });
+  const std::string e = input_error([&] { import_obj(kObjModels / "point_cloud.obj"); });
   EXPECT_NE(e.find("has no faces"), std::string::npos) << e;
 }
 
@@ -327,7 +327,7 @@ TEST_F(ObjRecordTest, RoomRecordsAValidCaptureWithABrsmPdf) {
   light.direction = glm::vec3(0.0f, -1.0f, 0.0f);
   light.cone_half_angle_deg = 40.0f;
   light.intensity = glm::vec3(20.0f);
-  const GltfImport room = import_obj(write_room(dir), cam, light);
+  const GltfImport room = import_obj(write_obj_room(dir), cam, light);
   record_capture(device(), room.scene, RecordSizes{48, 32, 32}, 0, 1, dir / "capture");
   const Capture cap = load_capture(dir / "capture");
   ASSERT_TRUE(cap.rsm.has_pdf);
@@ -351,7 +351,7 @@ TEST_F(ObjRecordTest, RoomRecordsAValidCaptureWithABrsmPdf) {
 // its file, and writes nothing.
 TEST(ObjRecordCli, HandWrittenRoomRecordsAndVerifiesAndBrokenVariantsWriteNothing) {
   const fs::path dir = temp_dir("cli");
-  const fs::path room = write_room(dir);
+  const fs::path room = write_obj_room(dir);
   const std::string view =
       " --eye 0,2.4,1.8 --look-at 0,0,-0.4 --light-pos 0.3,2.9,-0.2 --light-dir 0,-1,0 --cone 40 "
       "--intensity 20 --gbuffer 48x32 --rsm 32";

@@ -13,14 +13,15 @@
 #include "harness/sweep/sweep_document.hpp"
 #include "harness/sweep/sweep_markdown.hpp"
 #include "harness/sweep/sweep_plots.hpp"
+#include "test_support.hpp"
 
 namespace vsgl {
 namespace {
 
-const std::filesystem::path kSource = VSGL_SOURCE_DIR;
+using test::kSource;
 
 // Seven rounds around `ms`, ±1 %: noise for the bootstrap, far below the 10 % band.
-std::vector<double> rounds(double ms) {
+std::vector<double> seven_rounds(double ms) {
   return {ms * 0.99, ms * 1.0, ms * 1.01, ms * 0.995, ms * 1.005, ms * 0.998, ms * 1.002};
 }
 
@@ -59,8 +60,8 @@ MeasuredSweep sweep_of(const std::string& spec, const TotalFn& total) {
         c.view = view;
         c.phases = {"only"};
         c.dispatch_count = 2;
-        c.phase_ms = {rounds(total(g, view, v.value))};
-        c.total_ms = rounds(total(g, view, v.value));
+        c.phase_ms = {seven_rounds(total(g, view, v.value))};
+        c.total_ms = seven_rounds(total(g, view, v.value));
         p.timing.cases.push_back(c);
       }
     p.timing.repetitions = 7;

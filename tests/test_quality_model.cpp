@@ -11,12 +11,13 @@
 #include "harness/core/error.hpp"
 #include "harness/core/json_reader.hpp"
 #include "harness/quality/quality_report.hpp"
+#include "test_support.hpp"
 
 namespace vsgl {
 namespace {
 
 namespace fs = std::filesystem;
-const fs::path kSource = VSGL_SOURCE_DIR;
+using test::kSource;
 
 std::vector<fs::path> committed_reports() {
   std::vector<fs::path> files;

@@ -16,13 +16,14 @@
 #include <vector>
 
 #include "harness/core/json_reader.hpp"
+#include "test_support.hpp"
 
 namespace vsgl {
 namespace {
 
 namespace fs = std::filesystem;
 using ojson = nlohmann::ordered_json;
-const fs::path kSource = VSGL_SOURCE_DIR;
+using test::kSource;
 
 struct ClaimColumn {
   fs::path dir;                     // results/lavapipe or results/lavapipe/stand-ins

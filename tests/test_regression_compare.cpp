@@ -34,8 +34,8 @@ ojson stats(const std::vector<double>& samples) {
 }
 
 // A table JSON with only what `compare` reads (the rest of the schema is not needed for it).
-ojson synthetic_table(int table, const SampleSource& source, const std::string& device = "Test GPU",
-                      const std::string& hash = "fnv1a64:0000000000000001", int K = 1) {
+ojson synthetic_table_json(int table, const SampleSource& source, const std::string& device = "Test GPU",
+                           const std::string& hash = "fnv1a64:0000000000000001", int K = 1) {
   ojson gens = ojson::object();
   for (const std::string g : {"fis_tok15", "fis_modified"}) {
     ojson views = ojson::object();
@@ -67,7 +67,7 @@ ojson synthetic_table(int table, const SampleSource& source, const std::string& 
 }
 
 // n samples around `median` with relative noise `noise`, reproducible per row.
-SampleSource noisy(double scale, double noise, std::size_t n = 20, unsigned seed = 1) {
+SampleSource noisy_source(double scale, double noise, std::size_t n = 20, unsigned seed = 1) {
   return [=](const std::string& g, const std::string& view, const std::string& phase) {
     std::mt19937 rng(seed + static_cast<unsigned>(std::hash<std::string>{}(g + view + phase) % 1000));
     std::uniform_real_distribution<double> u(-noise, noise);
@@ -91,7 +91,7 @@ struct TempDir {
 };
 
 TEST(CompareRuns, RefusesTheTableOfAUserCaptureClearly) {
-  ojson doc = synthetic_table(1, noisy(1.0, 0.01));
+  ojson doc = synthetic_table_json(1, noisy_source(1.0, 0.01));
   doc["table"] = nullptr;
   doc["scene"] = "Sponza";
   try {
@@ -104,7 +104,7 @@ TEST(CompareRuns, RefusesTheTableOfAUserCaptureClearly) {
 }
 
 TEST(CompareRuns, IdenticalRunsAreSameEverywhere) {
-  const ojson doc = synthetic_table(1, noisy(1.0, 0.01));
+  const ojson doc = synthetic_table_json(1, noisy_source(1.0, 0.01));
   const RunComparison c = compare_runs(run_of(doc), run_of(doc), {});
   // 2 generators x (2 views x (3 phases + total) + total)
   ASSERT_EQ(c.rows.size(), 18u);
@@ -114,14 +114,14 @@ TEST(CompareRuns, IdenticalRunsAreSameEverywhere) {
 }
 
 TEST(CompareRuns, TenPercentShiftIsSlowerEverywhere) {
-  const RunComparison c = compare_runs(run_of(synthetic_table(1, noisy(1.0, 0.01))),
-                                       run_of(synthetic_table(1, noisy(1.10, 0.01, 20, 7))), {});
+  const RunComparison c = compare_runs(run_of(synthetic_table_json(1, noisy_source(1.0, 0.01))),
+                                       run_of(synthetic_table_json(1, noisy_source(1.10, 0.01, 20, 7))), {});
   EXPECT_EQ(c.count(Verdict::kSlower), c.rows.size());
   EXPECT_NEAR(c.geomean_ratio, 1.10, 0.01);
   EXPECT_NEAR(c.geomean_ratio_totals, 1.10, 0.01);
   // And the other way round.
-  const RunComparison back = compare_runs(run_of(synthetic_table(1, noisy(1.10, 0.01, 20, 7))),
-                                          run_of(synthetic_table(1, noisy(1.0, 0.01))), {});
+  const RunComparison back = compare_runs(run_of(synthetic_table_json(1, noisy_source(1.10, 0.01, 20, 7))),
+                                          run_of(synthetic_table_json(1, noisy_source(1.0, 0.01))), {});
   EXPECT_EQ(back.count(Verdict::kFaster), back.rows.size());
 }
 
@@ -134,7 +134,8 @@ TEST(CompareRuns, HeavyOverlapIsAmbiguous) {
       return s;
     };
   };
-  const RunComparison c = compare_runs(run_of(synthetic_table(1, spread(0.0))), run_of(synthetic_table(1, spread(0.06))), {});
+  const RunComparison c =
+      compare_runs(run_of(synthetic_table_json(1, spread(0.0))), run_of(synthetic_table_json(1, spread(0.06))), {});
   for (const auto& r : c.rows) {
     if (r.name.find("/total") != std::string::npos) continue;  // totals add up the shift of three phases
     EXPECT_EQ(r.result.verdict, Verdict::kAmbiguous) << r.name << " p = " << r.result.p_value;
@@ -144,16 +145,18 @@ TEST(CompareRuns, HeavyOverlapIsAmbiguous) {
 }
 
 TEST(CompareRuns, TooFewSamplesAreAmbiguous) {
-  const RunComparison c = compare_runs(run_of(synthetic_table(1, noisy(1.0, 0.01, 3))),
-                                       run_of(synthetic_table(1, noisy(2.0, 0.01, 3))), {});
+  const RunComparison c = compare_runs(run_of(synthetic_table_json(1, noisy_source(1.0, 0.01, 3))),
+                                       run_of(synthetic_table_json(1, noisy_source(2.0, 0.01, 3))), {});
   EXPECT_EQ(c.count(Verdict::kAmbiguous), c.rows.size());
   EXPECT_NE(c.rows[0].result.reason.find("too few samples"), std::string::npos);
 }
 
 TEST(CompareRuns, RefusesOtherCapturesAndConfigsUnlessAllowed) {
-  const BenchRun base = run_of(synthetic_table(1, noisy(1.0, 0.01)));
-  const BenchRun other_capture = run_of(synthetic_table(1, noisy(1.0, 0.01), "Test GPU", "fnv1a64:0000000000000002"));
-  const BenchRun other_config = run_of(synthetic_table(1, noisy(1.0, 0.01), "Test GPU", "fnv1a64:0000000000000001", 4));
+  const BenchRun base = run_of(synthetic_table_json(1, noisy_source(1.0, 0.01)));
+  const BenchRun other_capture =
+      run_of(synthetic_table_json(1, noisy_source(1.0, 0.01), "Test GPU", "fnv1a64:0000000000000002"));
+  const BenchRun other_config =
+      run_of(synthetic_table_json(1, noisy_source(1.0, 0.01), "Test GPU", "fnv1a64:0000000000000001", 4));
   try {
     compare_runs(base, other_capture, {});
     ADD_FAILURE() << "different captures were compared";
@@ -173,14 +176,14 @@ TEST(CompareRuns, RefusesOtherCapturesAndConfigsUnlessAllowed) {
   ASSERT_EQ(c.mismatches.size(), 1u);
   EXPECT_NE(comparison_markdown(base, other_capture, c, allow).find("Mismatch allowed"), std::string::npos);
   // Only the timing protocol differs: comparable.
-  ojson longer = synthetic_table(1, noisy(1.0, 0.01));
+  ojson longer = synthetic_table_json(1, noisy_source(1.0, 0.01));
   longer["config"]["timing"]["min_repetitions"] = 50;
   EXPECT_NO_THROW(compare_runs(base, run_of(longer), {}));
 }
 
 TEST(CompareRuns, DifferentDevicesAreComparedAndLabelled) {
-  const BenchRun a = run_of(synthetic_table(1, noisy(1.0, 0.01)));
-  const BenchRun b = run_of(synthetic_table(1, noisy(1.0, 0.01), "Other GPU"));
+  const BenchRun a = run_of(synthetic_table_json(1, noisy_source(1.0, 0.01)));
+  const BenchRun b = run_of(synthetic_table_json(1, noisy_source(1.0, 0.01), "Other GPU"));
   const RunComparison c = compare_runs(a, b, {});
   EXPECT_TRUE(c.different_devices);
   const std::string md = comparison_markdown(a, b, c, {});
@@ -190,18 +193,19 @@ TEST(CompareRuns, DifferentDevicesAreComparedAndLabelled) {
 }
 
 TEST(CompareRuns, RowsOfOneSideOnlyAreListedNotCompared) {
-  ojson fewer = synthetic_table(1, noisy(1.0, 0.01));
+  ojson fewer = synthetic_table_json(1, noisy_source(1.0, 0.01));
   fewer["generators"].erase("fis_tok15");
-  const RunComparison c = compare_runs(run_of(synthetic_table(1, noisy(1.0, 0.01))), run_of(fewer), {});
+  const RunComparison c = compare_runs(run_of(synthetic_table_json(1, noisy_source(1.0, 0.01))), run_of(fewer), {});
   EXPECT_EQ(c.rows.size(), 9u);
   EXPECT_EQ(c.only_in_base.size(), 9u);
   // Nothing in common at all is an error.
-  EXPECT_THROW(compare_runs(run_of(synthetic_table(1, noisy(1.0, 0.01))), run_of(synthetic_table(2, noisy(1.0, 0.01))), {}),
+  EXPECT_THROW(compare_runs(run_of(synthetic_table_json(1, noisy_source(1.0, 0.01))),
+                            run_of(synthetic_table_json(2, noisy_source(1.0, 0.01))), {}),
                InputError);
 }
 
 TEST(CompareRuns, MissingFieldsAreNamedByPointer) {
-  ojson doc = synthetic_table(1, noisy(1.0, 0.01));
+  ojson doc = synthetic_table_json(1, noisy_source(1.0, 0.01));
   doc["generators"]["fis_tok15"]["views"]["camera_view"]["phases"]["mipmapping"].erase("samples_ms");
   try {
     run_of(doc);
@@ -211,7 +215,7 @@ TEST(CompareRuns, MissingFieldsAreNamedByPointer) {
               std::string::npos)
         << e.what();
   }
-  ojson negative = synthetic_table(1, noisy(1.0, 0.01));
+  ojson negative = synthetic_table_json(1, noisy_source(1.0, 0.01));
   negative["generators"]["fis_tok15"]["total"]["samples_ms"][0] = -1.0;
   EXPECT_THROW(run_of(negative), InputError);
   EXPECT_THROW(run_of(ojson{{"hello", 1}}), InputError);
@@ -250,7 +254,7 @@ TEST(CompareRuns, GoogleBenchmarkRepetitionsAreTheSamples) {
                                             parse_bench_run(synthetic_gbench(1, 1.2), "b.json"), {});
   EXPECT_EQ(single.count(Verdict::kAmbiguous), 2u);
   // A table JSON and a gbench JSON do not compare (samples mean different things).
-  EXPECT_THROW(compare_runs(run_of(synthetic_table(1, noisy(1.0, 0.01))), run, {}), InputError);
+  EXPECT_THROW(compare_runs(run_of(synthetic_table_json(1, noisy_source(1.0, 0.01))), run, {}), InputError);
   ojson failed = synthetic_gbench(2, 1.0);
   failed["benchmarks"][0]["error_occurred"] = true;
   EXPECT_THROW(parse_bench_run(failed, "failed.json"), InputError);
@@ -276,8 +280,8 @@ TEST(CompareRuns, CommittedResultsLoad) {
 
 TEST(CompareCli, ExitCodesMakeACiGate) {
   const TempDir dir("cli");
-  const fs::path base = dir.write("base.json", synthetic_table(1, noisy(1.0, 0.01)).dump());
-  const fs::path slow = dir.write("slow.json", synthetic_table(1, noisy(1.10, 0.01, 20, 7)).dump());
+  const fs::path base = dir.write("base.json", synthetic_table_json(1, noisy_source(1.0, 0.01)).dump());
+  const fs::path slow = dir.write("slow.json", synthetic_table_json(1, noisy_source(1.10, 0.01, 20, 7)).dump());
   const auto report = run_cli("compare " + base.string() + " " + slow.string() + " --out " + (dir.path / "r.md").string());
   EXPECT_EQ(report.exit_code, 0) << report.output;  // no gate: a report only
   EXPECT_NE(report.output.find("**SLOWER**"), std::string::npos) << report.output;
@@ -293,14 +297,15 @@ TEST(CompareCli, ExitCodesMakeACiGate) {
 
 TEST(CompareCli, BadInputsExitWithThreeBadCommandLinesWithTwoAndSayWhy) {
   const TempDir dir("bad");
-  const std::string good_text = synthetic_table(1, noisy(1.0, 0.01)).dump(2);
+  const std::string good_text = synthetic_table_json(1, noisy_source(1.0, 0.01)).dump(2);
   const fs::path good = dir.write("good.json", good_text);
   const fs::path truncated = dir.write("truncated.json", good_text.substr(0, good_text.size() / 2));
   const fs::path garbage = dir.write("garbage.json", "not json at all");
-  ojson missing_doc = synthetic_table(1, noisy(1.0, 0.01));
+  ojson missing_doc = synthetic_table_json(1, noisy_source(1.0, 0.01));
   missing_doc.erase("capture");
   const fs::path missing = dir.write("missing.json", missing_doc.dump());
-  const fs::path other = dir.write("other.json", synthetic_table(1, noisy(1.0, 0.01), "Test GPU", "fnv1a64:ff").dump());
+  const fs::path other =
+      dir.write("other.json", synthetic_table_json(1, noisy_source(1.0, 0.01), "Test GPU", "fnv1a64:ff").dump());
   struct Case {
     std::string args, expect;
     int exit_code;

@@ -81,7 +81,7 @@ TEST(MannWhitney, RejectsEmptyAndNonFiniteSamples) {
   EXPECT_THROW(mann_whitney_u({1.0, std::nan("")}, {1.0}), std::invalid_argument);
 }
 
-std::vector<double> noisy(double centre, double spread, std::size_t n, unsigned seed) {
+std::vector<double> noisy_samples(double centre, double spread, std::size_t n, unsigned seed) {
   std::mt19937 rng(seed);
   std::normal_distribution<double> d(centre, spread);
   std::vector<double> v(n);
@@ -90,17 +90,19 @@ std::vector<double> noisy(double centre, double spread, std::size_t n, unsigned 
 }
 
 TEST(RegressionVerdict, SyntheticRuns) {
-  const auto base = noisy(1.0, 0.01, 30, 1);
+  const auto base = noisy_samples(1.0, 0.01, 30, 1);
   EXPECT_EQ(compare_samples(base, base).verdict, Verdict::kSame);
-  EXPECT_EQ(compare_samples(base, noisy(1.0, 0.01, 30, 2)).verdict, Verdict::kSame);
-  EXPECT_EQ(compare_samples(base, noisy(1.10, 0.01, 30, 3)).verdict, Verdict::kSlower);
-  EXPECT_EQ(compare_samples(base, noisy(0.90, 0.01, 30, 4)).verdict, Verdict::kFaster);
+  EXPECT_EQ(compare_samples(base, noisy_samples(1.0, 0.01, 30, 2)).verdict, Verdict::kSame);
+  EXPECT_EQ(compare_samples(base, noisy_samples(1.10, 0.01, 30, 3)).verdict, Verdict::kSlower);
+  EXPECT_EQ(compare_samples(base, noisy_samples(0.90, 0.01, 30, 4)).verdict, Verdict::kFaster);
   // Medians 5 % apart but noise of 50 %: the samples cannot decide.
-  EXPECT_EQ(compare_samples(noisy(1.0, 0.5, 12, 5), noisy(1.05, 0.5, 12, 6)).verdict, Verdict::kAmbiguous);
+  EXPECT_EQ(compare_samples(noisy_samples(1.0, 0.5, 12, 5), noisy_samples(1.05, 0.5, 12, 6)).verdict,
+            Verdict::kAmbiguous);
   // Too few samples.
   EXPECT_EQ(compare_samples({1.0, 1.0}, {2.0, 2.0}).verdict, Verdict::kAmbiguous);
   // A significant but irrelevant change is SAME.
-  EXPECT_EQ(compare_samples(noisy(1.0, 0.0001, 30, 7), noisy(1.005, 0.0001, 30, 8)).verdict, Verdict::kSame);
+  EXPECT_EQ(compare_samples(noisy_samples(1.0, 0.0001, 30, 7), noisy_samples(1.005, 0.0001, 30, 8)).verdict,
+            Verdict::kSame);
 }
 
 }  // namespace

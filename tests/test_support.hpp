@@ -58,4 +58,8 @@ inline nlohmann::json read_json(const std::filesystem::path& path) {
   }
 }
 
+// The checkout the tests compare against (the programs themselves never read it: DESIGN.md §10).
+// One definition for every suite, so that suites compiled together in one unity batch share it.
+inline const std::filesystem::path kSource = VSGL_SOURCE_DIR;
+
 }  // namespace vsgl::test

@@ -24,8 +24,8 @@ namespace {
 
 using ojson = nlohmann::ordered_json;
 
-const SweepFitModel& find_fit(const SweepModel& m, const std::string& axis, const std::string& view,
-                              const std::string& phase, const std::string& slice) {
+const SweepFitModel& model_fit(const SweepModel& m, const std::string& axis, const std::string& view,
+                               const std::string& phase, const std::string& slice) {
   for (const SweepFitModel& f : m.fits)
     if (m.axes[f.axis].name == axis && f.view == view && f.phase == phase && sweep_slice_text(f.slice) == slice)
       return f;
@@ -82,7 +82,7 @@ TEST(SweepModel, ReadsBackWhatTheSweepWrote) {
   EXPECT_EQ(c->find("sum"), nullptr);
 
   ASSERT_EQ(m.fits.size(), fits.size());
-  const SweepFitModel& linear = find_fit(m, "vsgls", "camera_view", "filtered_sampling", "K=2");
+  const SweepFitModel& linear = model_fit(m, "vsgls", "camera_view", "filtered_sampling", "K=2");
   EXPECT_EQ(linear.generator, "fis_modified");
   EXPECT_EQ(linear.axis, 0u);
   EXPECT_EQ(linear.points.size(), 3u);
@@ -97,11 +97,11 @@ TEST(SweepModel, ReadsBackWhatTheSweepWrote) {
   EXPECT_FALSE(linear.expected->why.empty());
   EXPECT_EQ(linear.verdict, std::optional<std::string>("consistent"));
   EXPECT_FALSE(linear.flagged);
-  const SweepFitModel& quadratic = find_fit(m, "vsgls", "light_view", "filtered_sampling", "K=1");
+  const SweepFitModel& quadratic = model_fit(m, "vsgls", "light_view", "filtered_sampling", "K=1");
   EXPECT_EQ(quadratic.verdict, std::optional<std::string>("faster"));
   EXPECT_TRUE(quadratic.flagged);
   EXPECT_FALSE(quadratic.judgement.empty());
-  const SweepFitModel& total = find_fit(m, "vsgls", "camera_view", "total", "K=1");
+  const SweepFitModel& total = model_fit(m, "vsgls", "camera_view", "total", "K=1");
   EXPECT_FALSE(total.expected.has_value());
   EXPECT_FALSE(total.verdict.has_value());
   EXPECT_FALSE(m.claims.has_value());
@@ -114,7 +114,7 @@ TEST(SweepModel, GammaZeroIsReadOffTheLogAxisAndClaimsAreRead) {
                                 test::synthetic_sweep_claim(true, "every change within the band")});
   const SweepModel m = read_sweep_model(doc, "mem");
   EXPECT_EQ(m.axes[0].values[0].growth_x, 0.0);
-  const SweepFitModel& f = find_fit(m, "pdf-sharpness", "camera_view", "filtered_sampling", "");
+  const SweepFitModel& f = model_fit(m, "pdf-sharpness", "camera_view", "filtered_sampling", "");
   EXPECT_EQ(f.growth_x.front(), 0.0);
   ASSERT_TRUE(f.growth.has_value());
   ASSERT_TRUE(m.claims.has_value());

@@ -23,10 +23,11 @@
 namespace vsgl {
 namespace {
 
-const std::filesystem::path kSchema = std::filesystem::path(VSGL_SOURCE_DIR) / "results/schema/sweep.schema.json";
+const std::filesystem::path kSweepSchemaFile =
+    std::filesystem::path(VSGL_SOURCE_DIR) / "results/schema/sweep.schema.json";
 
 // Five rounds around `ms`, spread by ±1 % so the statistics and the bootstrap have noise to see.
-std::vector<double> rounds(double ms) { return {ms * 0.99, ms * 1.0, ms * 1.01, ms * 0.995, ms * 1.005}; }
+std::vector<double> rounds_around(double ms) { return {ms * 0.99, ms * 1.0, ms * 1.01, ms * 0.995, ms * 1.005}; }
 
 CaseTiming fis_case(const std::string& view, double n) {
   CaseTiming c;
@@ -36,8 +37,8 @@ CaseTiming fis_case(const std::string& view, double n) {
   // additional and mipmapping do not depend on N or K; filtered sampling is linear in N on the
   // camera view and (deliberately wrong) quadratic on the light view, which must be flagged.
   const double fs = view == "camera_view" ? 0.001 * n : 0.0001 * n * n;
-  c.phase_ms = {rounds(0.5), rounds(0.25), rounds(fs)};
-  c.total_ms = rounds(0.75 + fs);
+  c.phase_ms = {rounds_around(0.5), rounds_around(0.25), rounds_around(fs)};
+  c.total_ms = rounds_around(0.75 + fs);
   c.dispatch_count = 5;
   return c;
 }
@@ -82,7 +83,7 @@ MeasuredSweep synthetic_sweep(const std::vector<SweepAxis>& axes) {
   return s;
 }
 
-SweepContext synthetic_context() {
+SweepContext synthetic_sweep_context() {
   SweepContext c;
   c.device = nlohmann::ordered_json{{"name", "synthetic"},
                                     {"type", "cpu"},
@@ -98,8 +99,8 @@ SweepContext synthetic_context() {
   return c;
 }
 
-const SweepFit& find_fit(const std::vector<SweepFit>& fits, std::size_t axis, const std::string& view,
-                         const std::string& phase, const std::string& slice) {
+const SweepFit& measured_fit(const std::vector<SweepFit>& fits, std::size_t axis, const std::string& view,
+                             const std::string& phase, const std::string& slice) {
   for (const SweepFit& f : fits)
     if (f.axis == axis && f.view == view && f.phase == phase && slice_text(f.slice) == slice) return f;
   throw std::logic_error("no fit " + view + " " + phase + " " + slice);
@@ -111,7 +112,7 @@ TEST(SweepReport, FitsEachAxisWithTheOthersHeldAndFlagsWhatTheAlgorithmExcludes)
   const std::vector<SweepFit> fits = sweep_fits(s);
   // vsgls: 2 slices (K=1, K=2); K: 3 slices (N=8, 16, 32); each 2 views x (3 phases + total).
   ASSERT_EQ(fits.size(), (2u + 3u) * 2u * 4u);
-  const SweepFit& linear = find_fit(fits, 0, "camera_view", "filtered_sampling", "K=2");
+  const SweepFit& linear = measured_fit(fits, 0, "camera_view", "filtered_sampling", "K=2");
   ASSERT_TRUE(linear.fit.has_value()) << linear.note;
   EXPECT_NEAR(linear.fit->slope, 1.0, 1e-6);
   EXPECT_LE(linear.fit->low, 1.0);
@@ -119,29 +120,29 @@ TEST(SweepReport, FitsEachAxisWithTheOthersHeldAndFlagsWhatTheAlgorithmExcludes)
   ASSERT_TRUE(linear.judgement.has_value());
   EXPECT_FALSE(linear.judgement->flagged());
   EXPECT_EQ(linear.points.size(), 3u);
-  const SweepFit& quadratic = find_fit(fits, 0, "light_view", "filtered_sampling", "K=1");
+  const SweepFit& quadratic = measured_fit(fits, 0, "light_view", "filtered_sampling", "K=1");
   ASSERT_TRUE(quadratic.fit && quadratic.judgement);
   EXPECT_NEAR(quadratic.fit->slope, 2.0, 1e-6);
   EXPECT_EQ(quadratic.judgement->verdict, GrowthVerdict::kFaster);
-  const SweepFit& flat = find_fit(fits, 0, "camera_view", "additional", "K=1");
+  const SweepFit& flat = measured_fit(fits, 0, "camera_view", "additional", "K=1");
   ASSERT_TRUE(flat.fit && flat.judgement);
   EXPECT_NEAR(flat.fit->slope, 0.0, 1e-6);
   EXPECT_FALSE(flat.judgement->flagged());
   // Along K, with N held at 32: nothing moves, and the FIS phases are expected not to.
-  const SweepFit& along_k = find_fit(fits, 1, "camera_view", "filtered_sampling", "vsgls=32");
+  const SweepFit& along_k = measured_fit(fits, 1, "camera_view", "filtered_sampling", "vsgls=32");
   ASSERT_TRUE(along_k.fit && along_k.judgement);
   EXPECT_NEAR(along_k.fit->slope, 0.0, 1e-6);
   EXPECT_FALSE(along_k.judgement->flagged());
   // The total has no expectation along N (its phases grow differently).
-  EXPECT_FALSE(find_fit(fits, 0, "camera_view", "total", "K=1").expected.has_value());
+  EXPECT_FALSE(measured_fit(fits, 0, "camera_view", "total", "K=1").expected.has_value());
 }
 
 TEST(SweepReport, JsonConformsToTheSchemaAndKeepsTheRawSamples) {
   const std::vector<SweepAxis> axes{parse_axis_spec("vsgls=8:32:x2"), parse_axis_spec("K=1,2")};
   const MeasuredSweep s = synthetic_sweep(axes);
   const auto fits = sweep_fits(s);
-  const nlohmann::ordered_json doc = to_json(sweep_document(s, fits, synthetic_context()));
-  const nlohmann::json schema = test::read_json(kSchema);
+  const nlohmann::ordered_json doc = to_json(sweep_document(s, fits, synthetic_sweep_context()));
+  const nlohmann::json schema = test::read_json(kSweepSchemaFile);
   ASSERT_TRUE(schema_subset_problems(schema).empty());
   const auto problems = validate_against_schema(nlohmann::json::parse(doc.dump()), schema);
   EXPECT_TRUE(problems.empty()) << problems.front();
@@ -171,7 +172,7 @@ TEST(SweepReport, JsonConformsToTheSchemaAndKeepsTheRawSamples) {
 TEST(SweepReport, MarkdownHasATablePerAxisAndSliceWithTheFits) {
   const std::vector<SweepAxis> axes{parse_axis_spec("vsgls=8:32:x2"), parse_axis_spec("K=1,2")};
   const MeasuredSweep s = synthetic_sweep(axes);
-  const std::string md = sweep_markdown(sweep_document(s, sweep_fits(s), synthetic_context()));
+  const std::string md = sweep_markdown(sweep_document(s, sweep_fits(s), synthetic_sweep_context()));
   EXPECT_NE(md.find("## Axis vsgls (`vsgls=8:32:x2`)"), std::string::npos) << md;
   EXPECT_NE(md.find("## Axis K (`K=1,2`)"), std::string::npos) << md;
   EXPECT_NE(md.find("### K=2"), std::string::npos) << md;
@@ -198,7 +199,7 @@ TEST(SweepReport, EveryCommittedMarkdownIsItsDocumentRendered) {
 TEST(SweepReport, OnePlotPerAxisAndPhase) {
   const std::vector<SweepAxis> axes{parse_axis_spec("vsgls=8:32:x2"), parse_axis_spec("K=1,2")};
   const MeasuredSweep s = synthetic_sweep(axes);
-  const auto plots = sweep_plots(sweep_document(s, sweep_fits(s), synthetic_context()));
+  const auto plots = sweep_plots(sweep_document(s, sweep_fits(s), synthetic_sweep_context()));
   ASSERT_EQ(plots.size(), 2u * 4u);
   EXPECT_EQ(plots[0].first, "sweep_vsgls_additional.svg");
   EXPECT_EQ(plots[2].first, "sweep_vsgls_filtered_sampling.svg");
@@ -217,14 +218,14 @@ TEST(SweepReport, GammaZeroStaysOffTheLogAxis) {
   }
   const MeasuredSweep three = synthetic_sweep({parse_axis_spec("pdf-sharpness=0,1,2")});
   const auto fits = sweep_fits(three);
-  const SweepFit& f = find_fit(fits, 0, "camera_view", "filtered_sampling", "");
+  const SweepFit& f = measured_fit(fits, 0, "camera_view", "filtered_sampling", "");
   ASSERT_TRUE(f.fit.has_value()) << f.note;
   EXPECT_EQ(f.fit->points, 2u);
   ASSERT_TRUE(f.judgement.has_value());  // FIS is expected not to depend on the PDF
   EXPECT_EQ(f.expected->slope, 0.0);
-  const SweepModel document = sweep_document(three, fits, synthetic_context());
+  const SweepModel document = sweep_document(three, fits, synthetic_sweep_context());
   const auto doc = to_json(document);
-  EXPECT_TRUE(validate_against_schema(nlohmann::json::parse(doc.dump()), test::read_json(kSchema)).empty());
+  EXPECT_TRUE(validate_against_schema(nlohmann::json::parse(doc.dump()), test::read_json(kSweepSchemaFile)).empty());
   EXPECT_EQ(doc["points"][2]["pdf_sharpness"]["pdf_frequency"]["light_view"]["relative_variance"], 2.0);
   EXPECT_NE(sweep_markdown(document).find("## PDF frequency at each"), std::string::npos);
 }

@@ -32,7 +32,7 @@ const std::map<std::string, bool> kRegions{{"a", true}, {"b", false}, {"c", true
 
 std::vector<std::string> lines_of(const std::string& text) { return counted_code_lines(text, "x.cpp", kRegions); }
 
-std::string error_of(const std::string& text) {
+std::string counting_error(const std::string& text) {
   try {
     lines_of(text);
   } catch (const InputError& e) {
@@ -41,7 +41,7 @@ std::string error_of(const std::string& text) {
   return "";
 }
 
-bool contains(const std::vector<std::string>& lines, const std::string& needle) {
+bool has_line(const std::vector<std::string>& lines, const std::string& needle) {
   return std::any_of(lines.begin(), lines.end(),
                      [&](const std::string& l) { return l.find(needle) != std::string::npos; });
 }
@@ -79,20 +79,21 @@ TEST(Table3Markers, RegionsCountOnlyWhenEveryEnclosingOneIsCounted) {
 }
 
 TEST(Table3Markers, UnbalancedUnknownAndMalformedMarkersAreErrors) {
-  EXPECT_NE(error_of("// table3: end a\n").find("x.cpp:1: `// table3: end a` without a matching begin"),
+  EXPECT_NE(counting_error("// table3: end a\n").find("x.cpp:1: `// table3: end a` without a matching begin"),
             std::string::npos)
-      << error_of("// table3: end a\n");
-  const std::string crossed = error_of("// table3: begin a\n// table3: begin c\n// table3: end a\n// table3: end c\n");
+      << counting_error("// table3: end a\n");
+  const std::string crossed =
+      counting_error("// table3: begin a\n// table3: begin c\n// table3: end a\n// table3: end c\n");
   EXPECT_NE(crossed.find("x.cpp:3:"), std::string::npos) << crossed;
   EXPECT_NE(crossed.find("closes region 'c' begun on line 2"), std::string::npos) << crossed;
-  const std::string unclosed = error_of("int a;\n// table3: begin a\nint b;\n");
+  const std::string unclosed = counting_error("int a;\n// table3: begin a\nint b;\n");
   EXPECT_NE(unclosed.find("x.cpp:2: Table 3 region 'a' is never ended"), std::string::npos) << unclosed;
-  const std::string unknown = error_of("// table3: begin a|zz\n// table3: end a|zz\n");
+  const std::string unknown = counting_error("// table3: begin a|zz\n// table3: end a|zz\n");
   EXPECT_NE(unknown.find("unknown Table 3 region 'zz'"), std::string::npos) << unknown;
   EXPECT_NE(unknown.find("a, b, c"), std::string::npos) << unknown;  // names what it knows
   for (const char* bad :
        {"// table3: start a\n", "// table3: begin\n", "// table3: begin A\n", "// table3: begin a b\n", "// table3:\n"})
-    EXPECT_NE(error_of(bad).find("malformed Table 3 marker"), std::string::npos) << bad << error_of(bad);
+    EXPECT_NE(counting_error(bad).find("malformed Table 3 marker"), std::string::npos) << bad << counting_error(bad);
   // A file that names no region needs none; one that does must be given its names.
   EXPECT_THROW(counted_code_lines("// table3: begin a\n// table3: end a\n", "y.glsl", {}), InputError);
 }
@@ -142,10 +143,10 @@ TEST(Table3Counts, FisVariantsDifferByAFewLinesOfTheModifiedLevelChoice) {
   EXPECT_GT(d.added, 0u);
   EXPECT_GT(d.removed, 0u);
   EXPECT_LE(d.differing(), 40u) << "the variants share everything but choose_level() and estimate_power()";
-  EXPECT_TRUE(contains(modified.code, "BISECTION_ITERATIONS"));
-  EXPECT_FALSE(contains(tok15.code, "BISECTION_ITERATIONS"));
-  EXPECT_TRUE(contains(tok15.code, "max(N * s.pdf, pc.K)"));  // Eq. 4
-  EXPECT_FALSE(contains(modified.code, "max(N * s.pdf, pc.K)"));
+  EXPECT_TRUE(has_line(modified.code, "BISECTION_ITERATIONS"));
+  EXPECT_FALSE(has_line(tok15.code, "BISECTION_ITERATIONS"));
+  EXPECT_TRUE(has_line(tok15.code, "max(N * s.pdf, pc.K)"));  // Eq. 4
+  EXPECT_FALSE(has_line(modified.code, "max(N * s.pdf, pc.K)"));
   // k-means needs more shaders and more lines (the paper: about five times the lines; how many
   // times here is claim 6 of the tables, not a property of the counter).
   const GeneratorLines kmeans = count_generator_lines(generator_sources("kmeans_2d"), VSGL_SOURCE_DIR);
@@ -174,23 +175,23 @@ TEST(Table3Counts, DefaultPathLeavesTheOtherPathsRegionsOut) {
   const GeneratorLines by_buffer = count_generator_lines(generator_sources("fis_modified", buffer), VSGL_SOURCE_DIR);
   // The default (texture path, single-pass downsampler) has no blit chain, no buffer pyramid and
   // no verify readback; each of the others has its own and not the default's.
-  EXPECT_TRUE(contains(by_default.code, "spd_tail_"));
-  EXPECT_FALSE(contains(by_default.code, "vkCmdBlitImage("));
-  EXPECT_FALSE(contains(by_default.code, "\"fis_mip_level.comp\""));
-  EXPECT_FALSE(contains(by_default.code, "download_pyramid"));
-  EXPECT_TRUE(contains(by_blit.code, "vkCmdBlitImage("));
-  EXPECT_FALSE(contains(by_blit.code, "spd_tail_"));
-  EXPECT_TRUE(contains(by_buffer.code, "\"fis_mip_level.comp\""));
-  EXPECT_FALSE(contains(by_buffer.code, "sampler_"));
-  EXPECT_FALSE(contains(by_buffer.code, "vkCmdBlitImage("));
+  EXPECT_TRUE(has_line(by_default.code, "spd_tail_"));
+  EXPECT_FALSE(has_line(by_default.code, "vkCmdBlitImage("));
+  EXPECT_FALSE(has_line(by_default.code, "\"fis_mip_level.comp\""));
+  EXPECT_FALSE(has_line(by_default.code, "download_pyramid"));
+  EXPECT_TRUE(has_line(by_blit.code, "vkCmdBlitImage("));
+  EXPECT_FALSE(has_line(by_blit.code, "spd_tail_"));
+  EXPECT_TRUE(has_line(by_buffer.code, "\"fis_mip_level.comp\""));
+  EXPECT_FALSE(has_line(by_buffer.code, "sampler_"));
+  EXPECT_FALSE(has_line(by_buffer.code, "vkCmdBlitImage("));
   const uint32_t whole = whole_host_lines(generator_sources("fis_modified"));
   for (const GeneratorLines* l : {&by_default, &by_blit, &by_buffer}) EXPECT_LT(l->host, whole);
   // The sum passes of k-means likewise.
   const GeneratorLines sequential = count_generator_lines(generator_sources("kmeans_3d"), VSGL_SOURCE_DIR);
   const GeneratorLines segmented = count_generator_lines(generator_sources("kmeans_3d_segsum"), VSGL_SOURCE_DIR);
-  EXPECT_FALSE(contains(sequential.code, "segsum_pieces_"));
-  EXPECT_TRUE(contains(segmented.code, "segsum_pieces_"));
-  EXPECT_FALSE(contains(segmented.code, "*sum_set_"));
+  EXPECT_FALSE(has_line(sequential.code, "segsum_pieces_"));
+  EXPECT_TRUE(has_line(segmented.code, "segsum_pieces_"));
+  EXPECT_FALSE(has_line(segmented.code, "*sum_set_"));
   // Every generator under every config reads its markers without error.
   for (const auto& g : generator_names())
     for (const GeneratorConfig* c : {&blit, &buffer})

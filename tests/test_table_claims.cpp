@@ -15,13 +15,14 @@
 #include "harness/report/table_claims.hpp"
 #include "harness/report/table_json.hpp"
 #include "harness/report/table_markdown.hpp"
+#include "test_support.hpp"
 
 namespace vsgl {
 namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kSource = VSGL_SOURCE_DIR;
+using test::kSource;
 
 ReportContext synthetic_context() {
   ReportContext ctx;
@@ -39,7 +40,7 @@ ReportContext synthetic_context() {
 // Two FIS generators over `rounds` rounds. Each round both share a drift of up to +-0.3 ms in
 // every pass (clocks, other load); fis_modified's filtered sampling costs `overhead_us` / 2 more
 // per view, plus a per-round jitter of up to +-`jitter_us` / 2 per view.
-MeasuredTable synthetic_table(double overhead_us, double jitter_us, uint32_t rounds) {
+MeasuredTable synthetic_measured_table(double overhead_us, double jitter_us, uint32_t rounds) {
   MeasuredTable t;
   t.number = 1;
   t.scene = "atrium";
@@ -101,7 +102,7 @@ TEST(OverheadClaim, ThreeOutcomesOnSyntheticTables) {
   // Bound: max(10 us, 1 % of the ~2.6 ms Tok15 total) = ~26 us.
   {
     // 5 us more with +-1 us jitter, under a +-300 us drift shared by both generators.
-    const auto c = overhead_claim(claims_json(synthetic_table(5.0, 2.0, 12), nullptr, ctx));
+    const auto c = overhead_claim(claims_json(synthetic_measured_table(5.0, 2.0, 12), nullptr, ctx));
     SCOPED_TRACE(c.dump());
     EXPECT_EQ(c["holds"], true);
     EXPECT_NEAR(c["measured"]["overhead_us"].get<double>(), 5.0, 1.0);
@@ -112,14 +113,14 @@ TEST(OverheadClaim, ThreeOutcomesOnSyntheticTables) {
     EXPECT_TRUE(c["measured"].contains("difference_of_medians_us"));  // the old number, still reported
   }
   {
-    const auto c = overhead_claim(claims_json(synthetic_table(200.0, 2.0, 12), nullptr, ctx));
+    const auto c = overhead_claim(claims_json(synthetic_measured_table(200.0, 2.0, 12), nullptr, ctx));
     SCOPED_TRACE(c.dump());
     EXPECT_EQ(c["holds"], false);
     EXPECT_GT(c["measured"]["ci_low_us"].get<double>(), c["measured"]["bound_us"].get<double>());
   }
   {
     // Centred on the bound with a +-30 us jitter: the interval straddles it.
-    const auto c = overhead_claim(claims_json(synthetic_table(26.0, 60.0, 12), nullptr, ctx));
+    const auto c = overhead_claim(claims_json(synthetic_measured_table(26.0, 60.0, 12), nullptr, ctx));
     SCOPED_TRACE(c.dump());
     EXPECT_TRUE(c["holds"].is_null());
     EXPECT_EQ(c["note"], kInconclusiveNote);
@@ -128,7 +129,7 @@ TEST(OverheadClaim, ThreeOutcomesOnSyntheticTables) {
   }
   {
     // Three rounds cannot give a 95 % interval: inconclusive whatever the numbers.
-    const auto c = overhead_claim(claims_json(synthetic_table(5.0, 0.0, 3), nullptr, ctx));
+    const auto c = overhead_claim(claims_json(synthetic_measured_table(5.0, 0.0, 3), nullptr, ctx));
     SCOPED_TRACE(c.dump());
     EXPECT_TRUE(c["holds"].is_null());
     EXPECT_EQ(c["note"].get<std::string>().rfind(kInconclusivePrefix, 0), 0u);
@@ -138,7 +139,7 @@ TEST(OverheadClaim, ThreeOutcomesOnSyntheticTables) {
 
 TEST(OverheadClaim, TableJsonCarriesThePairedAndBandwidthBlocks) {
   const ReportContext ctx = synthetic_context();
-  const MeasuredTable t = synthetic_table(25.0, 30.0, 12);
+  const MeasuredTable t = synthetic_measured_table(25.0, 30.0, 12);
   const nlohmann::ordered_json doc = table_json(t, nullptr, ctx);
   nlohmann::json schema;
   std::ifstream(kSource / "results/schema/table.schema.json") >> schema;

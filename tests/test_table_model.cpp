@@ -13,13 +13,14 @@
 #include "harness/core/json_reader.hpp"
 #include "harness/formats/table_model.hpp"
 #include "harness/report/table_markdown.hpp"
+#include "test_support.hpp"
 
 namespace vsgl {
 namespace {
 
 namespace fs = std::filesystem;
 using ojson = nlohmann::ordered_json;
-const fs::path kSource = VSGL_SOURCE_DIR;
+using test::kSource;
 
 std::vector<fs::path> committed_tables() {
   std::vector<fs::path> files;

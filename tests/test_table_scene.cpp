@@ -37,7 +37,7 @@ SceneIdentity stand_in_atrium() {
   return s;
 }
 
-std::string error_of(const ojson& doc) {
+std::string document_error(const ojson& doc) {
   try {
     scene_identity_from_json(doc, "t.json", "/scene");
   } catch (const InputError& e) {
@@ -68,22 +68,22 @@ TEST(SceneIdentity, RefusesWhatIsNotAScene) {
   const ojson good = to_json(paper_sponza());
   ojson kind = good;
   kind["kind"] = "paper-ish";
-  EXPECT_NE(error_of(kind).find("/scene/kind"), std::string::npos) << error_of(kind);
+  EXPECT_NE(document_error(kind).find("/scene/kind"), std::string::npos) << document_error(kind);
   ojson extra = good;
   extra["colour"] = "red";
-  EXPECT_NE(error_of(extra).find("colour"), std::string::npos) << error_of(extra);
+  EXPECT_NE(document_error(extra).find("colour"), std::string::npos) << document_error(extra);
   ojson no_model = good;
   no_model.erase("model_file");
-  EXPECT_NE(error_of(no_model).find("without its model_file"), std::string::npos) << error_of(no_model);
+  EXPECT_NE(document_error(no_model).find("without its model_file"), std::string::npos) << document_error(no_model);
   ojson procedural_model = to_json(stand_in_atrium());
   procedural_model["model_file"] = "a.obj";
   procedural_model["content_hash"] = "fnv1a64:0000000000000001";
   procedural_model["triangles"] = 2;
-  EXPECT_NE(error_of(procedural_model).find("procedural scenes have none"), std::string::npos);
+  EXPECT_NE(document_error(procedural_model).find("procedural scenes have none"), std::string::npos);
   ojson no_hash = good;
   no_hash.erase("content_hash");
-  EXPECT_NE(error_of(no_hash).find("content_hash"), std::string::npos) << error_of(no_hash);
-  EXPECT_NE(error_of(ojson("sponza")).find("an object"), std::string::npos);
+  EXPECT_NE(document_error(no_hash).find("content_hash"), std::string::npos) << document_error(no_hash);
+  EXPECT_NE(document_error(ojson("sponza")).find("an object"), std::string::npos);
 }
 
 TEST(SceneIdentity, DifferencesNameBothScenesOrTheirModels) {

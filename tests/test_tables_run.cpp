@@ -28,7 +28,7 @@ namespace fs = std::filesystem;
 using test::read_json;
 using test::TempDir;
 
-const fs::path kSchema = fs::path(VSGL_SOURCE_DIR) / "results/schema/table.schema.json";
+const fs::path kTableSchema = fs::path(VSGL_SOURCE_DIR) / "results/schema/table.schema.json";
 
 TablesOptions tiny_options(const fs::path& root) {
   TablesOptions o;
@@ -59,7 +59,7 @@ TEST_F(TablesRunTest, TinyRunProducesCompleteFiniteTablesThatMatchTheSchema) {
   ASSERT_EQ(out.documents.size(), 2u);
   EXPECT_TRUE(fs::exists(root / "captures/atrium/capture.json"));  // recorded because missing
   EXPECT_TRUE(fs::exists(root / "captures/conference/capture.json"));
-  const nlohmann::json schema = read_json(kSchema);
+  const nlohmann::json schema = read_json(kTableSchema);
   for (int table : {1, 2}) {
     SCOPED_TRACE("table " + std::to_string(table));
     const fs::path json_path = root / "out" / ("table" + std::to_string(table) + ".json");
@@ -226,7 +226,7 @@ TEST_F(TablesRunTest, UserCapturesGetTheirOwnTables) {
   EXPECT_GT(doc["generators"]["fis_modified"]["total"]["median_ms"].get<double>(), 0.0);
   EXPECT_TRUE(doc["ratios"]["modified_minus_tok15_us"]["total"]["paper"].is_null());
   EXPECT_EQ(doc["claims"].size(), 6u);
-  EXPECT_TRUE(validate_against_schema(doc, read_json(kSchema)).empty());
+  EXPECT_TRUE(validate_against_schema(doc, read_json(kTableSchema)).empty());
   // No paper column in the timings or the ratios (Table 3's counts are the same for any scene).
   const std::string& md = out.markdown[0];
   EXPECT_EQ(md.substr(0, md.find("### Table 3")).find("paper |"), std::string::npos) << md;
@@ -281,7 +281,7 @@ TEST(TableSchema, ValidatorReportsViolations) {
   }
   // The real schema only uses what the validator enforces, in every subschema (more in
   // tests/test_json_schema_subset.cpp).
-  EXPECT_EQ(schema_subset_problems(read_json(kSchema)), std::vector<std::string>{});
+  EXPECT_EQ(schema_subset_problems(read_json(kTableSchema)), std::vector<std::string>{});
 }
 
 TEST(SourceLines, CountsCodeNotCommentsOrBlanks) {

@@ -20,6 +20,7 @@
 #include "harness/report/measured_table.hpp"
 #include "harness/scene/scene.hpp"
 #include "harness/vk/buffer.hpp"
+#include "kernels/include/interface/testing.h"
 #include "harness/vk/command_stream.hpp"
 #include "harness/vk/compute_pipeline.hpp"
 #include "harness/vk/timestamp_pool.hpp"
@@ -271,10 +272,7 @@ TEST_F(TimingRunnerTest, StopsAtTheNoiseTargetOrTheCapButNeverBeforeTheMinimum) 
 // A one-phase case whose work is chosen per round by the host: kernels/test_workload.comp dispatched
 // indirectly from a host-visible buffer that the test rewrites between rounds, so the same
 // recording does little work in some rounds and ~1000x more in others.
-struct WorkloadPush {  // kernels/test_workload.comp
-  uint32_t count;
-  uint32_t iterations;
-};
+using WorkloadPush = gpu::TestWorkloadPush;  // kernels/test_workload.comp
 
 class RoundWorkload final : public VsglGenerator {
  public:

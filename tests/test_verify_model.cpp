@@ -25,7 +25,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using json = nlohmann::json;
-const fs::path kSource = VSGL_SOURCE_DIR;
+using test::kSource;
 
 std::vector<fs::path> committed_verify_files() {
   std::vector<fs::path> files;

@@ -83,7 +83,7 @@ TEST(GbenchCli, TimesEveryPhaseOfEveryCaseOfACaptureUnderItsName) {
                             " --vsgl_replays=3 --benchmark_format=json --benchmark_out=" +
                             out.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  const nlohmann::json json = test::read_json(out);
+  const nlohmann::json doc = test::read_json(out);
 
   std::multiset<std::string> expected, named;
   for (const char* g : {"fis_modified", "kmeans_3d"})
@@ -93,14 +93,14 @@ TEST(GbenchCli, TimesEveryPhaseOfEveryCaseOfACaptureUnderItsName) {
       for (const std::string& phase : phases)
         expected.insert("tiny/" + std::string(g) + "/" + view + "/" + phase + "/iterations:3/manual_time");
     }
-  for (const auto& b : json.at("benchmarks")) {
+  for (const auto& b : doc.at("benchmarks")) {
     named.insert(b.at("name").get<std::string>());
     EXPECT_EQ(b.at("iterations"), 3) << b.at("name");
     EXPECT_GT(b.at("real_time").get<double>(), 0.0) << b.at("name");
   }
   EXPECT_EQ(named, expected);
 
-  const nlohmann::json& context = json.at("context");
+  const nlohmann::json& context = doc.at("context");
   for (const char* key : {"vsgl_device", "vsgl_driver", "vsgl_git_commit", "vsgl_config", "vsgl_tiny_capture",
                           "vsgl_tiny_capture_hashes", "vsgl_tiny_scene"})
     EXPECT_TRUE(context.contains(key)) << key;
