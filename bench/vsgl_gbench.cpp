@@ -38,6 +38,7 @@
 #include "bench/cli/program_main.hpp"
 #include "bench/cli/generator_options.hpp"
 #include "bench/cli/gpu_session.hpp"
+#include "bench/cli/timed_generators.hpp"
 #include "harness/capture/capture_files.hpp"
 #include "harness/generators/fis/fis_generator.hpp"
 #include "harness/generators/generator_registry.hpp"
@@ -98,10 +99,7 @@ TablesOptions timed_options(const Options& o, const DeviceInfo& info) {
   t.scenes = default_scene_library({o.assets.begin(), o.assets.end()});
   t.tables = o.tables;
   t.captures = {o.capture_dirs.begin(), o.capture_dirs.end()};
-  t.generators = o.generator.generators.empty() ? generator_names() : o.generator.generators;
-  t.camera_vsgls = o.generator.camera_vsgls;
-  t.light_vsgls = o.generator.light_vsgls;
-  t.generator = o.generator.config;
+  cli::apply_generator_options(o.generator, t);
   t.timing = TimingOptions::defaults_for(info);
   return t;
 }

@@ -15,11 +15,18 @@
 
 namespace vsgl::cli {
 
-inline void apply_timed_generators(const GeneratorOptions& gen, const DeviceInfo& info, TablesOptions& t) {
+// The generators and config as given; every registered generator when none is named.
+inline void apply_generator_options(const GeneratorOptions& gen, TablesOptions& t) {
   if (!gen.generators.empty()) t.generators = gen.generators;
   t.camera_vsgls = gen.camera_vsgls;
   t.light_vsgls = gen.light_vsgls;
   t.generator = gen.config;
+}
+
+// The same, narrowed to the paper's four on a CPU device when none is named (`tables`, `sweep`;
+// `vsgl-gbench` times what it is given: a dashboard asks for its cases by name).
+inline void apply_timed_generators(const GeneratorOptions& gen, const DeviceInfo& info, TablesOptions& t) {
+  apply_generator_options(gen, t);
   if (gen.generators.empty() && info.type == VK_PHYSICAL_DEVICE_TYPE_CPU) {
     std::vector<std::string> paper;
     for (const auto& g : t.generators)
