@@ -29,7 +29,10 @@ std::vector<double> seven_rounds(double ms) {
 // config at the paper's setup (1920x1088 G-buffer, 512 RSM, its N, K 1).
 using TotalFn = std::function<double(const std::string& generator, const std::string& view, double x)>;
 
-MeasuredSweep sweep_of(const std::string& spec, const TotalFn& total) {
+// The rounds of one case at one point around its total (default: `rounds`, ±1 %).
+using RoundsFn = std::function<std::vector<double>(const std::string& generator, const std::string& view, double ms)>;
+
+MeasuredSweep sweep_of(const std::string& spec, const TotalFn& total, const RoundsFn& spread = {}) {
   MeasuredSweep s;
   s.axes = {parse_axis_spec(spec)};
   s.generators = {"fis_tok15", "fis_modified", "kmeans_2d", "kmeans_3d"};
@@ -60,11 +63,13 @@ MeasuredSweep sweep_of(const std::string& spec, const TotalFn& total) {
         c.view = view;
         c.phases = {"only"};
         c.dispatch_count = 2;
-        c.phase_ms = {seven_rounds(total(g, view, v.value))};
-        c.total_ms = seven_rounds(total(g, view, v.value));
+        const double ms = total(g, view, v.value);
+        c.total_ms = spread ? spread(g, view, ms) : seven_rounds(ms);
+        c.phase_ms = {c.total_ms};
         p.timing.cases.push_back(c);
       }
-    p.timing.repetitions = 7;
+    p.timing.repetitions = static_cast<uint32_t>(p.timing.cases.front().total_ms.size());
+    p.time_cap_s = 2.0;
     p.timing.stop_reason = "max_repetitions";
     s.points.push_back(std::move(p));
   }
@@ -89,9 +94,18 @@ TEST(PdfIndependence, HoldsWhenFisStaysFlatAndKmeansMovesWithGamma) {
   ASSERT_EQ(c.spreads.size(), 8u);
   ASSERT_TRUE(c.holds.has_value()) << c.note;
   EXPECT_TRUE(*c.holds) << c.note;
+  EXPECT_EQ(c.alpha, 0.05);
   for (const PdfSpread& p : c.spreads) {
     ASSERT_EQ(p.changes.size(), 5u);
     EXPECT_EQ(p.changes[2].change, 0.0);  // the reference, γ = 1
+    EXPECT_TRUE(p.changes[2].reference);
+    // Every FIS case equivalent: ±1 % noise lies far inside ±10 %, so every bootstrap replicate
+    // does and the TOST p-value is the smallest 2000 replicates give, 1/2001.
+    ASSERT_EQ(p.equivalence.has_value(), p.fis);
+    if (p.fis) {
+      EXPECT_EQ(p.equivalence->verdict, "equivalent");
+      EXPECT_DOUBLE_EQ(p.equivalence->p_equivalent, 1.0 / 2001);
+    }
     if (!p.fis) {
       EXPECT_NEAR(p.spread, 2.0 / 1.25 - 1, 1e-9);  // γ = 4: 10 * 2 against 10 * 1.25
       EXPECT_LE(p.low, p.spread);
@@ -118,11 +132,18 @@ TEST(PdfIndependence, HoldsWhenFisStaysFlatAndKmeansMovesWithGamma) {
   ASSERT_TRUE(doc.contains("claims"));
   EXPECT_EQ(doc["claims"][0]["id"], "pdf_independence");
   EXPECT_EQ(doc["claims"][0]["holds"], true);
+  EXPECT_EQ(doc["claims"][0]["alpha"], 0.05);
+  EXPECT_EQ(doc["claims"][0]["measured"][0]["equivalence"]["verdict"], "equivalent");
+  EXPECT_FALSE(doc["claims"][0]["measured"][0]["changes"][2].contains("p_equivalent"));  // the reference
+  EXPECT_TRUE(doc["claims"][0]["measured"][0]["changes"][0].contains("p_equivalent"));
+  // The document reads back to the same JSON.
+  EXPECT_EQ(to_json(read_sweep_model(doc, "the synthetic sweep")), doc);
   EXPECT_EQ(doc["claims"][0]["text"], ctx.paper["claims"][2]);
   const auto schema = nlohmann::json::parse(std::ifstream(kSource / "results/schema/sweep.schema.json"));
   const auto problems = validate_against_schema(nlohmann::json::parse(doc.dump()), schema);
   EXPECT_TRUE(problems.empty()) << problems.front();
   EXPECT_NE(sweep_markdown(document).find("## PDF independence: holds"), std::string::npos);
+  EXPECT_NE(sweep_markdown(document).find("| equivalent (p "), std::string::npos);
   // Without claims there is no "claims" key (the schema's minItems would refuse an empty one).
   EXPECT_FALSE(to_json(sweep_document(s, sweep_fits(s), ctx)).contains("claims"));
 }
@@ -135,8 +156,92 @@ TEST(PdfIndependence, DoesNotHoldWhenAFisTotalLeavesTheBand) {
   const PdfIndependence c = only(judge_pdf_independence(s, sweep_fits(s)));
   ASSERT_TRUE(c.holds.has_value());
   EXPECT_FALSE(*c.holds);
-  EXPECT_NE(c.note.find("fis_tok15 light_view"), std::string::npos) << c.note;
-  EXPECT_NE(c.note.find("wholly outside"), std::string::npos) << c.note;
+  EXPECT_NE(c.note.find("fis_tok15 light_view is not within ±10%"), std::string::npos) << c.note;
+  // That case alone is not equivalent (γ = 0 moves it -23 %, γ = 4 +69 %); the other FIS cases are.
+  for (const PdfSpread& p : c.spreads) {
+    if (!p.fis) continue;
+    ASSERT_TRUE(p.equivalence.has_value());
+    const bool moved = p.generator == "fis_tok15" && p.view == "light_view";
+    EXPECT_EQ(p.equivalence->verdict, moved ? "not equivalent" : "equivalent") << p.generator << " " << p.view;
+  }
+}
+
+TEST(PdfIndependence, InconclusiveWhenFisNoiseSpansTheBand) {
+  // The FIS totals do not move with γ, but their rounds scatter by ±20 %: the medians' bootstrap
+  // intervals reach beyond ±10 %, so equivalence is not shown, nor is a change outside the band.
+  const MeasuredSweep s = sweep_of(
+      "pdf-sharpness=0,1,4",
+      [](const std::string& g, const std::string&, double y) { return is_fis(g) ? 2.0 : 10.0 * (1 + y); },
+      [](const std::string& g, const std::string&, double ms) {
+        if (!is_fis(g)) return seven_rounds(ms);
+        return std::vector<double>{ms * 0.8, ms * 1.2, ms * 0.9, ms * 1.1, ms, ms * 0.85, ms * 1.15};
+      });
+  const PdfIndependence c = only(judge_pdf_independence(s, sweep_fits(s)));
+  EXPECT_FALSE(c.holds.has_value()) << c.note;
+  EXPECT_EQ(c.note.rfind("inconclusive: ", 0), 0u) << c.note;
+  EXPECT_NE(c.note.find("not shown within ±10%"), std::string::npos) << c.note;
+  for (const PdfSpread& p : c.spreads) {
+    if (!p.fis) continue;
+    ASSERT_TRUE(p.equivalence.has_value());
+    EXPECT_EQ(p.equivalence->verdict, "inconclusive");
+    EXPECT_GT(p.equivalence->p_equivalent, p.equivalence->level_equivalent);
+    EXPECT_GT(p.equivalence->p_outside, p.equivalence->level_outside);
+  }
+}
+
+// FIS spreads whose TOST p-values are given, one per γ but the reference.
+PdfSpread fis_case(const std::string& generator, const std::string& view, std::vector<double> p_equivalent) {
+  PdfSpread p;
+  p.generator = generator;
+  p.view = view;
+  p.fis = true;
+  p.in_paper = true;
+  GammaChange reference;
+  reference.gamma = 1;
+  reference.reference = true;
+  p.changes.push_back(reference);
+  for (std::size_t k = 0; k < p_equivalent.size(); ++k) {
+    GammaChange c;
+    c.gamma = 2.0 + static_cast<double>(k);
+    c.p_equivalent = p_equivalent[k];
+    c.p_outside = 1.0;
+    p.changes.push_back(c);
+  }
+  return p;
+}
+
+TEST(PdfIndependence, HolmCorrectsAcrossTheFisCases) {
+  // One FIS case alone whose worst γ has TOST p = 0.02: equivalent at α = 0.05.
+  std::vector<PdfSpread> one{fis_case("fis_tok15", "camera_view", {0.001, 0.02})};
+  judge_fis_equivalence(one, 0.05);
+  EXPECT_EQ(one[0].equivalence->verdict, "equivalent");
+  EXPECT_DOUBLE_EQ(one[0].equivalence->p_equivalent, 0.02);  // the largest over γ
+  EXPECT_DOUBLE_EQ(one[0].equivalence->level_equivalent, 0.05);
+  // Four such cases: Holm holds the smallest to 0.05 / 4 = 0.0125, which 0.02 misses, so none is
+  // shown equivalent: each becomes inconclusive.
+  std::vector<PdfSpread> four{
+      fis_case("fis_tok15", "camera_view", {0.001, 0.02}), fis_case("fis_tok15", "light_view", {0.02}),
+      fis_case("fis_modified", "camera_view", {0.02, 0.02}), fis_case("fis_modified", "light_view", {0.02})};
+  judge_fis_equivalence(four, 0.05);
+  for (const PdfSpread& p : four) EXPECT_EQ(p.equivalence->verdict, "inconclusive") << p.generator << p.view;
+  EXPECT_DOUBLE_EQ(four[0].equivalence->level_equivalent, 0.0125);
+  // With one case at p = 0.001 the step-down goes one step further: 0.001 <= 0.0125, then 0.02 >
+  // 0.05 / 3, and it stops.
+  four[1] = fis_case("fis_tok15", "light_view", {0.001});
+  judge_fis_equivalence(four, 0.05);
+  EXPECT_EQ(four[1].equivalence->verdict, "equivalent");
+  EXPECT_EQ(four[0].equivalence->verdict, "inconclusive");
+  // A k-means spread is left alone.
+  std::vector<PdfSpread> mixed{fis_case("fis_tok15", "camera_view", {0.001})};
+  mixed.push_back(PdfSpread{"kmeans_2d", "camera_view", false, true, {}, 0, 0, 0, {}});
+  judge_fis_equivalence(mixed, 0.05);
+  EXPECT_FALSE(mixed[1].equivalence.has_value());
+  // "Not equivalent" from the outside p-values: the smallest over γ times their number, Holm-corrected.
+  std::vector<PdfSpread> out{fis_case("fis_tok15", "camera_view", {1.0, 1.0})};
+  out[0].changes[1].p_outside = 0.004;  // times 2 γ: 0.008 <= 0.05
+  judge_fis_equivalence(out, 0.05);
+  EXPECT_EQ(out[0].equivalence->verdict, "not equivalent");
+  EXPECT_DOUBLE_EQ(out[0].equivalence->p_outside, 0.008);
 }
 
 TEST(PdfIndependence, DoesNotHoldWhenKmeansMovesLessThanFis) {

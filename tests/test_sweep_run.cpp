@@ -15,6 +15,7 @@
 #include "harness/formats/sweep_model.hpp"
 #include "harness/generators/vsgl_generator.hpp"
 #include "harness/scene/named_scene.hpp"
+#include "harness/sweep/sweep_blocks.hpp"
 #include "harness/sweep/sweep_run.hpp"
 
 namespace vsgl {
@@ -50,7 +51,8 @@ TEST_F(SweepRunTest, CasesAndPointsBeyondTheDeviceAreRecordedAndTheRestIsTimed) 
     return g;
   };
   std::string log;
-  const SweepOutcome out = run_sweep(test::shared_context().device(), o, [&](const SweepEvent& e) { log += e.message + "\n"; });
+  const SweepOutcome out =
+      run_sweep(test::shared_context().device(), o, [&](const SweepEvent& e) { log += e.message + "\n"; });
 
   ASSERT_EQ(out.measured.points.size(), 2u);  // N = 8 whole, N = 16 without fis_tok15
   EXPECT_EQ(out.measured.points[1].timing.cases.size(), 2u);
@@ -94,6 +96,38 @@ TEST_F(SweepRunTest, CasesAndPointsBeyondTheDeviceAreRecordedAndTheRestIsTimed) 
   ASSERT_EQ(model.beyond_device.size(), 3u);
   EXPECT_EQ(model.beyond_device[0].generator, "fis_tok15");
   EXPECT_TRUE(model.beyond_device[2].generator.empty());
+}
+
+// Repeated blocks (DESIGN.md §10.1): every point timed once per block, in the drawn order, its
+// rounds pooled; the order and each visit's rounds are in sweep.json, which the schema accepts.
+TEST_F(SweepRunTest, RepeatedBlocksTimeEveryPointInEveryBlockAndPoolTheRounds) {
+  const test::TempDir temp("sweep_blocks");
+  SweepOptions o = tiny_sweep(temp.path(), "pdf-sharpness=0,1,2");
+  o.blocks = 3;
+  o.order_seed = 5;
+  std::string log;
+  const SweepOutcome out =
+      run_sweep(test::shared_context().device(), o, [&](const SweepEvent& e) { log += e.message + "\n"; });
+  ASSERT_TRUE(out.measured.order.has_value());
+  EXPECT_EQ(out.measured.order->visits, sweep_visit_order(3, 3, 5).visits);
+  ASSERT_EQ(out.measured.points.size(), 3u);
+  for (const SweepPointResult& p : out.measured.points) {
+    EXPECT_EQ(p.block_rounds, (std::vector<uint32_t>{3, 3, 3}));
+    EXPECT_EQ(p.timing.repetitions, 9u);
+    for (const CaseTiming& c : p.timing.cases) EXPECT_EQ(c.total_ms.size(), 9u);
+  }
+  const fs::path file = o.out_dir / "sweep.json";
+  const auto problems =
+      validate_against_schema(test::read_json(file), test::read_json(fs::path(VSGL_SOURCE_DIR) / kSweepSchemaFile));
+  EXPECT_TRUE(problems.empty()) << problems.front();
+  const SweepModel model = read_sweep_file(file);
+  ASSERT_TRUE(model.order.has_value());
+  EXPECT_EQ(model.order->blocks, 3u);
+  EXPECT_EQ(model.points[0].timing.block_rounds.size(), 3u);
+  // The PDF-independence claim is judged on the pooled rounds (without k-means it is undecided).
+  ASSERT_TRUE(model.claims.has_value());
+  EXPECT_TRUE(model.claims->at(0).alpha.has_value());
+  for (const SweepClaimMeasure& m : model.claims->at(0).measured) EXPECT_TRUE(m.equivalence.has_value());
 }
 
 // The error stays; sweep.json keeps the one point timed, marked incomplete (DESIGN.md §10.1), and

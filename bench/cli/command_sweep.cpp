@@ -36,6 +36,8 @@ struct SweepCommandOptions {
   GeneratorOptions gen;
   std::optional<uint32_t> warmup, repetitions, max_repetitions;
   std::optional<double> noise_target, time_cap, time_budget;
+  std::optional<uint32_t> blocks;
+  std::optional<uint64_t> order_seed;
   bool quick = false;
   bool clocks_locked = false;
   std::optional<std::string> schema;
@@ -61,6 +63,13 @@ int run_sweep_command(const SweepCommandOptions& c) {
   o.captures_dir = path_from_utf8(c.captures);
   o.record_sizes = RecordSizes{c.gbuffer.first, c.gbuffer.second, c.rsm};
   o.time_budget_s = c.time_budget;
+  const bool pdf_axis = std::any_of(o.axes.begin(), o.axes.end(),
+                                    [](const SweepAxis& a) { return a.parameter == SweepParameter::kPdfSharpness; });
+  o.blocks = c.blocks.value_or(pdf_axis ? kPdfSweepBlocks : 1);
+  o.order_seed = c.order_seed.value_or(kSweepOrderSeed);
+  if (o.blocks > kMaxSweepBlocks)
+    throw UsageError("--blocks must be 1 to " + std::to_string(kMaxSweepBlocks) + " (got " + std::to_string(o.blocks) +
+                     ")");
   if (c.schema) o.schema = *c.schema;
   TablesOptions& t = o.tables;
   t.clocks_locked = c.clocks_locked;
@@ -154,16 +163,25 @@ Command add_sweep_command(CLI::App& parent) {
       ->check(positive_number())
       ->default_str("0.02");
   CLI::Option* budget = add_optional(*protocol, "--time-budget", o->time_budget,
-                                     "S s of timing for the whole sweep, split evenly over the points as each point's "
-                                     "time cap (recorded in the JSON with every point's stop rule)")
+                                     "S s of timing for the whole sweep, split evenly over the points' visits as each "
+                                     "visit's time cap (recorded in the JSON with every point's stop rule)")
                             ->check(positive_number());
-  add_optional(*protocol, "--time-cap", o->time_cap, "... or after S s of timing per point (0: no cap)")
+  add_optional(*protocol, "--time-cap", o->time_cap, "... or after S s of timing per point and visit (0: no cap)")
       ->check(CLI::NonNegativeNumber)
       ->default_str("60; 20 on a CPU device such as lavapipe")
       ->excludes(budget);
   add_optional(*protocol, "--max-repetitions", o->max_repetitions, "... or after M repetitions")
       ->check(at_least(2))
       ->default_str("1000");
+  add_optional(*protocol, "--blocks", o->blocks,
+               "B repeated blocks: each visits every point once, in an order drawn afresh per block from "
+               "--order-seed (recorded in the JSON), timing it with the protocol above (its own warm-up and "
+               "repetitions; the caps and the budget's share are per visit), and a point's rounds are pooled over "
+               "its visits, so drift falls on every point alike; 1: each point once, in axis order")
+      ->check(at_least(1))
+      ->default_str(std::to_string(kPdfSweepBlocks) + " with a pdf-sharpness axis, else 1");
+  add_optional(*protocol, "--order-seed", o->order_seed, "seed of the blocks' visit order")
+      ->default_str(std::to_string(kSweepOrderSeed));
   protocol->add_flag("--quick", o->quick,
                      "3 repetitions per point, no noise target (CI smoke runs; marked in the JSON)");
   CLI::App* generators = app->add_option_group("generators", "what is timed (an axis overrides its parameter)");

@@ -96,6 +96,41 @@ SweepPointTiming read_point_timing(const Reader& r, const ojson& t, const std::s
   out.timed_seconds = r.non_negative(r.member(t, p, "timed_seconds"), p + "/timed_seconds");
   out.stop_reason = r.string(t, p, "stop_reason");
   out.worst_noise = r.non_negative(r.member(t, p, "worst_noise"), p + "/worst_noise");
+  if (t.contains("block_rounds")) {
+    const ojson& rounds = r.nonempty_array(t, p, "block_rounds");
+    uint64_t sum = 0;
+    for (std::size_t k = 0; k < rounds.size(); ++k) {
+      out.block_rounds.push_back(static_cast<uint32_t>(r.uint64(rounds[k], p + "/block_rounds/" + std::to_string(k))));
+      sum += out.block_rounds.back();
+    }
+    if (sum != out.repetitions)
+      r.fail(p + "/block_rounds",
+             "sums to " + std::to_string(sum) + ", not the " + std::to_string(out.repetitions) + " repetitions");
+  }
+  return out;
+}
+
+SweepOrderModel read_order(const Reader& r, const ojson& o, std::size_t planned) {
+  if (!o.is_object()) r.wrong_type(o, "/order", "an object");
+  SweepOrderModel out;
+  out.blocks = r.uint32(o, "/order", "blocks");
+  out.seed = r.uint64(o, "/order", "seed");
+  const ojson& visits = r.nonempty_array(o, "/order", "visits");
+  if (visits.size() != out.blocks)
+    r.fail("/order/visits", "has " + std::to_string(visits.size()) + " blocks, not " + std::to_string(out.blocks));
+  for (std::size_t b = 0; b < visits.size(); ++b) {
+    const std::string vp = "/order/visits/" + std::to_string(b);
+    if (!visits[b].is_array()) r.wrong_type(visits[b], vp, "an array");
+    std::vector<std::size_t> block;
+    for (std::size_t k = 0; k < visits[b].size(); ++k)
+      block.push_back(index(r, visits[b][k], vp + "/" + std::to_string(k)));
+    std::vector<std::size_t> sorted = block;
+    std::sort(sorted.begin(), sorted.end());
+    for (std::size_t k = 0; k < sorted.size(); ++k)
+      if (sorted[k] != k || sorted.size() != planned)
+        r.fail(vp, "is not an order of the " + std::to_string(planned) + " points of the axes' product");
+    out.visits.push_back(std::move(block));
+  }
   return out;
 }
 
@@ -200,6 +235,13 @@ SweepFitModel read_fit(const Reader& r, const ojson& f, const std::string& p, co
   return out;
 }
 
+// A p-value or a level: a number in [0, 1].
+double p_value(const Reader& r, const ojson& object, const std::string& parent, const char* key) {
+  const double v = r.number(object, parent, key);
+  if (!(v >= 0 && v <= 1)) r.fail(parent + "/" + key, "is " + number_text(v, 6) + ", not in [0, 1]");
+  return v;
+}
+
 SweepClaimMeasure read_claim_measure(const Reader& r, const ojson& m, const std::string& p) {
   if (!m.is_object()) r.wrong_type(m, p, "an object");
   SweepClaimMeasure out;
@@ -215,9 +257,27 @@ SweepClaimMeasure read_claim_measure(const Reader& r, const ojson& m, const std:
     const std::string cp = p + "/changes/" + std::to_string(k);
     const ojson& c = changes[k];
     if (!c.is_object()) r.wrong_type(c, cp, "an object");
-    out.changes.push_back(SweepClaimChange{r.non_negative(r.member(c, cp, "gamma"), cp + "/gamma"),
-                                           index(r, r.member(c, cp, "point"), cp + "/point"), r.number(c, cp, "change"),
-                                           r.number(c, cp, "low"), r.number(c, cp, "high")});
+    SweepClaimChange change{r.non_negative(r.member(c, cp, "gamma"), cp + "/gamma"),
+                            index(r, r.member(c, cp, "point"), cp + "/point"),
+                            r.number(c, cp, "change"),
+                            r.number(c, cp, "low"),
+                            r.number(c, cp, "high"),
+                            {},
+                            {}};
+    if (c.contains("p_equivalent")) change.p_equivalent = p_value(r, c, cp, "p_equivalent");
+    if (c.contains("p_outside")) change.p_outside = p_value(r, c, cp, "p_outside");
+    out.changes.push_back(change);
+  }
+  if (m.contains("equivalence")) {
+    const std::string ep = p + "/equivalence";
+    const ojson& e = r.object(m, p, "equivalence");
+    SweepClaimEquivalence q{p_value(r, e, ep, "p_equivalent"), p_value(r, e, ep, "p_outside"),
+                            p_value(r, e, ep, "level_equivalent"), p_value(r, e, ep, "level_outside"),
+                            r.string(e, ep, "verdict")};
+    if (q.verdict != "equivalent" && q.verdict != "not equivalent" && q.verdict != "inconclusive")
+      r.fail(ep + "/verdict",
+             "is " + quoted_text(q.verdict) + R"(, not "equivalent", "not equivalent" or "inconclusive")");
+    out.equivalence = q;
   }
   return out;
 }
@@ -237,6 +297,10 @@ std::vector<SweepClaim> read_claims(const Reader& r, const ojson& a) {
     claim.criterion = r.string(c, p, "criterion");
     claim.reference_gamma = r.non_negative(r.member(c, p, "reference_gamma"), p + "/reference_gamma");
     claim.band = r.number(c, p, "band");
+    if (c.contains("alpha")) {
+      claim.alpha = r.number(c, p, "alpha");
+      if (!(*claim.alpha > 0 && *claim.alpha < 1)) r.fail(p + "/alpha", "is not in (0, 1)");
+    }
     const ojson& measured = r.array(c, p, "measured");
     for (std::size_t k = 0; k < measured.size(); ++k)
       claim.measured.push_back(read_claim_measure(r, measured[k], p + "/measured/" + std::to_string(k)));
@@ -310,6 +374,7 @@ ojson point_json(const SweepPoint& p, const std::vector<SweepAxisModel>& axes) {
                                {"stop_reason", p.timing.stop_reason},
                                {"worst_noise", p.timing.worst_noise}}},
               {"cases", cases}};
+  if (!p.timing.block_rounds.empty()) point["timing"]["block_rounds"] = p.timing.block_rounds;
   if (p.pdf_sharpness) {
     ojson frequency = ojson::object();
     for (const auto& [view, f] : p.pdf_sharpness->frequency)
@@ -358,29 +423,36 @@ ojson claim_json(const SweepClaim& c) {
   ojson measured = ojson::array();
   for (const SweepClaimMeasure& m : c.measured) {
     ojson changes = ojson::array();
-    for (const SweepClaimChange& g : m.changes)
-      changes.push_back(
-          ojson{{"gamma", g.gamma}, {"point", g.point}, {"change", g.change}, {"low", g.low}, {"high", g.high}});
-    measured.push_back(ojson{{"generator", m.generator},
-                             {"view", m.view},
-                             {"family", m.family},
-                             {"in_paper", m.in_paper},
-                             {"spread", m.spread},
-                             {"spread_low", m.spread_low},
-                             {"spread_high", m.spread_high},
-                             {"changes", changes}});
+    for (const SweepClaimChange& g : m.changes) {
+      ojson change{{"gamma", g.gamma}, {"point", g.point}, {"change", g.change}, {"low", g.low}, {"high", g.high}};
+      if (g.p_equivalent) change["p_equivalent"] = *g.p_equivalent;
+      if (g.p_outside) change["p_outside"] = *g.p_outside;
+      changes.push_back(std::move(change));
+    }
+    ojson measure{{"generator", m.generator},     {"view", m.view},     {"family", m.family},
+                  {"in_paper", m.in_paper},       {"spread", m.spread}, {"spread_low", m.spread_low},
+                  {"spread_high", m.spread_high}, {"changes", changes}};
+    if (m.equivalence)
+      measure["equivalence"] = ojson{{"p_equivalent", m.equivalence->p_equivalent},
+                                     {"p_outside", m.equivalence->p_outside},
+                                     {"level_equivalent", m.equivalence->level_equivalent},
+                                     {"level_outside", m.equivalence->level_outside},
+                                     {"verdict", m.equivalence->verdict}};
+    measured.push_back(std::move(measure));
   }
-  return ojson{{"id", c.id},
-               {"text", c.text},
-               {"axis", c.axis},
-               {"slice", string_map_json(c.slice)},
-               {"criterion", c.criterion},
-               {"reference_gamma", c.reference_gamma},
-               {"band", c.band},
-               {"measured", measured},
-               {"holds", c.holds ? ojson(*c.holds) : ojson(nullptr)},
-               {"note", c.note},
-               {"informative", c.informative}};
+  ojson j{{"id", c.id},
+          {"text", c.text},
+          {"axis", c.axis},
+          {"slice", string_map_json(c.slice)},
+          {"criterion", c.criterion},
+          {"reference_gamma", c.reference_gamma},
+          {"band", c.band}};
+  if (c.alpha) j["alpha"] = *c.alpha;
+  j["measured"] = std::move(measured);
+  j["holds"] = c.holds ? ojson(*c.holds) : ojson(nullptr);
+  j["note"] = c.note;
+  j["informative"] = c.informative;
+  return j;
 }
 
 }  // namespace
@@ -477,6 +549,7 @@ SweepModel read_sweep_model(const nlohmann::ordered_json& doc, const std::string
   }
   m.time_budget_rule = r.string(doc, "", "time_budget_rule");
   m.fit_method = r.string(doc, "", "fit_method");
+  if (doc.contains("order")) m.order = read_order(r, doc["order"], m.planned_points());
   const ojson& points = r.nonempty_array(doc, "", "points");
   for (std::size_t i = 0; i < points.size(); ++i)
     m.points.push_back(read_point(r, points[i], "/points/" + std::to_string(i), i, m.axes));
@@ -520,6 +593,7 @@ ojson to_json(const SweepModel& m) {
   doc["time_budget_s"] = m.time_budget_s ? ojson(*m.time_budget_s) : ojson(nullptr);
   doc["time_budget_rule"] = m.time_budget_rule;
   doc["fit_method"] = m.fit_method;
+  if (m.order) doc["order"] = ojson{{"blocks", m.order->blocks}, {"seed", m.order->seed}, {"visits", m.order->visits}};
   ojson points = ojson::array();
   for (const SweepPoint& p : m.points) points.push_back(point_json(p, m.axes));
   doc["points"] = std::move(points);

@@ -45,9 +45,9 @@ struct SweepCase {
 };
 
 struct SweepAxisValue {
-  std::string text;     // as given on the command line ("16", "96x64", "0.5")
-  double value = 0;     // the parameter
-  double growth_x = 0;  // what the fits use as x; 0: off the log axis (γ = 0)
+  std::string text;                       // as given on the command line ("16", "96x64", "0.5")
+  double value = 0;                       // the parameter
+  double growth_x = 0;                    // what the fits use as x; 0: off the log axis (γ = 0)
   std::optional<uint32_t> width, height;  // a G-buffer size's
 };
 
@@ -66,6 +66,16 @@ struct SweepPointTiming {
   double timed_seconds = 0;
   std::string stop_reason;
   double worst_noise = 0;
+  // With repeated blocks, the rounds of each visit in block order (they sum to repetitions); empty:
+  // one visit (absent from the file).
+  std::vector<uint32_t> block_rounds;
+};
+
+// The visit order of repeated blocks ("order"; absent: one pass in axis order).
+struct SweepOrderModel {
+  uint32_t blocks = 0;
+  uint64_t seed = 0;
+  std::vector<std::vector<std::size_t>> visits;  // per block, positions in the axes' product
 };
 
 // How high-frequency a view's PDF is at a point of the pdf-sharpness axis: var(p) and the fine
@@ -138,6 +148,16 @@ struct SweepClaimChange {
   std::size_t point = 0;  // into SweepModel::points
   double change = 0;
   double low = 0, high = 0;
+  // A FIS case's TOST p-values at the band (absent at the reference γ, for k-means, and in files
+  // written before the equivalence test).
+  std::optional<double> p_equivalent, p_outside;
+};
+
+// A FIS case's equivalence verdict across γ, Holm-corrected across the FIS cases.
+struct SweepClaimEquivalence {
+  double p_equivalent = 1, p_outside = 1;
+  double level_equivalent = 0, level_outside = 0;
+  std::string verdict;  // "equivalent", "not equivalent", "inconclusive"
 };
 
 struct SweepClaimMeasure {
@@ -147,6 +167,7 @@ struct SweepClaimMeasure {
   double spread = 0;  // max |change| over γ
   double spread_low = 0, spread_high = 0;
   std::vector<SweepClaimChange> changes;
+  std::optional<SweepClaimEquivalence> equivalence;  // FIS cases; absent in files written before it
 };
 
 // One of the paper's claims judged on the sweep: the PDF-independence claim on a pdf-sharpness
@@ -159,6 +180,7 @@ struct SweepClaim {
   std::string criterion;
   double reference_gamma = 1;
   double band = 0;
+  std::optional<double> alpha;  // of the equivalence tests; absent in files written before them
   std::vector<SweepClaimMeasure> measured;
   std::optional<bool> holds;  // none: inconclusive
   std::string note;
@@ -179,8 +201,9 @@ struct SweepModel {
   std::vector<std::string> generators;
   std::vector<SweepAxisModel> axes;
   std::optional<double> time_budget_s;
-  std::string time_budget_rule;    // how the budget is split, in words
-  std::string fit_method;          // how the fits are made, in words
+  std::string time_budget_rule;  // how the budget is split, in words
+  std::string fit_method;        // how the fits are made, in words
+  std::optional<SweepOrderModel> order;
   std::vector<SweepPoint> points;  // points[i].index == i
   std::vector<SweepBeyondDevice> beyond_device;
   std::vector<SweepFitModel> fits;

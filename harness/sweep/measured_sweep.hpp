@@ -3,6 +3,7 @@
 // off them. The report (sweep_report.hpp) is built from this alone, so tests can feed it synthetic
 // samples.
 #include <cstddef>
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
@@ -32,7 +33,16 @@ struct SweepPointResult {
   double time_cap_s = 0;
   std::optional<double> pdf_sharpness;
   std::map<std::string, PointPdfFrequency> pdf_frequency;  // per view, on the pdf-sharpness axis
-  TimingResult timing;
+  TimingResult timing;                 // with repeated blocks, the rounds of every visit, block after block
+  std::vector<uint32_t> block_rounds;  // with repeated blocks, the rounds of each visit; else empty
+};
+
+// The order the points were timed in with repeated blocks (sweep_blocks.hpp, DESIGN.md §10.1):
+// every block visits every point of the axes' product once, in an order drawn from the seed.
+struct SweepOrder {
+  uint32_t blocks = 1;
+  uint64_t seed = 0;
+  std::vector<std::vector<std::size_t>> visits;  // per block, positions in the axes' product
 };
 
 // A point, or one case of it, the device cannot hold (a DeviceLimitError while recording it or
@@ -52,6 +62,7 @@ struct MeasuredSweep {
   std::optional<double> time_budget_s;
   std::vector<SweepPointResult> points;          // the points timed
   std::vector<BeyondDevicePoint> beyond_device;  // the points and cases the device cannot hold, in sweep order
+  std::optional<SweepOrder> order;               // with repeated blocks (2 or more); none: one pass in axis order
   // Every point of the axes' product was reached (timed or beyond the device). False in the
   // sweep.json written after each point while the sweep runs (DESIGN.md §10.1).
   bool complete = true;
@@ -63,7 +74,7 @@ struct SweepFit {
   std::vector<std::pair<std::string, std::string>> slice;  // the other axes: name, value text
   std::string generator, view, phase;                      // phase: a phase name or "total"
   std::vector<std::size_t> points;  // indices into MeasuredSweep::points that time the case, by x
-  std::vector<double> x;                                   // growth_x of each point (0: off the log axis)
+  std::vector<double> x;            // growth_x of each point (0: off the log axis)
   std::optional<GrowthFit> fit;
   std::string note;  // why there is no fit (fewer than 2 points on the log axis, too few rounds)
   std::optional<GrowthExpectation> expected;

@@ -5,7 +5,9 @@
 #include <map>
 
 #include "harness/core/bootstrap.hpp"
+#include "harness/core/equivalence_test.hpp"
 #include "harness/core/error.hpp"
+#include "harness/core/holm_correction.hpp"
 #include "harness/core/text_format.hpp"
 #include "harness/generators/generator_registry.hpp"
 #include "harness/report/table_claims.hpp"
@@ -22,7 +24,7 @@ std::string interval_text(double v, double low, double high) {
 // The changes and spread of one case along γ, with their bootstrap intervals. Each replicate
 // resamples every point's rounds independently (the points are separate runs) and takes the
 // reference's median from the same replicate.
-PdfSpread spread_of(const MeasuredSweep& s, const SweepFit& f, std::size_t axis, std::size_t ref,
+PdfSpread spread_of(const MeasuredSweep& s, const SweepFit& f, std::size_t axis, std::size_t ref, double band,
                     const PdfIndependenceOptions& o) {
   PdfSpread out;
   out.generator = f.generator;
@@ -65,6 +67,12 @@ PdfSpread spread_of(const MeasuredSweep& s, const SweepFit& f, std::size_t axis,
     spreads[b] = spread;
   }
   for (std::size_t k = 0; k < n; ++k) {
+    out.changes[k].reference = k == ref;
+    if (k != ref) {
+      const EquivalencePValues p = bootstrap_equivalence(changes[k], band);
+      out.changes[k].p_equivalent = p.equivalent;
+      out.changes[k].p_outside = p.outside;
+    }
     const PercentileInterval i = percentile_interval(changes[k], o.confidence);
     out.changes[k].low = i.low;
     out.changes[k].high = i.high;
@@ -79,16 +87,30 @@ PdfSpread spread_of(const MeasuredSweep& s, const SweepFit& f, std::size_t axis,
 void judge(PdfIndependence& j) {
   std::vector<std::string> refuted, open;
   bool any_fis = false, any_kmeans = false;
+  judge_fis_equivalence(j.spreads, j.alpha);
   for (const PdfSpread& p : j.spreads) {
     if (p.fis) any_fis = true;
     if (!p.fis && p.in_paper) any_kmeans = true;
-    if (!p.fis) continue;
+    if (!p.equivalence) continue;
+    const CaseEquivalence& e = *p.equivalence;
+    // The γ that decides: the largest TOST p-value (equivalence), the smallest outside one.
+    const GammaChange* worst = nullptr;
     for (const GammaChange& c : p.changes) {
-      const std::string what = p.generator + " " + p.view + " at γ=" + number_text(c.gamma, 4) + " moves " +
-                               interval_text(c.change, c.low, c.high);
-      if (c.low > j.band || c.high < -j.band) refuted.push_back(what + ", wholly outside ±" + percent(j.band));
-      else if (c.low < -j.band || c.high > j.band) open.push_back(what + ", across ±" + percent(j.band));
+      if (c.reference) continue;
+      if (e.verdict == "not equivalent" ? (!worst || c.p_outside < worst->p_outside)
+                                        : (!worst || c.p_equivalent > worst->p_equivalent))
+        worst = &c;
     }
+    const std::string at = worst ? " (at γ=" + number_text(worst->gamma, 4) + " moves " +
+                                       interval_text(worst->change, worst->low, worst->high) + ")"
+                                 : std::string();
+    if (e.verdict == "not equivalent")
+      refuted.push_back(p.generator + " " + p.view + " is not within ±" + percent(j.band) + at + ": p " +
+                        number_text(e.p_outside, 3) + " <= Holm level " + number_text(e.level_outside, 3));
+    else if (e.verdict == "inconclusive")
+      open.push_back(p.generator + " " + p.view + " not shown within ±" + percent(j.band) + at + ": TOST p " +
+                     number_text(e.p_equivalent, 3) + ", Holm level " + number_text(e.level_equivalent, 3) +
+                     (e.p_equivalent <= e.level_equivalent ? " (Holm stopped at a smaller p-value)" : ""));
   }
   for (const PdfSpread& k : j.spreads) {
     if (k.fis || !k.in_paper) continue;
@@ -124,6 +146,39 @@ void judge(PdfIndependence& j) {
 
 }  // namespace
 
+void judge_fis_equivalence(std::vector<PdfSpread>& spreads, double alpha) {
+  std::vector<std::size_t> fis;
+  std::vector<double> p_equivalent, p_outside;
+  for (std::size_t i = 0; i < spreads.size(); ++i) {
+    const PdfSpread& p = spreads[i];
+    if (!p.fis) continue;
+    double largest = 0, smallest = 1;
+    std::size_t tested = 0;
+    for (const GammaChange& c : p.changes) {
+      if (c.reference) continue;
+      largest = std::max(largest, c.p_equivalent);
+      smallest = std::min(smallest, c.p_outside);
+      ++tested;
+    }
+    if (tested == 0) largest = 1;
+    fis.push_back(i);
+    p_equivalent.push_back(largest);
+    p_outside.push_back(std::min(1.0, smallest * static_cast<double>(std::max<std::size_t>(tested, 1))));
+  }
+  if (fis.empty()) return;
+  const std::vector<HolmDecision> eq = holm_correction(p_equivalent, alpha);
+  const std::vector<HolmDecision> out = holm_correction(p_outside, alpha);
+  for (std::size_t k = 0; k < fis.size(); ++k) {
+    CaseEquivalence e;
+    e.p_equivalent = p_equivalent[k];
+    e.p_outside = p_outside[k];
+    e.level_equivalent = eq[k].level;
+    e.level_outside = out[k].level;
+    e.verdict = eq[k].rejected ? "equivalent" : out[k].rejected ? "not equivalent" : "inconclusive";
+    spreads[fis[k]].equivalence = e;
+  }
+}
+
 std::string verdict_word(const std::optional<bool>& holds) {
   return holds ? (*holds ? "holds" : "does not hold") : "inconclusive";
 }
@@ -145,6 +200,7 @@ std::vector<PdfIndependence> judge_pdf_independence(const MeasuredSweep& s, cons
       j.slice = f.slice;
       j.band = kFisPdfChangeMax;
       j.confidence = o.confidence;
+      j.alpha = o.alpha;
       j.resamples = o.resamples;
       out.push_back(std::move(j));
     }
@@ -157,7 +213,7 @@ std::vector<PdfIndependence> judge_pdf_independence(const MeasuredSweep& s, cons
     for (std::size_t k = 0; k < f.points.size(); ++k)
       if (s.axes[*axis].values[s.points[f.points[k]].value_index[*axis]].value == 1.0) ref = k;
     j.reference_gamma = s.axes[*axis].values[s.points[f.points[ref]].value_index[*axis]].value;
-    j.spreads.push_back(spread_of(s, f, *axis, ref, o));
+    j.spreads.push_back(spread_of(s, f, *axis, ref, j.band, o));
   }
   for (PdfIndependence& j : out) judge(j);
   return out;
@@ -171,16 +227,30 @@ SweepClaim pdf_independence_claim(const PdfIndependence& j, const std::string& t
   c.slice = j.slice;
   c.criterion = "change of each view's median total from γ=" + number_text(j.reference_gamma, 4) + " (bootstrap " +
                 number_text(100 * j.confidence, 3) + "% intervals, " + std::to_string(j.resamples) +
-                " resamples): every FIS change's interval within ±" + percent(j.band) +
-                " at every γ, and each paper k-means generator's spread (max |change| over γ) above "
-                "every FIS generator's on the same view; a FIS interval wholly outside the band or a "
-                "k-means spread wholly below a FIS one: does not hold; otherwise inconclusive";
+                " resamples): each FIS case (generator, view) equivalent within ±" + percent(j.band) +
+                " by TOST at every γ (p = the largest over γ), Holm-corrected across the FIS cases at α=" +
+                number_text(j.alpha, 3) +
+                ", and each paper k-means generator's spread (max |change| over γ) above every FIS generator's on "
+                "the same view; a FIS case outside the band at some γ (p = the smallest over γ times their "
+                "number, Holm-corrected) or a k-means spread wholly below a FIS one: does not hold; otherwise "
+                "inconclusive";
+  c.alpha = j.alpha;
   c.reference_gamma = j.reference_gamma;
   c.band = j.band;
   for (const PdfSpread& p : j.spreads) {
-    SweepClaimMeasure m{p.generator, p.view, p.fis ? "fis" : "kmeans", p.in_paper, p.spread, p.low, p.high, {}};
-    for (const GammaChange& g : p.changes)
-      m.changes.push_back(SweepClaimChange{g.gamma, g.point, g.change, g.low, g.high});
+    SweepClaimMeasure m{p.generator, p.view, p.fis ? "fis" : "kmeans", p.in_paper, p.spread, p.low, p.high, {}, {}};
+    for (const GammaChange& g : p.changes) {
+      SweepClaimChange change{g.gamma, g.point, g.change, g.low, g.high, {}, {}};
+      if (p.equivalence && !g.reference) {
+        change.p_equivalent = g.p_equivalent;
+        change.p_outside = g.p_outside;
+      }
+      m.changes.push_back(change);
+    }
+    if (p.equivalence)
+      m.equivalence =
+          SweepClaimEquivalence{p.equivalence->p_equivalent, p.equivalence->p_outside, p.equivalence->level_equivalent,
+                                p.equivalence->level_outside, p.equivalence->verdict};
     c.measured.push_back(std::move(m));
   }
   c.holds = j.holds;

@@ -5,10 +5,14 @@
 // from the reference γ (1, the capture's own PDF), and the largest such change, the spread, each
 // with a percentile bootstrap interval over the rounds (core/bootstrap.hpp).
 //
-// Holds when every FIS total's interval stays within ±kFisPdfChangeMax at every γ and each paper
-// k-means generator's spread interval lies above every FIS generator's on the same view. Does not
-// hold when a FIS total's interval lies wholly outside that band at some γ, or a paper k-means
-// spread lies wholly below a FIS one. Inconclusive otherwise.
+// The FIS side is an equivalence test (DESIGN.md §10.1): per FIS case (generator, view) the TOST
+// at ±kFisPdfChangeMax of its change at every γ (core/equivalence_test.hpp); the case is
+// equivalent when every γ is (an intersection-union test: its p-value is the largest over γ), not
+// equivalent when some γ lies outside the band (its p-value the smallest over γ times their
+// number), each family Holm-corrected across the FIS cases at alpha (core/holm_correction.hpp).
+// Holds when every FIS case is equivalent and each paper k-means generator's spread interval lies
+// above every FIS generator's on the same view. Does not hold when a FIS case is not equivalent,
+// or a paper k-means spread lies wholly below a FIS one. Inconclusive otherwise.
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -26,6 +30,16 @@ struct GammaChange {
   std::size_t point = 0;  // index into MeasuredSweep::points
   double change = 0;      // median total(γ) / median total(reference γ) - 1
   double low = 0, high = 0;
+  bool reference = false;                  // the reference γ itself: change 0 by construction, not tested
+  double p_equivalent = 1, p_outside = 1;  // TOST at ±band (core/equivalence_test.hpp); 1 at the reference
+};
+
+// A FIS case's equivalence verdict: its p-values over γ and the Holm levels they were held to.
+struct CaseEquivalence {
+  double p_equivalent = 1;  // the largest over γ (every γ must be within the band)
+  double p_outside = 1;     // the smallest over γ times the number of γ (some γ outside), at most 1
+  double level_equivalent = 0, level_outside = 0;  // Holm's alpha / (m - rank + 1) in each family
+  std::string verdict;                             // "equivalent", "not equivalent", "inconclusive"
 };
 
 struct PdfSpread {
@@ -35,6 +49,7 @@ struct PdfSpread {
   std::vector<GammaChange> changes;  // by γ, the reference included (change 0)
   double spread = 0;                 // max |change| over γ
   double low = 0, high = 0;
+  std::optional<CaseEquivalence> equivalence;  // FIS cases
 };
 
 struct PdfIndependence {
@@ -42,6 +57,7 @@ struct PdfIndependence {
   double reference_gamma = 1;
   double band = 0;  // kFisPdfChangeMax
   double confidence = 0;
+  double alpha = 0;  // the family-wise level of the equivalence tests
   std::size_t resamples = 0;
   std::vector<PdfSpread> spreads;  // per case, in the points' case order
   std::optional<bool> holds;
@@ -50,7 +66,8 @@ struct PdfIndependence {
 
 struct PdfIndependenceOptions {
   std::size_t resamples = 2000;
-  double confidence = 0.95;
+  double confidence = 0.95;            // of the intervals shown
+  double alpha = 0.05;                 // of the equivalence tests, across the FIS cases (Holm)
   std::uint64_t seed = 0x70646669ULL;  // same input and seed -> the same intervals everywhere
 };
 
@@ -62,6 +79,10 @@ std::vector<PdfIndependence> judge_pdf_independence(const MeasuredSweep& sweep, 
 
 // The sweep document's claim ("id": "pdf_independence"); `text` is the paper's claim.
 SweepClaim pdf_independence_claim(const PdfIndependence& judgement, const std::string& text, bool informative);
+
+// Each FIS case's verdict from its two p-values, Holm-corrected across the cases at `alpha`; the
+// other spreads are left alone. (Exposed so a test can give it p-values directly.)
+void judge_fis_equivalence(std::vector<PdfSpread>& spreads, double alpha);
 
 // "holds", "does not hold", "inconclusive".
 std::string verdict_word(const std::optional<bool>& holds);

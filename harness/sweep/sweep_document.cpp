@@ -34,8 +34,8 @@ SweepPoint point_model(const SweepPointResult& p, std::size_t index) {
   out.capture_dir = p.capture_dir;
   out.capture = p.capture;
   out.config = p.config;
-  out.timing = SweepPointTiming{p.time_cap_s, p.timing.repetitions, p.timing.timed_seconds, p.timing.stop_reason,
-                                p.timing.worst_noise};
+  out.timing = SweepPointTiming{p.time_cap_s,         p.timing.repetitions, p.timing.timed_seconds,
+                                p.timing.stop_reason, p.timing.worst_noise, p.block_rounds};
   for (const CaseTiming& c : p.timing.cases) out.cases.push_back(case_model(c));
   if (p.pdf_sharpness) {
     SweepPdfSharpness s;
@@ -101,8 +101,11 @@ SweepModel sweep_document(const MeasuredSweep& s, const std::vector<SweepFit>& f
   for (const SweepAxis& a : s.axes) m.axes.push_back(axis_model(a));
   m.time_budget_s = s.time_budget_s;
   m.time_budget_rule =
-      "each point's time cap is the budget / the number of points; the minimum "
-      "repetitions always run, so a point may exceed its cap";
+      s.order ? "each visit's time cap is the budget / (the number of points x the blocks), a point's the sum over its "
+                "visits; the minimum repetitions always run, so a visit may exceed its cap"
+              : "each point's time cap is the budget / the number of points; the minimum "
+                "repetitions always run, so a point may exceed its cap";
+  if (s.order) m.order = SweepOrderModel{s.order->blocks, s.order->seed, s.order->visits};
   m.fit_method =
       "least-squares slope of ln(median ms) over ln(growth_x) along one axis, the other axes "
       "held (a slice); percentile bootstrap over each point's rounds (DESIGN.md §9.1); judged "

@@ -39,6 +39,10 @@ std::string header(const SweepModel& s) {
   md += " (" + std::to_string(s.points.size()) + " points). Median ms (IQR) per generator, view and phase";
   if (s.time_budget_s) md += "; time budget " + number_text(*s.time_budget_s, 4) + " s split over the points";
   md += ".\n";
+  if (s.order)
+    md += "Timed in " + std::to_string(s.order->blocks) +
+          " repeated blocks, each visiting every point once in an order drawn from seed " +
+          std::to_string(s.order->seed) + "; a point's rounds are pooled over its visits.\n";
   if (!s.beyond_device.empty()) {
     md += "\nBeyond this device, not timed (a case: its generator and view; else the whole point):\n\n";
     for (const SweepBeyondDevice& b : s.beyond_device)
@@ -119,23 +123,36 @@ std::string pdf_frequency_table(const SweepModel& s) {
 }
 
 std::string claim_table(const SweepClaim& c) {
+  // Files written before the equivalence test (no alpha) keep their own wording and columns.
+  const bool tost = c.alpha.has_value();
   std::string md =
       "\n## PDF independence" + (c.slice.empty() ? std::string() : " (" + sweep_slice_text(c.slice) + ")") + ": " +
       verdict_word(c.holds) + "\n\nChange of each view's median total from γ=" + number_text(c.reference_gamma, 4) +
-      ", with 95 % bootstrap intervals; FIS must stay within ±" + number_text(100 * c.band, 3) +
-      " % and each paper k-means generator must move more than either FIS.\n\n";
+      ", with 95 % bootstrap intervals; ";
+  if (tost)
+    md += "each FIS case must be shown equivalent within ±" + number_text(100 * c.band, 3) +
+          " % at every γ (TOST, Holm-corrected across the FIS cases at α=" + number_text(*c.alpha, 3) +
+          ") and each paper k-means generator must move more than either FIS.\n\n";
+  else
+    md += "FIS must stay within ±" + number_text(100 * c.band, 3) +
+          " % and each paper k-means generator must move more than either FIS.\n\n";
   md += "| generator | view |";
   const std::size_t gammas = c.measured.empty() ? 0 : c.measured.front().changes.size();
   for (std::size_t k = 0; k < gammas; ++k) md += " γ=" + number_text(c.measured.front().changes[k].gamma, 4) + " |";
-  md += " spread |\n|---|---|";
+  md += tost ? " spread | equivalence (TOST p, Holm level) |\n|---|---|" : " spread |\n|---|---|";
   for (std::size_t k = 0; k < gammas; ++k) md += "---:|";
-  md += "---:|\n";
+  md += tost ? "---:|---|\n" : "---:|\n";
   const auto pct = [](double v) { return number_text(100 * v, 3) + " %"; };
   for (const SweepClaimMeasure& p : c.measured) {
     md += "| " + p.generator + " | " + p.view + " |";
     for (const SweepClaimChange& g : p.changes)
       md += " " + pct(g.change) + " [" + pct(g.low) + ", " + pct(g.high) + "] |";
-    md += " " + pct(p.spread) + " [" + pct(p.spread_low) + ", " + pct(p.spread_high) + "] |\n";
+    md += " " + pct(p.spread) + " [" + pct(p.spread_low) + ", " + pct(p.spread_high) + "] |";
+    if (tost)
+      md += p.equivalence ? " " + p.equivalence->verdict + " (p " + number_text(p.equivalence->p_equivalent, 3) +
+                                ", level " + number_text(p.equivalence->level_equivalent, 3) + ") |"
+                          : " |";
+    md += "\n";
   }
   if (!c.note.empty()) md += "\n" + c.note + "\n";
   return md;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <string>
 
 #include "harness/core/error.hpp"
 #include "harness/generators/generator_registry.hpp"
@@ -41,6 +42,9 @@ void check_sweep_options(const SweepOptions& o) {
   t.timing.check();
   if (o.time_budget_s && !(std::isfinite(*o.time_budget_s) && *o.time_budget_s > 0))
     throw UsageError("--time-budget must be a positive number of seconds");
+  if (o.blocks < 1 || o.blocks > kMaxSweepBlocks)
+    throw UsageError("--blocks must be 1 to " + std::to_string(kMaxSweepBlocks) + " (got " + std::to_string(o.blocks) +
+                     ")");
 }
 
 }  // namespace vsgl

@@ -85,13 +85,4 @@ SweepPointOutcome time_sweep_point(Device& device, SweepCaptureCache& captures, 
   return out;
 }
 
-void add_point_outcome(MeasuredSweep& m, SweepPointOutcome outcome) {
-  if (m.points.empty() && outcome.scene) {
-    m.scene = std::move(*outcome.scene);
-    m.paper_table = outcome.paper_table;
-  }
-  for (BeyondDevicePoint& b : outcome.beyond_device) m.beyond_device.push_back(std::move(b));
-  if (outcome.timed) m.points.push_back(std::move(*outcome.timed));
-}
-
 }  // namespace vsgl

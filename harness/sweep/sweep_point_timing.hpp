@@ -29,8 +29,4 @@ struct SweepPointOutcome {
 SweepPointOutcome time_sweep_point(Device& device, SweepCaptureCache& captures, const SweepPointSetup& setup,
                                    const SweepLog& log);
 
-// The outcome added to the sweep: the point timed, the points and cases beyond the device, and the
-// scene taken from the first capture had before any point is timed.
-void add_point_outcome(MeasuredSweep& sweep, SweepPointOutcome outcome);
-
 }  // namespace vsgl

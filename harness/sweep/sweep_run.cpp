@@ -1,6 +1,7 @@
 #include "harness/sweep/sweep_run.hpp"
 
 #include "harness/core/error.hpp"
+#include "harness/sweep/sweep_blocks.hpp"
 #include "harness/sweep/sweep_capture_cache.hpp"
 #include "harness/sweep/sweep_files.hpp"
 #include "harness/sweep/sweep_markdown.hpp"
@@ -47,12 +48,20 @@ SweepOutcome run_sweep(Device& device, const SweepOptions& o, const std::functio
   const SweepWriter writer(o, device.info());
   SweepCaptureCache captures(device, o);
 
-  MeasuredSweep m = empty_sweep(o);
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const SweepPointSetup setup = sweep_point_setup(o, i, points[i], points.size());
-    add_point_outcome(m, time_sweep_point(device, captures, setup, log));
-    writer.write_partial(m);
-  }
+  // Repeated blocks (sweep_blocks.hpp): every block visits every point once, in a drawn order; the
+  // budget is shared by all the visits.
+  const SweepOrder order = sweep_visit_order(points.size(), o.blocks, o.order_seed);
+  MeasuredSweep empty = empty_sweep(o);
+  if (o.blocks > 1) empty.order = order;
+  PooledSweep pooled(std::move(empty), points.size(), o.blocks > 1);
+  for (const std::vector<std::size_t>& block : order.visits)
+    for (const std::size_t i : block) {
+      if (pooled.beyond_device(i)) continue;
+      const SweepPointSetup setup = sweep_point_setup(o, i, points[i], points.size() * o.blocks);
+      pooled.add(i, time_sweep_point(device, captures, setup, log));
+      writer.write_partial(pooled.sweep());
+    }
+  MeasuredSweep m = pooled.take();
   require_two_points(m, points.size(), device.info().name, o.out_dir);
   m.complete = true;
 
