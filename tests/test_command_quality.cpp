@@ -96,6 +96,15 @@ TEST(QualityCli, TinyCaptureWritesJsonMarkdownAndPictures) {
                 2e-3)
         << view;
   }
+  // ... and over the 3 static frames' lattice offsets, for the light view.
+  for (const char* g : {"fis_tok15", "fis_modified"}) {
+    const auto& o = j["views"]["light_view"]["generators"][g]["flux_origin"]["over_frames"];
+    EXPECT_EQ(o["frames"], 3) << g;
+    EXPECT_LE(o["ratio_min"].get<double>(), o["ratio_mean"].get<double>()) << g;
+    EXPECT_GE(o["ratio_max"].get<double>(), o["ratio_mean"].get<double>()) << g;
+    EXPECT_EQ(o["gathered_mean"].size(), j["views"]["light_view"]["flux_by_pdf"]["flux_share"].size()) << g;
+  }
+  EXPECT_FALSE(j["views"]["camera_view"]["generators"]["fis_tok15"]["flux_origin"].contains("over_frames"));
   // The reference: RSM stride 2 (--reference-rsm 32 of 64), the coarser strides 16, 8, 4 against it
   // on the same pixels, the given camera stride, and the PDF-support reference beside it.
   const auto& ref = j["reference"];

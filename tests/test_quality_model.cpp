@@ -96,7 +96,15 @@ TEST(QualityModel, FluxOriginRoundTripsAndRenders) {
   light.flux_by_pdf =
       FluxByPdfSummary{{1e-3, 1e-2, 1e-1}, {10, 20, 30, 40, 0}, {0.25, 0.125, 0.5, 0.125, 0.0}, 2.0, "d"};
   light.generators.at("fis_modified").flux_origin =
-      FluxOriginSummary{{0.0625, 0.0, 0.5, 0.125, 0.0}, {0.0, 0.0, 0.0, 0.0, 0.0}, 0.6875, 1.0, 0.0};
+      FluxOriginSummary{{0.0625, 0.0, 0.5, 0.125, 0.0}, {0.0, 0.0, 0.0, 0.0, 0.0}, 0.6875, 1.0, 0.0, std::nullopt};
+  light.generators.at("fis_tok15").flux_origin = FluxOriginSummary{
+      {0.125, 0.0, 0.5, 0.125, 0.0},
+      {0.0625, 0.0, 0.0, 0.0, 0.0},
+      0.75,
+      1.125,
+      0.03125,
+      FluxOriginFrames{
+          4, {0.125, 0.0, 0.5, 0.125, 0.0}, {0.01, 0.0, 0.02, 0.0, 0.0}, 0.75, 0.0625, 0.625, 0.875, 0.25}};
   const nlohmann::json doc = m;
   const nlohmann::json again = quality_model_from_json(doc, "the report");
   EXPECT_EQ(again.dump(1), doc.dump(1));
@@ -105,6 +113,9 @@ TEST(QualityModel, FluxOriginRoundTripsAndRenders) {
   EXPECT_NE(md.find("## Where the power comes from"), std::string::npos);
   EXPECT_NE(md.find("| q = 0 | 10 | 0.25 |"), std::string::npos) << md;
   EXPECT_NE(md.find("| 0.001 <= e < 0.01 | 30 | 0.5 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("fis_tok15 over 4 lattice offsets: sum Phi / flux mean 0.75 (stdev 0.0625, 0.625 to 0.875)"),
+            std::string::npos)
+      << md;
 }
 
 TEST(QualityModel, MissingFieldsAreNamedByPointer) {

@@ -83,9 +83,20 @@ ViewQuality read_view(const JsonReader& r, const json& v, const std::string& p) 
     if (g.contains("flux_origin")) {
       const json& f = r.object(g, gp, "flux_origin");
       const std::string fp = gp + "/flux_origin";
-      q.flux_origin = FluxOriginSummary{r.numbers(f, fp, "gathered"), r.numbers(f, fp, "gathered_by_oversized"),
+      q.flux_origin = FluxOriginSummary{r.numbers(f, fp, "gathered"),
+                                        r.numbers(f, fp, "gathered_by_oversized"),
                                         r.number(f, fp, "attributed_power_ratio"),
-                                        r.number(f, fp, "pdf_weighted_count"), r.number(f, fp, "oversized_kernels")};
+                                        r.number(f, fp, "pdf_weighted_count"),
+                                        r.number(f, fp, "oversized_kernels"),
+                                        std::nullopt};
+      if (f.contains("over_frames")) {
+        const json& o = r.object(f, fp, "over_frames");
+        const std::string op = fp + "/over_frames";
+        q.flux_origin->over_frames = FluxOriginFrames{
+            r.uint32(o, op, "frames"),     r.numbers(o, op, "gathered_mean"),      r.numbers(o, op, "gathered_stdev"),
+            r.number(o, op, "ratio_mean"), r.number(o, op, "ratio_stdev"),         r.number(o, op, "ratio_min"),
+            r.number(o, op, "ratio_max"),  r.number(o, op, "oversized_share_mean")};
+      }
     }
     out.generators[name] = q;
   }
@@ -204,6 +215,17 @@ json view_json(const ViewQuality& v) {
                                {"attributed_power_ratio", f.attributed_power_ratio},
                                {"pdf_weighted_count", f.pdf_weighted_count},
                                {"oversized_kernels", f.oversized_kernels}};
+      if (f.over_frames) {
+        const FluxOriginFrames& o = *f.over_frames;
+        gj["flux_origin"]["over_frames"] = json{{"frames", o.frames},
+                                                {"gathered_mean", o.gathered_mean},
+                                                {"gathered_stdev", o.gathered_stdev},
+                                                {"ratio_mean", o.ratio_mean},
+                                                {"ratio_stdev", o.ratio_stdev},
+                                                {"ratio_min", o.ratio_min},
+                                                {"ratio_max", o.ratio_max},
+                                                {"oversized_share_mean", o.oversized_share_mean}};
+      }
     }
     j["generators"][name] = gj;
   }

@@ -42,9 +42,18 @@ struct PowerSummary {
 
 // Where a FIS generator's power comes from (quality/flux_origin.hpp; schema 4): per class of
 // texels by expected kernel centres, the flux each class gives the VSGLs, as a share of the view's.
+// The same over the static frames (lattice offsets) of the light view: one offset's sum Phi / flux
+// spreads by several percent where a few kernels carry much of the power.
+struct FluxOriginFrames {
+  uint32_t frames = 0;
+  std::vector<double> gathered_mean, gathered_stdev;  // per class; stdev: sample (n - 1)
+  double ratio_mean = 0, ratio_stdev = 0, ratio_min = 0, ratio_max = 0;
+  double oversized_share_mean = 0;  // mean over frames of the power share of oversized kernels
+};
 struct FluxOriginSummary {
   std::vector<double> gathered, gathered_by_oversized;  // one per class of the view's flux_by_pdf
   double attributed_power_ratio = 0, pdf_weighted_count = 0, oversized_kernels = 0;
+  std::optional<FluxOriginFrames> over_frames;  // light view, FIS generators
 };
 
 struct GeneratorQuality {

@@ -312,6 +312,18 @@ void write_flux_origin(std::ostringstream& md, const QualityModel& m) {
     md << "\n| oversized kernels | | |";
     for (const auto& g : fis) md << " " << num(v.generators.at(g).flux_origin->oversized_kernels) << " |";
     md << "\n";
+    for (const auto& g : fis) {
+      const auto& frames = v.generators.at(g).flux_origin->over_frames;
+      if (!frames) continue;
+      md << "\n"
+         << g << " over " << frames->frames << " lattice offsets: sum Phi / flux mean " << num(frames->ratio_mean)
+         << " (stdev " << num(frames->ratio_stdev) << ", " << num(frames->ratio_min) << " to " << num(frames->ratio_max)
+         << "), share of the power from oversized kernels " << num(frames->oversized_share_mean)
+         << "; per class (mean, stdev):";
+      for (std::size_t c = 0; c < frames->gathered_mean.size(); ++c)
+        md << (c == 0 ? " " : ", ") << num(frames->gathered_mean[c]) << " (" << num(frames->gathered_stdev[c]) << ")";
+      md << ".\n";
+    }
   }
 }
 

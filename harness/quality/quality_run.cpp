@@ -157,8 +157,42 @@ FluxByPdfSummary flux_by_pdf_summary(const FluxByPdf& f) {
 
 FluxOriginSummary flux_origin_summary(const FluxOrigin& f) {
   return {std::vector<double>(f.gathered.begin(), f.gathered.end()),
-          std::vector<double>(f.gathered_by_oversized.begin(), f.gathered_by_oversized.end()), f.attributed_power_ratio,
-          f.pdf_weighted_count, f.oversized_kernels};
+          std::vector<double>(f.gathered_by_oversized.begin(), f.gathered_by_oversized.end()),
+          f.attributed_power_ratio,
+          f.pdf_weighted_count,
+          f.oversized_kernels,
+          std::nullopt};
+}
+
+FisVariant fis_variant(const std::string& name) {
+  return name == kFisTok15 ? FisVariant::kTok15 : FisVariant::kModified;
+}
+
+// Mean and sample stdev over the frames of each class's gathered share and of sum Phi / flux.
+FluxOriginFrames flux_origin_frames(const std::vector<FluxOrigin>& origins) {
+  FluxOriginFrames out;
+  out.frames = static_cast<uint32_t>(origins.size());
+  for (std::size_t c = 0; c < kFluxClasses; ++c) {
+    std::vector<double> v;
+    for (const FluxOrigin& o : origins) v.push_back(o.gathered[c]);
+    const ValueSummary s = summarize_values(v);
+    out.gathered_mean.push_back(s.mean);
+    out.gathered_stdev.push_back(s.stdev);
+  }
+  std::vector<double> ratios, oversized;
+  for (const FluxOrigin& o : origins) {
+    ratios.push_back(o.attributed_power_ratio);
+    double by_oversized = 0;
+    for (double g : o.gathered_by_oversized) by_oversized += g;
+    oversized.push_back(by_oversized / o.attributed_power_ratio);
+  }
+  const ValueSummary r = summarize_values(ratios);
+  out.ratio_mean = r.mean;
+  out.ratio_stdev = r.stdev;
+  out.ratio_min = r.min;
+  out.ratio_max = r.max;
+  out.oversized_share_mean = summarize_values(oversized).mean;
+  return out;
 }
 
 ImageErrorSummary error_summary(const ImageError& e) { return {e.relative_rmse, e.p99_pixel_error}; }
@@ -244,8 +278,8 @@ struct QualityRun {
         g.power = power_summary(power_metrics(run.vsgls, data.flux));
         if (is_fis(name)) {
           g.coverage = coverage_with_floor(run.vsgls, data.pdf, floor_view, floor_pdf, name, n, config.K);
-          const FisVariant variant = name == kFisTok15 ? FisVariant::kTok15 : FisVariant::kModified;
-          g.flux_origin = flux_origin_summary(flux_origin(run.vsgls, variant, data.texel_flux, data.pdf, config.K));
+          g.flux_origin =
+              flux_origin_summary(flux_origin(run.vsgls, fis_variant(name), data.texel_flux, data.pdf, config.K));
           const std::string file = scene + "_coverage_" + view_name(kind) + "_" + name + ".png";
           result.pictures.push_back(
               {file,
@@ -396,18 +430,27 @@ struct QualityRun {
   void flicker_and_k_sweep(QualityModel& out, QualityResult& result, const ReferenceShading& reference,
                            const MipPyramid& light_pdf, double light_flux) const {
     const uint32_t flicker_stride = stride_for_width(capture.gbuffer.width, config.flicker_width);
+    const std::vector<float> light_texel_flux = view_data(capture, ViewKind::kLight).texel_flux;
+    // The flux origin of every frame (FIS, the configured K): where the power comes from, over offsets.
+    std::vector<FluxOrigin> origins;
     const auto flicker_of = [&](const std::string& name, float K) {
       FlickerAccumulator acc;
+      origins.clear();
       for (uint32_t f = 0; f < config.frames; ++f) {
         const GeneratorRun run = run_generator(device, light, name, config, config.light_vsgls, K, frame_offset_bits(f));
         acc.add_frame(shade_camera_view(device, camera, run.generator->vsgls(), run.generator->vsgl_count(), flicker_stride),
                       power_sum(run.vsgls));
+        if (is_fis(name) && K == config.K)
+          origins.push_back(flux_origin(run.vsgls, fis_variant(name), light_texel_flux, light_pdf, K));
       }
       return StaticFlicker{acc.weighted_cv(), acc.power_stdev(), acc.power_relative_stdev(), acc.frames()};
     };
     for (const auto& name : config.generators) {
       const auto tg = Clock::now();
       out.flicker_static[name] = flicker_of(name, config.K);
+      auto& light_view = out.views.at(view_name(ViewKind::kLight));
+      if (!origins.empty() && light_view.generators.at(name).flux_origin)
+        light_view.generators.at(name).flux_origin->over_frames = flux_origin_frames(origins);
       say("static flicker " + name + ": " + std::to_string(seconds_since(tg)) + " s");
     }
     out.flicker_image = json::array({shaded_extent(capture.gbuffer.width, flicker_stride),

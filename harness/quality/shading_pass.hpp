@@ -28,9 +28,10 @@ struct DeviceView;
 uint32_t shaded_extent(uint32_t side, uint32_t stride);
 
 // At most this many VSGL evaluations (pixels x VSGLs) per dispatch. lavapipe on 2 loaded cores
-// evaluates about 3e7 per second (the quality run's reference, DESIGN.md §11a), so a chunk takes
-// about 1 s there; a discrete GPU does 1e10 or more, a few ms: both far below the 2 s a Windows
-// driver allows one submission (TDR), for any number of VSGLs (the converged reference has 10^5).
+// evaluates about 2e7 per second (the quality run's reference, DESIGN.md §11a), so a chunk takes
+// 1-2 s there (a CPU driver has no watchdog); a discrete GPU does 1e10 or more, a few ms, far below
+// the 2 s a Windows driver allows one submission (TDR), for any number of VSGLs (the converged
+// reference has 10^5).
 inline constexpr uint64_t kShadeEvaluationsPerDispatch = uint64_t{1} << 25;
 // VSGLs per dispatch for an image of `pixels`: kShadeEvaluationsPerDispatch / pixels rounded down
 // to a whole tile of the kernel (kShadeGroupSize^2), at least one tile.
