@@ -5,6 +5,9 @@
 // k > 1 gives a ceil(W / k) x ceil(H / k) preview. Radiance toward the camera is the sum over the
 // VSGLs of vsgl_radiance_surface() in index order (the CPU twin, harness/quality/shading_pass.cpp, sums in
 // the same order). The VSGLs stream through shared memory in tiles, one VSGL per thread per tile.
+// A long sum is split into chunks of VSGLs, one dispatch each (so none runs long enough to trip a
+// driver's watchdog); a later chunk starts from the sum the previous one stored and adds in the
+// same index order, so the chunked image is bit for bit the one-dispatch image.
 // Output: linear radiance (rgb, 1) per valid pixel, (0, 0, 0, 0) where the G-buffer has no surface.
 #include "vsgl_math.glsl"
 #include "sg_eval.glsl"
@@ -15,7 +18,7 @@ const uint TILE = gl_WorkGroupSize.x * gl_WorkGroupSize.y;  // = threads per gro
 
 #include "view_layers.glsl"  // the G-buffer, DeviceView layout
 layout(std430, binding = 1) readonly buffer Lights { Vsgl vsgls[]; };
-layout(std430, binding = 2) writeonly buffer Radiance { vec4 radiance[]; };
+layout(std430, binding = 2) buffer Radiance { vec4 radiance[]; };
 layout(push_constant) uniform PushBlock { ShadePush pc; };
 
 shared Vsgl tile[TILE];
@@ -31,10 +34,11 @@ void main() {
   bool valid = inside && t0.w > 0.5;
   vec3 wo = normalize(pc.camera_position.xyz - t0.xyz);
   vec3 sum = vec3(0.0);
+  if (inside && valid && pc.accumulate != 0u) sum = radiance[o.y * pc.out_width + o.x].xyz;
   // Every thread of the group takes part in the loads and barriers, inside the image or not.
   for (uint base = 0u; base < pc.vsgl_count; base += TILE) {
     uint c = base + gl_LocalInvocationIndex;
-    if (c < pc.vsgl_count) tile[gl_LocalInvocationIndex] = vsgls[c];
+    if (c < pc.vsgl_count) tile[gl_LocalInvocationIndex] = vsgls[pc.first_vsgl + c];
     barrier();
     uint count = min(TILE, pc.vsgl_count - base);
     if (valid)

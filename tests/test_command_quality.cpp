@@ -47,7 +47,7 @@ TEST(QualityCli, TinyCaptureWritesJsonMarkdownAndPictures) {
   std::ifstream in(dir / "quality.json");
   const auto j = nlohmann::json::parse(in);
   EXPECT_EQ(j["schema"], "vsgl-quality");
-  EXPECT_EQ(j["schema_version"], 3);  // stdev: sample (n - 1) since version 3
+  EXPECT_EQ(j["schema_version"], 4);  // stdev: sample (n - 1) since 3; flux origin and converged reference since 4
   // What the writer writes is what the committed schema describes.
   for (const std::string& problem : validate_against_schema(
            j, test::read_json(std::filesystem::path(VSGL_SOURCE_DIR) / "results/schema/quality.schema.json")))
@@ -79,6 +79,44 @@ TEST(QualityCli, TinyCaptureWritesJsonMarkdownAndPictures) {
   const double power = j["views"]["light_view"]["generators"]["fis_modified"]["power"]["power_ratio"];
   EXPECT_GT(power, 0.5);
   EXPECT_LT(power, 1.5);
+  // Where the power comes from (flux_origin.hpp): the classes sum to the records' sum Phi / flux, the
+  // view's flux shares to 1, and Eq. 5 keeps a PDF-proportional flux's power (count 1).
+  for (const char* view : {"light_view", "camera_view"}) {
+    double shares = 0;
+    for (const auto& f : j["views"][view]["flux_by_pdf"]["flux_share"]) shares += f.get<double>();
+    EXPECT_NEAR(shares, 1.0, 1e-9) << view;
+    for (const char* g : {"fis_tok15", "fis_modified"}) {
+      const auto& o = j["views"][view]["generators"][g]["flux_origin"];
+      double gathered = 0;
+      for (const auto& f : o["gathered"]) gathered += f.get<double>();
+      const double ratio = j["views"][view]["generators"][g]["power"]["power_ratio"];
+      EXPECT_NEAR(gathered, ratio, 2e-3 * ratio) << view << " " << g;
+    }
+    EXPECT_NEAR(j["views"][view]["generators"]["fis_modified"]["flux_origin"]["pdf_weighted_count"].get<double>(), 1.0,
+                2e-3)
+        << view;
+  }
+  // ... and over the 3 static frames' lattice offsets, for the light view.
+  for (const char* g : {"fis_tok15", "fis_modified"}) {
+    const auto& o = j["views"]["light_view"]["generators"][g]["flux_origin"]["over_frames"];
+    EXPECT_EQ(o["frames"], 3) << g;
+    EXPECT_LE(o["ratio_min"].get<double>(), o["ratio_mean"].get<double>()) << g;
+    EXPECT_GE(o["ratio_max"].get<double>(), o["ratio_mean"].get<double>()) << g;
+    EXPECT_EQ(o["gathered_mean"].size(), j["views"]["light_view"]["flux_by_pdf"]["flux_share"].size()) << g;
+  }
+  EXPECT_FALSE(j["views"]["camera_view"]["generators"]["fis_tok15"]["flux_origin"].contains("over_frames"));
+  // The reference: RSM stride 2 (--reference-rsm 32 of 64), the coarser strides 16, 8, 4 against it
+  // on the same pixels, the given camera stride, and the PDF-support reference beside it.
+  const auto& ref = j["reference"];
+  EXPECT_EQ(ref["rsm_stride"], 2);
+  ASSERT_EQ(ref["convergence"].size(), 4u);
+  EXPECT_EQ(ref["convergence"][0]["rsm_stride"], 16);
+  EXPECT_EQ(ref["convergence"][3]["rsm_stride"], 2);
+  EXPECT_EQ(ref["convergence"][3]["relative_rmse"], 0.0);
+  EXPECT_EQ(ref["own_error"], ref["convergence"][2]["relative_rmse"]);
+  EXPECT_EQ(ref["camera_size"]["error_stride"], 2);
+  EXPECT_LE(ref["support"]["vpls"].get<uint64_t>(), ref["vpls"].get<uint64_t>());
+  EXPECT_TRUE(j["reference_error_support"].contains("fis_modified"));
 }
 
 }  // namespace

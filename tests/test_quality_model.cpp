@@ -89,6 +89,36 @@ TEST(QualityModel, TypedFieldsAreWrittenOverTheRawOnes) {
   EXPECT_EQ(j["views"]["light_view"]["generators"]["fis_modified"]["power"]["power_ratio"], 0.5);
 }
 
+// Schema 4's flux origin (quality/flux_origin.hpp) reads, writes back as written, and renders.
+TEST(QualityModel, FluxOriginRoundTripsAndRenders) {
+  QualityModel m = quality_model_from_json(read_report(committed_reports().front()), "the report");
+  m.schema_version = 4;
+  ViewQuality& light = m.views.at("light_view");
+  light.flux_by_pdf =
+      FluxByPdfSummary{{1e-3, 1e-2, 1e-1}, {10, 20, 30, 40, 0}, {0.25, 0.125, 0.5, 0.125, 0.0}, 2.0, "d"};
+  light.generators.at("fis_modified").flux_origin =
+      FluxOriginSummary{{0.0625, 0.0, 0.5, 0.125, 0.0}, {0.0, 0.0, 0.0, 0.0, 0.0}, 0.6875, 1.0, 0.0, std::nullopt};
+  light.generators.at("fis_tok15").flux_origin = FluxOriginSummary{
+      {0.125, 0.0, 0.5, 0.125, 0.0},
+      {0.0625, 0.0, 0.0, 0.0, 0.0},
+      0.75,
+      1.125,
+      0.03125,
+      FluxOriginFrames{
+          4, {0.125, 0.0, 0.5, 0.125, 0.0}, {0.01, 0.0, 0.02, 0.0, 0.0}, 0.75, 0.0625, 0.625, 0.875, 0.25}};
+  const nlohmann::json doc = m;
+  const nlohmann::json again = quality_model_from_json(doc, "the report");
+  EXPECT_EQ(again.dump(1), doc.dump(1));
+  EXPECT_TRUE(doc["views"]["light_view"]["flux_by_pdf"]["texels"][0].is_number_integer());
+  const std::string md = quality_markdown(m, {});
+  EXPECT_NE(md.find("## Where the power comes from"), std::string::npos);
+  EXPECT_NE(md.find("| q = 0 | 10 | 0.25 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| 0.001 <= e < 0.01 | 30 | 0.5 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("fis_tok15 over 4 lattice offsets: sum Phi / flux mean 0.75 (stdev 0.0625, 0.625 to 0.875)"),
+            std::string::npos)
+      << md;
+}
+
 TEST(QualityModel, MissingFieldsAreNamedByPointer) {
   nlohmann::json doc = read_report(committed_reports().front());
   doc["views"]["light_view"]["generators"]["fis_tok15"]["coverage"]["excess"]["eq3"].erase("count_error");

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "gpu_test.hpp"
 #include "harness/scene/brsm_pdf.hpp"
@@ -167,6 +168,46 @@ TEST_F(QualityGpuTest, TexelFootprintAreaMatchesNeighbourSpacing) {
       ++checked;
     }
   EXPECT_GT(checked, 50u);
+}
+
+// The PDF-support reference keeps exactly the lit texels with PDF > 0, with the same records as the
+// all-lit one there; a capture whose PDF is zero on every lit texel has none and is refused.
+TEST_F(QualityGpuTest, SupportReferenceKeepsTheLitTexelsWithPositivePdf) {
+  Capture c = tiny();
+  // Zero the PDF on the left half, so the support is a strict subset whatever the scene lights.
+  for (uint32_t y = 0; y < c.rsm.height; ++y)
+    for (uint32_t x = 0; x < c.rsm.width / 2; ++x) c.rsm.at(kPdf, x, y) = 0.0f;
+  const auto all = reference_vpls(c.rsm, c.meta.light, 1, VplExtent::kTexelFootprint, VplSet::kAllLit);
+  const auto support = reference_vpls(c.rsm, c.meta.light, 1, VplExtent::kTexelFootprint, VplSet::kPdfSupport);
+  std::size_t expected = 0;
+  for (uint32_t y = 0; y < c.rsm.height; ++y)
+    for (uint32_t x = 0; x < c.rsm.width; ++x) {
+      const float f = c.rsm.at(kDR, x, y) + c.rsm.at(kDG, x, y) + c.rsm.at(kDB, x, y) + c.rsm.at(kSR, x, y) +
+                      c.rsm.at(kSG, x, y) + c.rsm.at(kSB, x, y);
+      if (c.rsm.at(kValid, x, y) > 0.5f && f > 0.0f && c.rsm.at(kPdf, x, y) > 0.0f) ++expected;
+    }
+  ASSERT_GT(expected, 0u);
+  EXPECT_EQ(support.size(), expected);
+  EXPECT_LT(support.size(), all.size());
+  // Every support VPL is one of the all-lit ones, byte for byte, and lies in the right half.
+  for (const VsglRecord& v : support) {
+    EXPECT_GE(v.center().x, 0.5f);
+    const bool found =
+        std::any_of(all.begin(), all.end(), [&](const VsglRecord& a) { return std::memcmp(&a, &v, sizeof v) == 0; });
+    EXPECT_TRUE(found);
+  }
+  for (uint32_t y = 0; y < c.rsm.height; ++y)
+    for (uint32_t x = 0; x < c.rsm.width; ++x) c.rsm.at(kPdf, x, y) = 0.0f;
+  EXPECT_THROW(reference_vpls(c.rsm, c.meta.light, 1, VplExtent::kTexelFootprint, VplSet::kPdfSupport), InputError);
+}
+
+TEST(QualityReferenceRule, DecidesOnlyWhenItsOwnErrorIsBelowATenthOfTheDifference) {
+  EXPECT_TRUE(reference_decides(0.009, 0.1));
+  EXPECT_FALSE(reference_decides(0.01, 0.1));  // not below a tenth
+  EXPECT_FALSE(reference_decides(0.02, 0.1));
+  EXPECT_TRUE(reference_decides(0.009, -0.1));  // the sign of the difference does not matter
+  EXPECT_FALSE(reference_decides(0.0, 0.0));
+  EXPECT_FALSE(reference_decides(std::nan(""), 0.1));
 }
 
 TEST_F(QualityGpuTest, ReferenceRejectsBadInput) {

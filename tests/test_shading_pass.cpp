@@ -100,6 +100,36 @@ TEST_F(ShadingPassTest, MatchesTheCpuTwinAndBlackWhereNoGeometry) {
     }
 }
 
+// The converged reference shades 10^5 VSGLs in chunks of dispatches; a later chunk adds to the sum
+// the previous one stored, in the same index order, so the image is the one-dispatch image bit for
+// bit, whatever the chunk size (a whole tile, several, or a count that does not divide N).
+TEST_F(ShadingPassTest, ChunkedDispatchesGiveTheSameImage) {
+  const Capture capture = tiny_capture();
+  const DeviceView camera = upload_view(device(), capture, ViewKind::kCamera);
+  const DeviceView light = upload_view(device(), capture, ViewKind::kLight);
+  FisParams params;
+  params.vsgl_count = 700;
+  FisGenerator gen(device(), light, FisVariant::kTok15, params);
+  run_untimed(device(), gen);
+  const RadianceImage one = shade_camera_view(device(), camera, gen.vsgls(), params.vsgl_count, 2, 700);
+  for (uint32_t chunk : {256u, 300u, 512u}) {
+    SCOPED_TRACE(chunk);
+    const RadianceImage chunked = shade_camera_view(device(), camera, gen.vsgls(), params.vsgl_count, 2, chunk);
+    ASSERT_EQ(chunked.pixels.size(), one.pixels.size());
+    EXPECT_TRUE(chunked.pixels == one.pixels);
+  }
+  float brightest = 0.0f;
+  for (const glm::vec4& p : one.pixels) brightest = std::max(brightest, p.r);
+  EXPECT_GT(brightest, 0.0f);
+}
+
+TEST(ShadingChunks, ChunksHoldTheEvaluationBudgetInWholeTiles) {
+  EXPECT_EQ(shade_chunk_vsgls(uint64_t{1} << 15), 1024u);  // 2^25 / 2^15
+  EXPECT_EQ(shade_chunk_vsgls(480u * 272u) % 256u, 0u);    // whole tiles of 16 x 16
+  EXPECT_LE(uint64_t{shade_chunk_vsgls(480u * 272u)} * 480u * 272u, kShadeEvaluationsPerDispatch);
+  EXPECT_EQ(shade_chunk_vsgls(uint64_t{1920} * 1088 * 64), 256u);  // never less than a tile
+}
+
 TEST_F(ShadingPassTest, RejectsBadArguments) {
   const Capture capture = tiny_capture();
   const DeviceView camera = upload_view(device(), capture, ViewKind::kCamera);

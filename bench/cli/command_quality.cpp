@@ -83,14 +83,20 @@ Command add_quality_command(CLI::App& parent) {
       ->type_name("DIR");
   add_generators_option(*app, c.generators, joined_names(c.generators));
   add_list_option(*app, "--k-sweep", o->k_sweep, "K values of the Fig. 6 sweep (FIS generators)", positive_number());
-  app->add_option("--error-stride", c.error_stride, "G-buffer stride of the reference comparison")
-      ->check(at_least(1))
+  app->add_option("--error-stride", c.error_stride,
+                  "G-buffer stride of the reference comparison; 0: full size when the reference is predicted to "
+                  "shade within --reference-budget, else 8")
+      ->check(at_least(0))
+      ->capture_default_str();
+  app->add_option("--reference-budget", c.reference_budget_s,
+                  "seconds the references may take at full size (with --error-stride 0)")
+      ->check(CLI::PositiveNumber)
       ->capture_default_str();
   app->add_option("--flicker-width", c.flicker_width, "width of the flicker images (G-buffer stride W_gbuf/W)")
       ->check(at_least(1))
       ->capture_default_str();
-  app->add_option("--reference-rsm", c.reference_rsm, "reference RSM side (every lit texel a VPL)")
-      ->check(at_least(1))
+  app->add_option("--reference-rsm", c.reference_rsm, "reference RSM side (every lit texel a VPL); 0: the full RSM")
+      ->check(at_least(0))
       ->capture_default_str();
   app->add_option("--sequence-reference-rsm", c.sequence_reference_rsm, "the same for each sequence frame")
       ->check(at_least(1))

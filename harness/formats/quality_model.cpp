@@ -63,12 +63,41 @@ ViewQuality read_view(const JsonReader& r, const json& v, const std::string& p) 
     s.mean_kernel_side_texels = r.number(f, fp, "mean_kernel_side_texels");
     out.pdf_frequency = s;
   }
+  if (v.contains("flux_by_pdf")) {
+    const json& f = r.object(v, p, "flux_by_pdf");
+    const std::string fp = p + "/flux_by_pdf";
+    FluxByPdfSummary s;
+    s.bounds = r.numbers(f, fp, "bounds");
+    for (double t : r.numbers(f, fp, "texels")) s.texels.push_back(static_cast<uint64_t>(t));
+    s.flux_share = r.numbers(f, fp, "flux_share");
+    s.oversized_mass = r.number(f, fp, "oversized_mass");
+    s.definition = r.string(f, fp, "definition");
+    out.flux_by_pdf = s;
+  }
   for (const auto& [name, g] : r.object(v, p, "generators").items()) {
     const std::string gp = p + "/generators/" + name;
     if (!g.is_object()) r.wrong_type(g, gp, "an object");
     GeneratorQuality q;
     if (g.contains("coverage")) q.coverage = read_coverage(r, r.object(g, gp, "coverage"), gp + "/coverage");
     q.power = read_power(r, r.object(g, gp, "power"), gp + "/power");
+    if (g.contains("flux_origin")) {
+      const json& f = r.object(g, gp, "flux_origin");
+      const std::string fp = gp + "/flux_origin";
+      q.flux_origin = FluxOriginSummary{r.numbers(f, fp, "gathered"),
+                                        r.numbers(f, fp, "gathered_by_oversized"),
+                                        r.number(f, fp, "attributed_power_ratio"),
+                                        r.number(f, fp, "pdf_weighted_count"),
+                                        r.number(f, fp, "oversized_kernels"),
+                                        std::nullopt};
+      if (f.contains("over_frames")) {
+        const json& o = r.object(f, fp, "over_frames");
+        const std::string op = fp + "/over_frames";
+        q.flux_origin->over_frames = FluxOriginFrames{
+            r.uint32(o, op, "frames"),     r.numbers(o, op, "gathered_mean"),      r.numbers(o, op, "gathered_stdev"),
+            r.number(o, op, "ratio_mean"), r.number(o, op, "ratio_stdev"),         r.number(o, op, "ratio_min"),
+            r.number(o, op, "ratio_max"),  r.number(o, op, "oversized_share_mean")};
+      }
+    }
     out.generators[name] = q;
   }
   return out;
@@ -108,6 +137,52 @@ json error_json(const ImageErrorSummary& e) {
   return json{{"relative_rmse", e.relative_rmse}, {"p99_pixel_error", e.p99_pixel_error}};
 }
 
+json reference_detail_json(const ReferenceDetail& d) {
+  json rows = json::array();
+  for (const ReferenceConvergenceRow& r : d.convergence)
+    rows.push_back(json{
+        {"rsm_stride", r.rsm_stride}, {"vpls", r.vpls}, {"relative_rmse", r.relative_rmse}, {"seconds", r.seconds}});
+  json size{{"error_stride", d.error_stride}, {"rule", d.camera_size_rule}, {"budget_s", d.budget_s}};
+  if (d.predicted_full_size_s) size["predicted_full_size_s"] = *d.predicted_full_size_s;
+  return json{{"convergence", rows},
+              {"own_error", d.own_error},
+              {"seconds", d.seconds},
+              {"support", json{{"vpls", d.support_vpls},
+                               {"power_ratio", d.support_power_ratio},
+                               {"seconds", d.support_seconds},
+                               {"relative_rmse_to_all_lit", d.support_vs_all_lit}}},
+              {"camera_size", size},
+              {"dispatch", json{{"evaluations_per_dispatch", d.evaluations_per_dispatch},
+                                {"vsgls_per_dispatch", d.vsgls_per_dispatch}}}};
+}
+
+ReferenceDetail read_reference_detail(const JsonReader& r, const json& ref) {
+  ReferenceDetail d;
+  const json& rows = r.array(ref, "/reference", "convergence");
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const std::string p = r.element("/reference/convergence", i);
+    if (!rows[i].is_object()) r.wrong_type(rows[i], p, "an object");
+    d.convergence.push_back({r.uint32(rows[i], p, "rsm_stride"), r.uint64(rows[i], p, "vpls"),
+                             r.number(rows[i], p, "relative_rmse"), r.number(rows[i], p, "seconds")});
+  }
+  d.own_error = r.number(ref, "/reference", "own_error");
+  d.seconds = r.number(ref, "/reference", "seconds");
+  const json& sup = r.object(ref, "/reference", "support");
+  d.support_vpls = r.uint64(sup, "/reference/support", "vpls");
+  d.support_power_ratio = r.number(sup, "/reference/support", "power_ratio");
+  d.support_seconds = r.number(sup, "/reference/support", "seconds");
+  d.support_vs_all_lit = r.number(sup, "/reference/support", "relative_rmse_to_all_lit");
+  const json& size = r.object(ref, "/reference", "camera_size");
+  d.error_stride = r.uint32(size, "/reference/camera_size", "error_stride");
+  d.camera_size_rule = r.string(size, "/reference/camera_size", "rule");
+  d.budget_s = r.number(size, "/reference/camera_size", "budget_s");
+  d.predicted_full_size_s = r.optional_number(size, "/reference/camera_size", "predicted_full_size_s");
+  const json& disp = r.object(ref, "/reference", "dispatch");
+  d.evaluations_per_dispatch = r.uint64(disp, "/reference/dispatch", "evaluations_per_dispatch");
+  d.vsgls_per_dispatch = r.uint32(disp, "/reference/dispatch", "vsgls_per_dispatch");
+  return d;
+}
+
 json view_json(const ViewQuality& v) {
   json j{{"vsgls", v.vsgls}, {"total_flux", v.total_flux}, {"generators", json::object()}};
   if (v.pdf_frequency) {
@@ -122,9 +197,36 @@ json view_json(const ViewQuality& v) {
                               {"share_below_kernel", f.share_below_kernel},
                               {"definition", f.definition}};
   }
+  if (v.flux_by_pdf) {
+    const FluxByPdfSummary& f = *v.flux_by_pdf;
+    j["flux_by_pdf"] = json{{"bounds", f.bounds},
+                            {"texels", f.texels},
+                            {"flux_share", f.flux_share},
+                            {"oversized_mass", f.oversized_mass},
+                            {"definition", f.definition}};
+  }
   for (const auto& [name, g] : v.generators) {
     json gj{{"power", power_json(g.power)}};
     if (g.coverage) gj["coverage"] = coverage_json(*g.coverage);
+    if (g.flux_origin) {
+      const FluxOriginSummary& f = *g.flux_origin;
+      gj["flux_origin"] = json{{"gathered", f.gathered},
+                               {"gathered_by_oversized", f.gathered_by_oversized},
+                               {"attributed_power_ratio", f.attributed_power_ratio},
+                               {"pdf_weighted_count", f.pdf_weighted_count},
+                               {"oversized_kernels", f.oversized_kernels}};
+      if (f.over_frames) {
+        const FluxOriginFrames& o = *f.over_frames;
+        gj["flux_origin"]["over_frames"] = json{{"frames", o.frames},
+                                                {"gathered_mean", o.gathered_mean},
+                                                {"gathered_stdev", o.gathered_stdev},
+                                                {"ratio_mean", o.ratio_mean},
+                                                {"ratio_stdev", o.ratio_stdev},
+                                                {"ratio_min", o.ratio_min},
+                                                {"ratio_max", o.ratio_max},
+                                                {"oversized_share_mean", o.oversized_share_mean}};
+      }
+    }
     j["generators"][name] = gj;
   }
   return j;
@@ -162,6 +264,12 @@ void to_json(json& j, const QualityModel& m) {
       {"reference_error", json::object()}};
   for (const auto& [name, v] : m.views) j["views"][name] = view_json(v);
   for (const auto& [name, e] : m.reference_error) j["reference_error"][name] = error_json(e);
+  if (m.reference_detail) j["reference"].update(reference_detail_json(*m.reference_detail));
+  if (!m.reference_error_support.empty()) {
+    json support = json::object();
+    for (const auto& [name, e] : m.reference_error_support) support[name] = error_json(e);
+    j["reference_error_support"] = support;
+  }
   json fs = json::object();
   for (const auto& [name, f] : m.flicker_static)
     fs[name] = json{{"frames", f.frames},
@@ -256,6 +364,12 @@ QualityModel quality_model_from_json(const json& doc, const std::string& what) {
   m.reference_rsm_side = r.member(ref, "/reference", "reference_rsm_side");
   m.reference_rsm_stride = r.member(ref, "/reference", "rsm_stride");
   m.reference_image = r.array(ref, "/reference", "image", 2);
+  if (ref.contains("convergence")) m.reference_detail = read_reference_detail(r, ref);
+  if (doc.contains("reference_error_support"))
+    for (const auto& [g, e] : r.object(doc, "", "reference_error_support").items())
+      m.reference_error_support[g] =
+          read_error(r, r.object(r.object(doc, "", "reference_error_support"), "/reference_error_support", g),
+                     "/reference_error_support/" + g);
   const json& errors = r.object(doc, "", "reference_error");
   const json& fs = r.object(doc, "", "flicker_static");
   m.flicker_image = r.array(fs, "/flicker_static", "image", 2);

@@ -40,9 +40,36 @@ struct PowerSummary {
   double sum_vsgl_power = 0, total_flux = 0;
 };
 
+// Where a FIS generator's power comes from (quality/flux_origin.hpp; schema 4): per class of
+// texels by expected kernel centres, the flux each class gives the VSGLs, as a share of the view's.
+// The same over the static frames (lattice offsets) of the light view: one offset's sum Phi / flux
+// spreads by several percent where a few kernels carry much of the power.
+struct FluxOriginFrames {
+  uint32_t frames = 0;
+  std::vector<double> gathered_mean, gathered_stdev;  // per class; stdev: sample (n - 1)
+  double ratio_mean = 0, ratio_stdev = 0, ratio_min = 0, ratio_max = 0;
+  double oversized_share_mean = 0;  // mean over frames of the power share of oversized kernels
+};
+struct FluxOriginSummary {
+  std::vector<double> gathered, gathered_by_oversized;  // one per class of the view's flux_by_pdf
+  double attributed_power_ratio = 0, pdf_weighted_count = 0, oversized_kernels = 0;
+  std::optional<FluxOriginFrames> over_frames;  // light view, FIS generators
+};
+
 struct GeneratorQuality {
   std::optional<CoverageSummary> coverage;  // FIS generators only
   PowerSummary power;
+  std::optional<FluxOriginSummary> flux_origin;  // FIS generators, schema 4
+};
+
+// A view's flux by its texels' expected number of kernel centres e = N q / sum q (schema 4):
+// class 0 is PDF 0, then e < bounds[0], [bounds[0], bounds[1]), ..., e >= bounds.back().
+struct FluxByPdfSummary {
+  std::vector<double> bounds;
+  std::vector<uint64_t> texels;  // texels with positive flux
+  std::vector<double> flux_share;
+  double oversized_mass = 0;  // the kernel mass over its target above which a kernel is "oversized"
+  std::string definition;
 };
 
 struct PdfFrequencySummary {
@@ -58,6 +85,7 @@ struct ViewQuality {
   nlohmann::json vsgls;  // N, printed as written
   double total_flux = 0;
   std::optional<PdfFrequencySummary> pdf_frequency;
+  std::optional<FluxByPdfSummary> flux_by_pdf;  // schema 4
   std::map<std::string, GeneratorQuality> generators;
 };
 
@@ -83,6 +111,29 @@ struct KSweepRow {
   PowerSummary power;
 };
 
+// The converged reference of schema 4 (DESIGN.md §11a): how far coarser RSM strides are from it,
+// the PDF-support reference, the camera size and the chunking of its dispatches.
+struct ReferenceConvergenceRow {
+  uint32_t rsm_stride = 0;
+  uint64_t vpls = 0;
+  double relative_rmse = 0;  // against the reference (the finest stride), same pixels
+  double seconds = 0;        // to shade it
+};
+struct ReferenceDetail {
+  std::vector<ReferenceConvergenceRow> convergence;  // coarsest first, the reference itself last
+  double own_error = 0;  // the row at twice the reference's stride: the reference's own error
+  double seconds = 0;    // shading the reference
+  uint64_t support_vpls = 0;
+  double support_power_ratio = 0, support_seconds = 0;
+  double support_vs_all_lit = 0;  // relative RMSE of the support reference against the all-lit one
+  uint32_t error_stride = 0;      // G-buffer stride of every reference comparison
+  std::string camera_size_rule;
+  double budget_s = 0;
+  std::optional<double> predicted_full_size_s;  // when the size was chosen by the budget
+  uint64_t evaluations_per_dispatch = 0;
+  uint32_t vsgls_per_dispatch = 0;
+};
+
 struct QualityModel {
   std::string schema = "vsgl-quality";
   nlohmann::json schema_version;
@@ -105,6 +156,8 @@ struct QualityModel {
   double reference_power_ratio = 0;
   std::string reference_method;
   std::map<std::string, ImageErrorSummary> reference_error;
+  std::optional<ReferenceDetail> reference_detail;                   // schema 4
+  std::map<std::string, ImageErrorSummary> reference_error_support;  // schema 4: against the PDF-support reference
   nlohmann::json flicker_image;
   uint32_t flicker_gbuffer_stride = 0;
   std::map<std::string, StaticFlicker> flicker_static;

@@ -98,7 +98,9 @@ KernelCoverage kernel_coverage(const std::vector<VsglRecord>& kernels, const Mip
   return c;
 }
 
-std::vector<double> eq3_footprint_counts(const std::vector<VsglRecord>& kernels, const VirtualSquare& square) {
+std::vector<double> trilinear_footprint_sum(const std::vector<VsglRecord>& kernels, const std::vector<double>& weights,
+                                            const VirtualSquare& square) {
+  if (weights.size() != kernels.size()) throw std::invalid_argument("trilinear_footprint_sum: one weight per kernel");
   const int64_t w = square.width, h = square.height;
   // The same difference-array trick as footprint_counts, with real weights: each kernel adds up to
   // 8 rectangles (4 bilinear taps on 2 levels), each a level-l texel's block of level-0 texels.
@@ -129,28 +131,37 @@ std::vector<double> eq3_footprint_counts(const std::vector<VsglRecord>& kernels,
     add_tap(level, tx + 1, ty + 1, per_child * fx * fy);
   };
   const double top = static_cast<double>(square.levels);
-  for (const VsglRecord& k : kernels) {
-    const double raw = static_cast<double>(k.level());
+  for (std::size_t i = 0; i < kernels.size(); ++i) {
+    const double raw = static_cast<double>(kernels[i].level());
     if (!(raw >= 0.0)) throw InputError("kernel coverage: a VSGL has no FIS level (k-means records carry -1)");
     const double l = std::min(raw, top);
     const double l0 = std::floor(l);
     const auto k0 = static_cast<uint32_t>(l0);
     const uint32_t k1 = std::min(k0 + 1, square.levels);
     const double t = l - l0;
-    const double area = std::exp2(2.0 * l);  // a(l) M: the kernel's share of the square in texels
-    add_bilinear(k.center(), k0, area * (1.0 - t));
-    add_bilinear(k.center(), k1, area * t);
+    add_bilinear(kernels[i].center(), k0, weights[i] * (1.0 - t));
+    add_bilinear(kernels[i].center(), k1, weights[i] * t);
   }
-  std::vector<double> counts(static_cast<std::size_t>(w * h));
+  std::vector<double> sums(static_cast<std::size_t>(w * h));
   std::vector<double> column(static_cast<std::size_t>(w + 1), 0.0);
   for (int64_t y = 0; y < h; ++y) {
     double run = 0;
     for (int64_t x = 0; x < w; ++x) {
       column[static_cast<std::size_t>(x)] += at(x, y);
       run += column[static_cast<std::size_t>(x)];
-      counts[static_cast<std::size_t>(y * w + x)] = run;
+      sums[static_cast<std::size_t>(y * w + x)] = run;
     }
   }
+  return sums;
+}
+
+std::vector<double> eq3_footprint_counts(const std::vector<VsglRecord>& kernels, const VirtualSquare& square) {
+  // k_i(t) = 4^l_i w_i(t): each kernel weighted by a(l) M, its share of the square in texels.
+  std::vector<double> area(kernels.size());
+  const double top = static_cast<double>(square.levels);
+  for (std::size_t i = 0; i < kernels.size(); ++i)
+    area[i] = std::exp2(2.0 * std::min(static_cast<double>(kernels[i].level()), top));
+  std::vector<double> counts = trilinear_footprint_sum(kernels, area, square);
   // Prefix sums of +/- weights leave rounding residue (~1e-13) on texels no kernel reaches; those
   // are exact zeros in the definition, and a gap must read as a full gap.
   for (double& n : counts)

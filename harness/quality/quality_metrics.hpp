@@ -51,6 +51,14 @@ std::vector<uint32_t> footprint_counts(const std::vector<VsglRecord>& kernels, c
 // power, for both estimators with K = 1 (Eq. 4 with N p >= K: M / (N p) = 4^l; Eq. 5:
 // M / (N p_bar) = 4^l / K at the solved level), up to the level clamps at 0 and L.
 std::vector<double> eq3_footprint_counts(const std::vector<VsglRecord>& kernels, const VirtualSquare& square);
+// The general form: sum_i weights[i] w_i(t) per in-bounds level-0 texel t, w_i the trilinear
+// weights above (they sum to 1 over a kernel inside the square). eq3_footprint_counts is this with
+// weights 4^l_i; with weights M / D_i, D_i the density a FIS power divides by, it is how many times
+// texel t's flux enters the total power (flux_origin.hpp). Raw sums: rounding residue of ~1e-16
+// of the weights stays on texels no kernel reaches. Throws std::invalid_argument unless there is
+// one weight per kernel, InputError for a record without a FIS level.
+std::vector<double> trilinear_footprint_sum(const std::vector<VsglRecord>& kernels, const std::vector<double>& weights,
+                                            const VirtualSquare& square);
 
 // One footprint model's coverage, PDF-weighted over the texels with q > 0 (all over sum q):
 //   gap = sum q max(1 - n, 0), surplus = sum q max(n - 1, 0),

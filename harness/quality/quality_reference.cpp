@@ -25,7 +25,7 @@ float rsm_texel_world_area(const ViewImage& rsm, const SpotLightDesc& light, uin
 }
 
 std::vector<VsglRecord> reference_vpls(const ViewImage& rsm, const SpotLightDesc& light, uint32_t stride,
-                                       VplExtent extent) {
+                                       VplExtent extent, VplSet set) {
   const glm::vec3 light_position = light.position;
   if (stride == 0) throw InputError("reference: the RSM stride must be at least 1");
   if (rsm.kind != ViewKind::kLight) throw InputError("reference: VPLs come from the RSM (light view)");
@@ -34,6 +34,7 @@ std::vector<VsglRecord> reference_vpls(const ViewImage& rsm, const SpotLightDesc
   for (uint32_t y = 0; y < rsm.height; y += stride)
     for (uint32_t x = 0; x < rsm.width; x += stride) {
       if (rsm.at(kValid, x, y) <= 0.5f) continue;
+      if (set == VplSet::kPdfSupport && !(rsm.at(kPdf, x, y) > 0.0f)) continue;
       const glm::vec3 P(rsm.at(kPX, x, y), rsm.at(kPY, x, y), rsm.at(kPZ, x, y));
       const glm::vec3 N(rsm.at(kNX, x, y), rsm.at(kNY, x, y), rsm.at(kNZ, x, y));
       const glm::vec3 d(rsm.at(kDR, x, y), rsm.at(kDG, x, y), rsm.at(kDB, x, y));
@@ -51,13 +52,21 @@ std::vector<VsglRecord> reference_vpls(const ViewImage& rsm, const SpotLightDesc
       v.position_variance = glm::vec4(P, sigma2);
       vpls.push_back(v);
     }
-  if (vpls.empty()) throw InputError("reference: the RSM has no lit texel at stride " + std::to_string(stride));
+  if (vpls.empty())
+    throw InputError(std::string("reference: the RSM has no ") +
+                     (set == VplSet::kAllLit ? "lit texel" : "lit texel with PDF > 0") + " at stride " +
+                     std::to_string(stride));
   return vpls;
 }
 
 uint32_t reference_stride(const ViewImage& rsm, uint32_t side) {
   const uint32_t longest = rsm.width > rsm.height ? rsm.width : rsm.height;
   return side == 0 || longest <= side ? 1u : longest / side;
+}
+
+bool reference_decides(double reference_own_error, double judged_difference) {
+  if (!std::isfinite(reference_own_error) || !std::isfinite(judged_difference)) return false;
+  return kReferenceErrorFactor * reference_own_error < std::abs(judged_difference);
 }
 
 FixedVsglGenerator::FixedVsglGenerator(Device& device, const std::vector<VsglRecord>& vsgls, std::string name)

@@ -35,18 +35,32 @@ enum class VplExtent {
   kTexelFootprint,
 };
 
-// One VPL per RSM texel (x, y) with x % stride == 0, y % stride == 0, valid and with positive
-// flux: vsgl_from_moments() of the texel's own moments (DESIGN.md §7), position = the texel's,
-// power = its flux * stride^2, sigma^2 per `extent`, level 0, centre = the texel centre.
-// Throws InputError for stride 0, a camera view, or no lit texel.
+// Which texels become VPLs (DESIGN.md §11a): every lit texel (the light the scene reflects), or
+// only those where the BRSM PDF is positive (the light a FIS generator can place a kernel centre
+// on): the error against the second is the generators' own, without the PDF's bias.
+enum class VplSet { kAllLit, kPdfSupport };
+inline const char* vpl_set_name(VplSet set) { return set == VplSet::kAllLit ? "all_lit" : "pdf_support"; }
+
+// One VPL per RSM texel (x, y) with x % stride == 0, y % stride == 0, valid, with positive flux
+// (and, for kPdfSupport, a positive PDF): vsgl_from_moments() of the texel's own moments
+// (DESIGN.md §7), position = the texel's, power = its flux * stride^2, sigma^2 per `extent`,
+// level 0, centre = the texel centre. Throws InputError for stride 0, a camera view, or no texel.
 std::vector<VsglRecord> reference_vpls(const ViewImage& rsm, const SpotLightDesc& light, uint32_t stride,
-                                       VplExtent extent);
+                                       VplExtent extent, VplSet set = VplSet::kAllLit);
 
 // The world-space area RSM texel (x, y) stands for at `stride` (see VplExtent::kTexelFootprint).
 float rsm_texel_world_area(const ViewImage& rsm, const SpotLightDesc& light, uint32_t x, uint32_t y, uint32_t stride);
 
-// The RSM stride that gives a reference RSM of about `side` texels: max(1, rsm side / side).
+// The RSM stride that gives a reference RSM of about `side` texels: max(1, rsm side / side);
+// 1 (every texel) for side 0.
 uint32_t reference_stride(const ViewImage& rsm, uint32_t side);
+
+// The rule of DESIGN.md §11a: a comparison the reference decides is decided only when the
+// reference's own error (its stride-2 image against its stride-1 image, relative RMSE) is below a
+// tenth of the difference being judged (for example two generators' errors against it); otherwise
+// the verdict is "reference not converged". False for a non-finite input.
+inline constexpr double kReferenceErrorFactor = 10.0;  // own error x 10 < |difference|
+bool reference_decides(double reference_own_error, double judged_difference);
 
 // A "generator" with a fixed set of VSGLs, uploaded once: it ignores every parameter, so its
 // output never changes between frames (the reference, and the zero-flicker test).

@@ -260,6 +260,73 @@ void write_view(std::ostringstream& md, const QualityModel& m, const std::string
   power("sum Phi / total flux", &PowerSummary::power_ratio);
 }
 
+// Where the VSGLs' power comes from (schema 4; flux_origin.hpp): nothing for older documents.
+void write_flux_origin(std::ostringstream& md, const QualityModel& m) {
+  double oversized_mass = 0;
+  bool any = false;
+  for (const auto& [name, v] : m.views)
+    if (v.flux_by_pdf) {
+      any = true;
+      oversized_mass = v.flux_by_pdf->oversized_mass;
+    }
+  if (!any) return;
+  md << "\n## Where the power comes from\n\nEach texel t's flux f(t) enters the VSGLs' total power c(t) times, "
+        "c(t) = sum_i M w_i(t) / D_i (w_i: kernel i's trilinear weights, D_i the density its power divides by), so "
+        "sum Phi = sum_t f(t) c(t). Texels are classed by their expected number of kernel centres e = N q / sum q; "
+        "each cell is a share of the view's flux: what the class holds, and what enters the power from it "
+        "(of that, from kernels holding more than "
+     << num(oversized_mass)
+     << " times their stratum's probability). PDF-weighted mean c: sum q c / sum q, exactly 1 for Eq. 5.\n";
+  for (const char* view : {"light_view", "camera_view"}) {
+    const ViewQuality& v = m.views.at(view);
+    if (!v.flux_by_pdf) continue;
+    const FluxByPdfSummary& f = *v.flux_by_pdf;
+    const auto label = [&](std::size_t c) {
+      if (c == 0) return std::string("q = 0");
+      if (c == 1) return "e < " + num(f.bounds.front());
+      if (c > f.bounds.size()) return "e >= " + num(f.bounds.back());
+      return num(f.bounds[c - 2]) + " <= e < " + num(f.bounds[c - 1]);
+    };
+    md << "\n" << view << ":\n\n| texels | count | flux |";
+    std::vector<std::string> fis;
+    for (const auto& g : m.generators)
+      if (v.generators.at(g).flux_origin) {
+        fis.push_back(g);
+        md << " " << g << " gathers (oversized) |";
+      }
+    md << "\n|---|---|---|";
+    for (std::size_t i = 0; i < fis.size(); ++i) md << "---|";
+    md << "\n";
+    for (std::size_t c = 0; c < f.flux_share.size(); ++c) {
+      md << "| " << label(c) << " | " << f.texels.at(c) << " | " << num(f.flux_share[c]) << " |";
+      for (const auto& g : fis) {
+        const FluxOriginSummary& o = *v.generators.at(g).flux_origin;
+        md << " " << num(o.gathered.at(c)) << " (" << num(o.gathered_by_oversized.at(c)) << ") |";
+      }
+      md << "\n";
+    }
+    md << "| sum Phi / flux (attributed) | | 1 |";
+    for (const auto& g : fis) md << " " << num(v.generators.at(g).flux_origin->attributed_power_ratio) << " |";
+    md << "\n| PDF-weighted mean c | | |";
+    for (const auto& g : fis) md << " " << num(v.generators.at(g).flux_origin->pdf_weighted_count) << " |";
+    md << "\n| oversized kernels | | |";
+    for (const auto& g : fis) md << " " << num(v.generators.at(g).flux_origin->oversized_kernels) << " |";
+    md << "\n";
+    for (const auto& g : fis) {
+      const auto& frames = v.generators.at(g).flux_origin->over_frames;
+      if (!frames) continue;
+      md << "\n"
+         << g << " over " << frames->frames << " lattice offsets: sum Phi / flux mean " << num(frames->ratio_mean)
+         << " (stdev " << num(frames->ratio_stdev) << ", " << num(frames->ratio_min) << " to " << num(frames->ratio_max)
+         << "), share of the power from oversized kernels " << num(frames->oversized_share_mean)
+         << "; per class (mean, stdev):";
+      for (std::size_t c = 0; c < frames->gathered_mean.size(); ++c)
+        md << (c == 0 ? " " : ", ") << num(frames->gathered_mean[c]) << " (" << num(frames->gathered_stdev[c]) << ")";
+      md << ".\n";
+    }
+  }
+}
+
 void write_reference_error(std::ostringstream& md, const QualityModel& m) {
   md << "\n## Error against the reference (light-view VSGLs lighting the camera view)\n\nReference: " << m.reference_vpls
      << " VPLs (RSM subsampled to " << m.reference_rsm_side << "^2, stride " << m.reference_rsm_stride << ", sum Phi / flux "
@@ -270,6 +337,27 @@ void write_reference_error(std::ostringstream& md, const QualityModel& m) {
   for (const auto& g : m.generators)
     md << "| " << g << " | " << num(m.reference_error.at(g).relative_rmse) << " | " << num(m.reference_error.at(g).p99_pixel_error)
        << " |\n";
+  if (!m.reference_detail) return;
+  const ReferenceDetail& d = *m.reference_detail;
+  md << "\nCamera size: G-buffer stride " << d.error_stride << " (" << d.camera_size_rule << "; budget "
+     << num(d.budget_s) << " s";
+  if (d.predicted_full_size_s) md << ", predicted at full size " << num(*d.predicted_full_size_s) << " s";
+  md << "). Dispatches of at most " << d.evaluations_per_dispatch << " VSGL evaluations (" << d.vsgls_per_dispatch
+     << " VSGLs each here). Convergence, same pixels:\n\n| RSM stride | VPLs | relative RMSE against the reference | "
+        "seconds |\n|---|---|---|---|\n";
+  for (const ReferenceConvergenceRow& r : d.convergence)
+    md << "| " << r.rsm_stride << " | " << r.vpls << " | " << num(r.relative_rmse) << " | " << num(r.seconds) << " |\n";
+  md << "\nThe reference's own error (the next coarser stride against it): " << num(d.own_error)
+     << "; a difference it judges must exceed ten times that, or the verdict is \"reference not converged\".\n\n"
+        "PDF-support reference (texels with PDF > 0 only): "
+     << d.support_vpls << " VPLs, sum Phi / flux " << num(d.support_power_ratio)
+     << ", relative RMSE against the all-lit "
+     << "reference " << num(d.support_vs_all_lit) << ", " << num(d.support_seconds)
+     << " s.\n\n| generator | relative RMSE against the support reference | p99 pixel error |\n|---|---|---|\n";
+  for (const auto& g : m.generators)
+    if (m.reference_error_support.count(g) != 0)
+      md << "| " << g << " | " << num(m.reference_error_support.at(g).relative_rmse) << " | "
+         << num(m.reference_error_support.at(g).p99_pixel_error) << " |\n";
 }
 
 void write_flicker(std::ostringstream& md, const QualityModel& m) {
@@ -314,6 +402,7 @@ std::string quality_markdown(const QualityModel& m, const std::vector<QualityPic
   write_frequency(md, m);
   for (const char* view : {"light_view", "camera_view"}) write_view(md, m, view);
   md << "\nCoverage is defined for the FIS generators only (a k-means cluster has no square footprint): n/a.\n";
+  write_flux_origin(md, m);
   write_reference_error(md, m);
   write_flicker(md, m);
   write_k_sweep(md, m);

@@ -17,6 +17,7 @@
 #include "harness/core/generator_ids.hpp"
 #include "harness/reference/fis_reference.hpp"
 #include "harness/generators/generator_registry.hpp"
+#include "harness/quality/flux_origin.hpp"
 #include "harness/quality/quality_metrics.hpp"
 #include "harness/formats/quality_model.hpp"
 #include "harness/quality/quality_pictures.hpp"
@@ -41,13 +42,15 @@ double seconds_since(Clock::time_point t0) {
 struct ViewData {
   MipPyramid pdf;
   double flux = 0;
+  std::vector<float> texel_flux;  // f per level-0 texel (flux_origin.hpp)
 };
 
 ViewData view_data(const Capture& capture, ViewKind kind) {
   const ViewImage& view = capture.view(kind);
   const glm::vec3 source = kind == ViewKind::kCamera ? capture.meta.camera.position : capture.meta.light.position;
   const auto moments = reference_moments(view, source);
-  return ViewData{MipPyramid::build(moments[2], view.width, view.height), total_flux(moments[0])};
+  return ViewData{MipPyramid::build(moments[2], view.width, view.height), total_flux(moments[0]),
+                  texel_flux(moments[0])};
 }
 
 // One generator run (offset `offset_bits`, kernel parameter K) on an uploaded view; its VSGLs stay
@@ -136,6 +139,62 @@ PdfFrequencySummary frequency_summary(const PdfFrequency& f, uint32_t levels, ui
   return s;
 }
 
+FluxByPdfSummary flux_by_pdf_summary(const FluxByPdf& f) {
+  FluxByPdfSummary s;
+  s.bounds.assign(kExpectedCentreBounds.begin(), kExpectedCentreBounds.end());
+  s.texels.assign(f.texels.begin(), f.texels.end());
+  s.flux_share.assign(f.flux_share.begin(), f.flux_share.end());
+  s.oversized_mass = kOversizedMass;
+  s.definition =
+      "texels with positive flux classed by their expected number of kernel centres e = N q / sum q: q = 0, "
+      "e < bounds[0], ..., e >= bounds.back(); flux_share: the class's share of the view's flux. A FIS generator's "
+      "flux_origin.gathered[c] = sum over class c of f(t) c(t) / flux, c(t) = sum_i M w_i(t) / D_i (w_i the "
+      "trilinear weights of kernel i, D_i the density its power divides by), so the classes sum to sum Phi / flux; "
+      "gathered_by_oversized: the same over the kernels whose mass a(l) p_bar N / K exceeds oversized_mass; "
+      "pdf_weighted_count = sum q c / sum q (1 for Eq. 5)";
+  return s;
+}
+
+FluxOriginSummary flux_origin_summary(const FluxOrigin& f) {
+  return {std::vector<double>(f.gathered.begin(), f.gathered.end()),
+          std::vector<double>(f.gathered_by_oversized.begin(), f.gathered_by_oversized.end()),
+          f.attributed_power_ratio,
+          f.pdf_weighted_count,
+          f.oversized_kernels,
+          std::nullopt};
+}
+
+FisVariant fis_variant(const std::string& name) {
+  return name == kFisTok15 ? FisVariant::kTok15 : FisVariant::kModified;
+}
+
+// Mean and sample stdev over the frames of each class's gathered share and of sum Phi / flux.
+FluxOriginFrames flux_origin_frames(const std::vector<FluxOrigin>& origins) {
+  FluxOriginFrames out;
+  out.frames = static_cast<uint32_t>(origins.size());
+  for (std::size_t c = 0; c < kFluxClasses; ++c) {
+    std::vector<double> v;
+    for (const FluxOrigin& o : origins) v.push_back(o.gathered[c]);
+    const ValueSummary s = summarize_values(v);
+    out.gathered_mean.push_back(s.mean);
+    out.gathered_stdev.push_back(s.stdev);
+  }
+  std::vector<double> ratios, oversized;
+  for (const FluxOrigin& o : origins) {
+    ratios.push_back(o.attributed_power_ratio);
+    double by_oversized = 0;
+    for (double g : o.gathered_by_oversized) by_oversized += g;
+    oversized.push_back(by_oversized / o.attributed_power_ratio);
+  }
+  const ValueSummary r = summarize_values(ratios);
+  out.ratio_mean = r.mean;
+  out.ratio_stdev = r.stdev;
+  out.ratio_min = r.min;
+  out.ratio_max = r.max;
+  out.oversized_share_mean = summarize_values(oversized).mean;
+  return out;
+}
+
 ImageErrorSummary error_summary(const ImageError& e) { return {e.relative_rmse, e.p99_pixel_error}; }
 
 // 64-bit FNV-1a over text: one identifier for all channel hashes of a capture.
@@ -168,6 +227,7 @@ struct ReferenceShading {
   RadianceImage image;
   float exposure;                                  // of every render picture
   std::map<std::string, RadianceImage> k1_images;  // the FIS generators' renders at the configured K
+  uint32_t error_stride = 1;                       // the G-buffer stride of every comparison with it
 };
 
 // One quality run: the device, the capture and its views on the device, and the lattice floor's
@@ -210,6 +270,7 @@ struct QualityRun {
       v.vsgls = n;
       v.total_flux = data.flux;
       v.pdf_frequency = frequency_summary(pdf_frequency(data.pdf), data.pdf.levels(), n, config.K);
+      v.flux_by_pdf = flux_by_pdf_summary(flux_by_pdf(data.texel_flux, data.pdf, n));
       for (const auto& name : config.generators) {
         const auto tg = Clock::now();
         const GeneratorRun run = run_generator(device, view, name, config, n, config.K, 0);
@@ -217,6 +278,8 @@ struct QualityRun {
         g.power = power_summary(power_metrics(run.vsgls, data.flux));
         if (is_fis(name)) {
           g.coverage = coverage_with_floor(run.vsgls, data.pdf, floor_view, floor_pdf, name, n, config.K);
+          g.flux_origin =
+              flux_origin_summary(flux_origin(run.vsgls, fis_variant(name), data.texel_flux, data.pdf, config.K));
           const std::string file = scene + "_coverage_" + view_name(kind) + "_" + name + ".png";
           result.pictures.push_back(
               {file,
@@ -231,33 +294,120 @@ struct QualityRun {
     }
   }
 
-  // 6: reference and errors (light-view VSGLs shading the camera view).
-  ReferenceShading reference_and_errors(QualityModel& out, QualityResult& result, double light_flux) const {
+  // A reference VPL set shaded at `error_stride`, timed.
+  struct ShadedReference {
+    std::vector<VsglRecord> vpls;
+    RadianceImage image;
+    double seconds = 0;
+  };
+  ShadedReference shade_reference(uint32_t rsm_stride, VplSet set, uint32_t error_stride) const {
     const auto t0 = Clock::now();
+    ShadedReference r;
+    r.vpls = reference_vpls(capture.rsm, capture.meta.light, rsm_stride, VplExtent::kTexelFootprint, set);
+    FixedVsglGenerator reference(device, r.vpls, std::string("reference_") + vpl_set_name(set));
+    r.image = shade_camera_view(device, camera, reference.vsgls(), reference.vsgl_count(), error_stride);
+    r.seconds = seconds_since(t0);
+    return r;
+  }
+
+  // The VPL count of a set without building its records.
+  uint64_t vpl_count(uint32_t rsm_stride, VplSet set) const {
+    uint64_t n = 0;
+    const ViewImage& rsm = capture.rsm;
+    for (uint32_t y = 0; y < rsm.height; y += rsm_stride)
+      for (uint32_t x = 0; x < rsm.width; x += rsm_stride) {
+        if (rsm.at(kValid, x, y) <= 0.5f) continue;
+        if (set == VplSet::kPdfSupport && !(rsm.at(kPdf, x, y) > 0.0f)) continue;
+        const float f = rsm.at(kDR, x, y) + rsm.at(kDG, x, y) + rsm.at(kDB, x, y) + rsm.at(kSR, x, y) +
+                        rsm.at(kSG, x, y) + rsm.at(kSB, x, y);
+        if (f > 0.0f) ++n;
+      }
+    return n;
+  }
+
+  // 6: the converged reference (DESIGN.md §11a) and the errors against it (light-view VSGLs shading
+  // the camera view).
+  ReferenceShading reference_and_errors(QualityModel& out, QualityResult& result, double light_flux) const {
     const uint32_t ref_stride = reference_stride(capture.rsm, config.reference_rsm);
-    const std::vector<VsglRecord> vpls = reference_vpls(capture.rsm, capture.meta.light, ref_stride, VplExtent::kTexelFootprint);
-    FixedVsglGenerator reference(device, vpls, "reference_vpls");
-    const RadianceImage ref_image =
-        shade_camera_view(device, camera, reference.vsgls(), reference.vsgl_count(), config.error_stride);
+    const uint32_t rsm_side = std::max(capture.rsm.width, capture.rsm.height);
+    // The coarser strides of the convergence table, coarsest first, each leaving at least 2 texels a side.
+    std::vector<uint32_t> strides;
+    for (uint32_t k : kConvergenceStrides)
+      if (ref_stride * k * 2 <= rsm_side) strides.push_back(ref_stride * k);
+    ReferenceDetail detail;
+    detail.budget_s = config.reference_budget_s;
+    detail.evaluations_per_dispatch = kShadeEvaluationsPerDispatch;
+    std::map<uint32_t, ShadedReference> coarse;
+    uint32_t error_stride = config.error_stride;
+    if (error_stride == 0) {
+      // Camera size by the budget: shade the coarsest set at the reduced size, and predict the
+      // whole reference work (every convergence stride, both references) at full size from its rate.
+      const uint32_t probe_stride = strides.empty() ? ref_stride : strides.front();
+      ShadedReference probe = shade_reference(probe_stride, VplSet::kAllLit, kReducedErrorStride);
+      const double probe_work = static_cast<double>(probe.vpls.size()) * static_cast<double>(probe.image.pixels.size());
+      double vpls_total =
+          static_cast<double>(vpl_count(ref_stride, VplSet::kAllLit) + vpl_count(ref_stride, VplSet::kPdfSupport));
+      for (uint32_t s : strides) vpls_total += static_cast<double>(vpl_count(s, VplSet::kAllLit));
+      const double full_pixels = static_cast<double>(capture.gbuffer.width) * capture.gbuffer.height;
+      const double predicted = probe.seconds * vpls_total * full_pixels / std::max(probe_work, 1.0);
+      detail.predicted_full_size_s = predicted;
+      error_stride = predicted <= config.reference_budget_s ? 1u : kReducedErrorStride;
+      detail.camera_size_rule =
+          "full size (G-buffer stride 1) when the references are predicted to shade within "
+          "budget_s, from the rate of the coarsest set shaded at stride " +
+          std::to_string(kReducedErrorStride) + "; else stride " + std::to_string(kReducedErrorStride);
+      if (error_stride == kReducedErrorStride && probe_stride != ref_stride) coarse[probe_stride] = std::move(probe);
+    } else {
+      detail.camera_size_rule = "G-buffer stride given (--error-stride)";
+    }
+    detail.error_stride = error_stride;
+    out.config_rest["error_stride"] = error_stride;
+
+    const ShadedReference all = shade_reference(ref_stride, VplSet::kAllLit, error_stride);
+    const RadianceImage& ref_image = all.image;
+    detail.vsgls_per_dispatch = shade_chunk_vsgls(ref_image.pixels.size());
+    detail.seconds = all.seconds;
+    say("reference: " + std::to_string(all.vpls.size()) + " VPLs at " + std::to_string(ref_image.width) + "x" +
+        std::to_string(ref_image.height) + " in " + std::to_string(all.seconds) + " s");
+    for (uint32_t s : strides) {
+      if (coarse.count(s) == 0) coarse[s] = shade_reference(s, VplSet::kAllLit, error_stride);
+      const ShadedReference& c = coarse.at(s);
+      detail.convergence.push_back({s, c.vpls.size(), image_error(c.image, ref_image).relative_rmse, c.seconds});
+      say("reference stride " + std::to_string(s) + ": " + std::to_string(c.seconds) + " s");
+    }
+    detail.convergence.push_back({ref_stride, all.vpls.size(), 0.0, all.seconds});
+    detail.own_error =
+        detail.convergence.size() >= 2 ? detail.convergence[detail.convergence.size() - 2].relative_rmse : 0.0;
+    const ShadedReference support = shade_reference(ref_stride, VplSet::kPdfSupport, error_stride);
+    detail.support_vpls = support.vpls.size();
+    detail.support_power_ratio = power_sum(support.vpls) / light_flux;
+    detail.support_seconds = support.seconds;
+    detail.support_vs_all_lit = image_error(support.image, ref_image).relative_rmse;
+    say("support reference: " + std::to_string(support.vpls.size()) + " VPLs in " + std::to_string(support.seconds) +
+        " s");
+    out.reference_detail = detail;
+
+    const std::vector<VsglRecord>& vpls = all.vpls;
     out.reference_rsm_stride = ref_stride;
     out.reference_rsm_side = (capture.rsm.width + ref_stride - 1) / ref_stride;
     out.reference_vpls = vpls.size();
     out.reference_power_ratio = power_sum(vpls) / light_flux;
     out.reference_image = json::array({ref_image.width, ref_image.height});
-    out.reference_method = "Every stride-th RSM texel with positive flux is a VSGL of its own moments "
-                                       "(level 0), flux scaled by stride^2, sigma^2 = A / 12 with A the world area the texel stands for "
-                                       "(bounds the 1/d^2 spikes of point VPLs); shaded at the "
-                                       "generators' pixels (G-buffer stride) by the same shading pass";
-    say("reference: " + std::to_string(vpls.size()) + " VPLs, shaded in " + std::to_string(seconds_since(t0)) + " s");
+    out.reference_method =
+        "Every stride-th RSM texel with positive flux is a VSGL of its own moments "
+        "(level 0), flux scaled by stride^2, sigma^2 = A / 12 with A the world area the texel stands for "
+        "(bounds the 1/d^2 spikes of point VPLs); shaded at the "
+        "generators' pixels (G-buffer stride) by the same shading pass, in chunked dispatches";
     const float exposure = auto_exposure(downscale(ref_image, kTileFactor));
     std::vector<Rgb8Image> render_tiles{tone_map(downscale(ref_image, kTileFactor), exposure)};
     std::vector<Rgb8Image> error_tiles{error_map(downscale(ref_image, kTileFactor), downscale(ref_image, kTileFactor), 1.0f)};
     std::map<std::string, RadianceImage> k1_images;
     for (const auto& name : config.generators) {
       const GeneratorRun run = run_generator(device, light, name, config, config.light_vsgls, config.K, 0);
-      const RadianceImage img = shade_camera_view(device, camera, run.generator->vsgls(), run.generator->vsgl_count(),
-                                                  config.error_stride);
+      const RadianceImage img =
+          shade_camera_view(device, camera, run.generator->vsgls(), run.generator->vsgl_count(), error_stride);
       out.reference_error[name] = error_summary(image_error(img, ref_image));
+      out.reference_error_support[name] = error_summary(image_error(img, support.image));
       render_tiles.push_back(tone_map(downscale(img, kTileFactor), exposure));
       error_tiles.push_back(error_map(downscale(img, kTileFactor), downscale(ref_image, kTileFactor), 1.0f));
       if (is_fis(name)) k1_images[name] = img;
@@ -273,25 +423,34 @@ struct QualityRun {
                                      "reference (black 0, red, yellow, white >= 1)",
                                  tile_grid(tiles, static_cast<uint32_t>(render_tiles.size()))});
     }
-    return ReferenceShading{ref_image, exposure, k1_images};
+    return ReferenceShading{ref_image, exposure, k1_images, error_stride};
   }
 
   // 4 + 5: static flicker over offsets, with the K sweep for the FIS generators.
   void flicker_and_k_sweep(QualityModel& out, QualityResult& result, const ReferenceShading& reference,
                            const MipPyramid& light_pdf, double light_flux) const {
     const uint32_t flicker_stride = stride_for_width(capture.gbuffer.width, config.flicker_width);
+    const std::vector<float> light_texel_flux = view_data(capture, ViewKind::kLight).texel_flux;
+    // The flux origin of every frame (FIS, the configured K): where the power comes from, over offsets.
+    std::vector<FluxOrigin> origins;
     const auto flicker_of = [&](const std::string& name, float K) {
       FlickerAccumulator acc;
+      origins.clear();
       for (uint32_t f = 0; f < config.frames; ++f) {
         const GeneratorRun run = run_generator(device, light, name, config, config.light_vsgls, K, frame_offset_bits(f));
         acc.add_frame(shade_camera_view(device, camera, run.generator->vsgls(), run.generator->vsgl_count(), flicker_stride),
                       power_sum(run.vsgls));
+        if (is_fis(name) && K == config.K)
+          origins.push_back(flux_origin(run.vsgls, fis_variant(name), light_texel_flux, light_pdf, K));
       }
       return StaticFlicker{acc.weighted_cv(), acc.power_stdev(), acc.power_relative_stdev(), acc.frames()};
     };
     for (const auto& name : config.generators) {
       const auto tg = Clock::now();
       out.flicker_static[name] = flicker_of(name, config.K);
+      auto& light_view = out.views.at(view_name(ViewKind::kLight));
+      if (!origins.empty() && light_view.generators.at(name).flux_origin)
+        light_view.generators.at(name).flux_origin->over_frames = flux_origin_frames(origins);
       say("static flicker " + name + ": " + std::to_string(seconds_since(tg)) + " s");
     }
     out.flicker_image = json::array({shaded_extent(capture.gbuffer.width, flicker_stride),
@@ -309,7 +468,7 @@ struct QualityRun {
         const RadianceImage img = K == config.K && reference.k1_images.count(name) > 0
                                       ? reference.k1_images.at(name)
                                       : shade_camera_view(device, camera, run.generator->vsgls(),
-                                                          run.generator->vsgl_count(), config.error_stride);
+                                                          run.generator->vsgl_count(), reference.error_stride);
         KSweepRow row;
         row.K = K;
         row.weighted_cv = flicker.weighted_cv;
@@ -382,7 +541,7 @@ struct QualityRun {
 // Refuses a configuration that cannot run, before any work.
 void check_config(const QualityConfig& config) {
   if (config.frames < 2) throw InputError("quality: --frames must be at least 2 (flicker compares frames)");
-  if (config.error_stride == 0) throw InputError("quality: the error stride must be at least 1");
+  if (!(config.reference_budget_s > 0.0)) throw InputError("quality: the reference's time budget must be positive");
   if (config.generators.empty()) throw InputError("quality: no generators");
   for (float K : config.k_sweep)
     if (!(K > 0.0f) || !std::isfinite(K)) throw InputError("quality: every K of the sweep must be positive");

@@ -7,7 +7,8 @@
 //   5. the K sweep (Fig. 6): flicker and reference error of both FIS generators for each K;
 //   6. error against a VPL reference (harness/quality/quality_reference.hpp).
 // Everything is computed before anything is written; the result is a JSON document (schema
-// "vsgl-quality", version 3) plus pictures, rendered to markdown by quality_report.hpp.
+// "vsgl-quality", version 4) plus pictures, rendered to markdown by quality_report.hpp.
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -28,7 +29,14 @@ class Device;
 // 2: coverage beside its lattice floor (box and Eq. 3 footprints), pdf_frequency, Fig. 1 judged on the excess.
 // 3: every "stdev" (mass_over_target.stdev, power_stdev, power_relative_stdev) is the sample standard
 //    deviation (n - 1) of core/statistics.hpp, as in the tables; version 2 files hold the population value.
-inline constexpr int kQualitySchemaVersion = 3;
+// 4: views carry flux_by_pdf and FIS generators flux_origin (flux_origin.hpp); optional, so 3 is still read.
+inline constexpr int kQualitySchemaVersion = 4;
+
+// The reduced camera size of the reference comparison (1920x1088 -> 240x136) where the full size
+// does not fit the time budget, and the coarser RSM strides the convergence table compares with
+// the reference (multiples of its own stride).
+inline constexpr uint32_t kReducedErrorStride = 8;
+inline constexpr std::array<uint32_t, 3> kConvergenceStrides = {8, 4, 2};
 
 struct QualityConfig {
   std::vector<std::string> generators = paper_generator_names();
@@ -40,9 +48,12 @@ struct QualityConfig {
   PyramidPath pyramid = PyramidPath::kTexture;  // FIS pyramid path (DESIGN.md §6.1a)
   std::optional<MipStrategy> mipmapping;        // FIS texture path; unset = the device kind's default
   uint32_t frames = 32;               // static flicker frames (offsets), and at most this many sequence frames
-  uint32_t error_stride = 4;          // G-buffer stride of the reference comparison (1920x1088 -> 480x272)
+  // G-buffer stride of the reference comparison; 0: full size (1) when the references are predicted
+  // to shade within reference_budget_s, else kReducedErrorStride (DESIGN.md §11a).
+  uint32_t error_stride = 0;
+  double reference_budget_s = 600.0;
   uint32_t flicker_width = 120;       // flicker images are about this wide (stride = W / this)
-  uint32_t reference_rsm = 128;       // reference RSM side (every lit texel a VPL)
+  uint32_t reference_rsm = 0;         // reference RSM side (every lit texel a VPL); 0: the full RSM
   uint32_t sequence_reference_rsm = 64;  // the per-frame reference of the animated sequence
   std::vector<float> k_sweep = {1.0f, 2.0f, 4.0f, 8.0f};
   uint32_t coverage_picture_side = 512;

@@ -1,5 +1,7 @@
 #include "harness/quality/shading_pass.hpp"
 
+#include <algorithm>
+
 #include "harness/vk/buffer.hpp"
 #include "harness/vk/command_stream.hpp"
 #include "harness/vk/compute_pipeline.hpp"
@@ -11,8 +13,14 @@
 namespace vsgl {
 uint32_t shaded_extent(uint32_t side, uint32_t stride) { return (side + stride - 1) / stride; }
 
+uint32_t shade_chunk_vsgls(uint64_t pixels) {
+  const uint64_t tile = uint64_t{gpu::kShadeGroupSize} * gpu::kShadeGroupSize;
+  const uint64_t fit = kShadeEvaluationsPerDispatch / std::max<uint64_t>(pixels, 1);
+  return static_cast<uint32_t>(std::max(tile, fit / tile * tile));
+}
+
 RadianceImage shade_camera_view(Device& device, const DeviceView& camera, const Buffer& vsgls, uint32_t vsgl_count,
-                                uint32_t stride) {
+                                uint32_t stride, uint32_t vsgls_per_dispatch) {
   if (stride == 0) throw InputError("shading pass: the stride must be at least 1");
   if (camera.kind != ViewKind::kCamera)
     throw InputError("shading pass: it shades the camera view (G-buffer), not the " + camera.label);
@@ -24,6 +32,7 @@ RadianceImage shade_camera_view(Device& device, const DeviceView& camera, const 
   image.width = shaded_extent(camera.square.width, stride);
   image.height = shaded_extent(camera.square.height, stride);
   const std::size_t count = std::size_t{image.width} * image.height;
+  const uint32_t chunk = vsgls_per_dispatch != 0 ? vsgls_per_dispatch : shade_chunk_vsgls(count);
 
   Buffer radiance(device, count * sizeof(glm::vec4), MemoryUsage::kDeviceLocal, "shade.radiance");
   ComputePipeline pipeline(device, {"shade_vsgls.comp", 3, sizeof(gpu::ShadePush),
@@ -33,17 +42,29 @@ RadianceImage shade_camera_view(Device& device, const DeviceView& camera, const 
       buffer_bindings(
           {camera.layers(), {BufferBinding(vsgls, 0, VkDeviceSize{vsgl_count} * sizeof(VsglRecord))}, {radiance}}),
       "shade.set");
-  const gpu::ShadePush push{camera.square.width, camera.square.height, image.width, image.height, stride, vsgl_count,
-                       0, 0, glm::vec4(camera.source_position, 1.0f)};
-  device.submit_and_wait(
-      [&](VkCommandBuffer cmd) {
-        CommandStream stream(cmd);
-        // The VSGLs were written by an earlier submission: order those writes before the reads.
-        stream.full_barrier();
-        stream.dispatch(pipeline, set, push, div_up(image.width, gpu::kShadeGroupSize),
-                        div_up(image.height, gpu::kShadeGroupSize));
-      },
-      "shading pass");
+  // One submission per chunk: a driver's watchdog (about 2 s on Windows) limits each submission, and
+  // no chunk holds more than kShadeEvaluationsPerDispatch VSGL evaluations.
+  for (uint32_t first = 0; first < vsgl_count; first += chunk) {
+    const uint32_t n = std::min(chunk, vsgl_count - first);
+    const gpu::ShadePush push{camera.square.width,
+                              camera.square.height,
+                              image.width,
+                              image.height,
+                              stride,
+                              n,
+                              first,
+                              first == 0 ? 0u : 1u,
+                              glm::vec4(camera.source_position, 1.0f)};
+    device.submit_and_wait(
+        [&](VkCommandBuffer cmd) {
+          CommandStream stream(cmd);
+          // The VSGLs (and an earlier chunk's sums) were written by an earlier submission.
+          stream.full_barrier();
+          stream.dispatch(pipeline, set, push, div_up(image.width, gpu::kShadeGroupSize),
+                          div_up(image.height, gpu::kShadeGroupSize));
+        },
+        "shading pass");
+  }
   image.pixels = download_vector<glm::vec4>(device, radiance, count);
   return image;
 }

@@ -27,11 +27,23 @@ struct DeviceView;
 // The output extent for a G-buffer side and a stride: ceil(side / stride).
 uint32_t shaded_extent(uint32_t side, uint32_t stride);
 
+// At most this many VSGL evaluations (pixels x VSGLs) per dispatch. lavapipe on 2 loaded cores
+// evaluates about 2e7 per second (the quality run's reference, DESIGN.md §11a), so a chunk takes
+// 1-2 s there (a CPU driver has no watchdog); a discrete GPU does 1e10 or more, a few ms, far below
+// the 2 s a Windows driver allows one submission (TDR), for any number of VSGLs (the converged
+// reference has 10^5).
+inline constexpr uint64_t kShadeEvaluationsPerDispatch = uint64_t{1} << 25;
+// VSGLs per dispatch for an image of `pixels`: kShadeEvaluationsPerDispatch / pixels rounded down
+// to a whole tile of the kernel (kShadeGroupSize^2), at least one tile.
+uint32_t shade_chunk_vsgls(uint64_t pixels);
+
 // Shades the uploaded camera view (`camera.kind` must be kCamera; the camera position is its
-// source_position) with the first `vsgl_count` records of `vsgls`. Throws InputError for a stride
-// of 0, a light view, or a buffer holding fewer than `vsgl_count` records.
+// source_position) with the first `vsgl_count` records of `vsgls`, in chunks of
+// `vsgls_per_dispatch` VSGLs (0: shade_chunk_vsgls), one submission each; the sum keeps the index
+// order, so the image does not depend on the chunking. Throws InputError for a stride of 0, a light
+// view, or a buffer holding fewer than `vsgl_count` records.
 RadianceImage shade_camera_view(Device& device, const DeviceView& camera, const Buffer& vsgls, uint32_t vsgl_count,
-                                uint32_t stride);
+                                uint32_t stride, uint32_t vsgls_per_dispatch = 0);
 
 // The CPU twin of one output pixel: G-buffer texel (x, y) of `gbuffer`, seen from `camera_position`.
 glm::vec4 shade_pixel_reference(const ViewImage& gbuffer, uint32_t x, uint32_t y, glm::vec3 camera_position,

@@ -16,9 +16,9 @@ struct ShadePush {
   uint out_width;   // ceil(W / stride) x ceil(H / stride)
   uint out_height;
   uint stride;
-  uint vsgl_count;
-  uint pad0;
-  uint pad1;
+  uint vsgl_count;  // VSGLs [first_vsgl, first_vsgl + vsgl_count) of the buffer
+  uint first_vsgl;
+  uint accumulate;  // 1: add to the radiance already in the output (a later chunk), 0: start from 0
   vec4 camera_position;
 };
 VSGL_LAYOUT(ShadePush, 48);
