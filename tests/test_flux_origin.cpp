@@ -14,16 +14,12 @@
 #include "harness/quality/flux_origin.hpp"
 #include "harness/quality/quality_metrics.hpp"
 #include "harness/reference/fis_reference.hpp"
+#include "test_support.hpp"
 
 namespace vsgl {
 namespace {
 
-std::vector<glm::vec4> layer(uint32_t w, uint32_t h, const std::function<glm::vec4(uint32_t, uint32_t)>& f) {
-  std::vector<glm::vec4> out;
-  for (uint32_t y = 0; y < h; ++y)
-    for (uint32_t x = 0; x < w; ++x) out.push_back(f(x, y));
-  return out;
-}
+using test::layer;
 
 // 8 x 8 texels (M = 64, L = 3): PDF 0 on the left half (x < 4), 1 on the right; flux 3 per texel
 // on the left and 1 on the right, so the PDF's zero half holds 96 / 128 = 0.75 of the flux.

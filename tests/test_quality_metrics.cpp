@@ -12,16 +12,12 @@
 #include "harness/core/error.hpp"
 #include "harness/reference/fis_reference.hpp"
 #include "harness/quality/quality_metrics.hpp"
+#include "test_support.hpp"
 
 namespace vsgl {
 namespace {
 
-std::vector<glm::vec4> layer(uint32_t w, uint32_t h, const std::function<glm::vec4(uint32_t, uint32_t)>& f) {
-  std::vector<glm::vec4> out;
-  for (uint32_t y = 0; y < h; ++y)
-    for (uint32_t x = 0; x < w; ++x) out.push_back(f(x, y));
-  return out;
-}
+using test::layer;
 
 // Moment pyramids of a flat, uniformly lit square (flux 1 per channel per texel) whose PDF is q.
 std::array<MipPyramid, 3> synthetic_view(uint32_t side, const std::function<float(uint32_t, uint32_t)>& q) {

@@ -1,10 +1,12 @@
 #pragma once
-// What many suites need: a temporary directory that cleans up after itself, and readers of
-// whole files that name the path when they cannot.
+// What many suites need: a temporary directory that cleans up after itself, readers of
+// whole files that name the path when they cannot, the checkout and synthetic image layers.
 #include <cerrno>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <stdexcept>
 #include <string>
@@ -12,6 +14,7 @@
 #include <system_error>
 #include <vector>
 
+#include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
 namespace vsgl::test {
@@ -61,5 +64,13 @@ inline nlohmann::json read_json(const std::filesystem::path& path) {
 // The checkout the tests compare against (the programs themselves never read it: DESIGN.md §10).
 // One definition for every suite, so that suites compiled together in one unity batch share it.
 inline const std::filesystem::path kSource = VSGL_SOURCE_DIR;
+
+// A w x h image layer, row by row, texel (x, y) = f(x, y): synthetic RSM and pyramid inputs.
+inline std::vector<glm::vec4> layer(uint32_t w, uint32_t h, const std::function<glm::vec4(uint32_t, uint32_t)>& f) {
+  std::vector<glm::vec4> out;
+  for (uint32_t y = 0; y < h; ++y)
+    for (uint32_t x = 0; x < w; ++x) out.push_back(f(x, y));
+  return out;
+}
 
 }  // namespace vsgl::test
