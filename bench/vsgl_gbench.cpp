@@ -38,6 +38,7 @@
 #include "bench/cli/program_main.hpp"
 #include "bench/cli/generator_options.hpp"
 #include "bench/cli/gpu_session.hpp"
+#include "harness/core/platform_path.hpp"
 #include "harness/capture/capture_files.hpp"
 #include "harness/generators/fis/fis_generator.hpp"
 #include "harness/generators/generator_registry.hpp"
@@ -94,10 +95,10 @@ void add_options(CLI::App& app, Options& o, std::vector<std::string>& tables, cl
 // config. Unlike `tables` on a CPU device, every generator by default (a dashboard wants them all).
 TablesOptions timed_options(const Options& o, const DeviceInfo& info) {
   TablesOptions t;
-  t.captures_dir = o.captures;
-  t.scenes = default_scene_library({o.assets.begin(), o.assets.end()});
+  t.captures_dir = path_from_utf8(o.captures);
+  t.scenes = default_scene_library(paths_from_utf8(o.assets));
   t.tables = o.tables;
-  t.captures = {o.capture_dirs.begin(), o.capture_dirs.end()};
+  t.captures = paths_from_utf8(o.capture_dirs);
   t.generators = o.generator.generators.empty() ? generator_names() : o.generator.generators;
   t.camera_vsgls = o.generator.camera_vsgls;
   t.light_vsgls = o.generator.light_vsgls;
