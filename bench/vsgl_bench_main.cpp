@@ -24,6 +24,8 @@ int dispatch(int argc, char** argv) {
   // as fixed at build time (harness/core/build_info.hpp): true wherever the binary was copied.
   app.set_version_flag("--version", vsgl::version_text("vsgl-bench"));
   app.footer(vsgl::cli::exit_codes_help());  // inherited by every command's help
+  // CLI11 takes "/name" for an option on Windows by default; here it is a path, as elsewhere.
+  app.allow_windows_style_options(false);
   // A repeated single-value option keeps its last value, as before; list options say so.
   app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
   const std::vector<vsgl::cli::Command> commands{

@@ -39,6 +39,7 @@
 #include "bench/cli/generator_options.hpp"
 #include "bench/cli/gpu_session.hpp"
 #include "bench/cli/timed_generators.hpp"
+#include "harness/core/platform_path.hpp"
 #include "harness/capture/capture_files.hpp"
 #include "harness/generators/fis/fis_generator.hpp"
 #include "harness/generators/generator_registry.hpp"
@@ -95,10 +96,10 @@ void add_options(CLI::App& app, Options& o, std::vector<std::string>& tables, cl
 // config. Unlike `tables` on a CPU device, every generator by default (a dashboard wants them all).
 TablesOptions timed_options(const Options& o, const DeviceInfo& info) {
   TablesOptions t;
-  t.captures_dir = o.captures;
-  t.scenes = default_scene_library({o.assets.begin(), o.assets.end()});
+  t.captures_dir = path_from_utf8(o.captures);
+  t.scenes = default_scene_library(paths_from_utf8(o.assets));
   t.tables = o.tables;
-  t.captures = {o.capture_dirs.begin(), o.capture_dirs.end()};
+  t.captures = paths_from_utf8(o.capture_dirs);
   cli::apply_generator_options(o.generator, t);
   t.timing = TimingOptions::defaults_for(info);
   return t;

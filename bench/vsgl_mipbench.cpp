@@ -28,6 +28,7 @@
 #include "bench/cli/program_main.hpp"
 #include "bench/cli/gpu_session.hpp"
 #include "harness/core/error.hpp"
+#include "harness/core/platform_path.hpp"
 #include "harness/generators/device_view.hpp"
 #include "harness/generators/fis/fis_generator.hpp"
 #include "harness/scene/named_scene.hpp"
@@ -107,12 +108,12 @@ int run(int argc, char** argv) {
   benchmark::AddCustomContext("vsgl_git_commit", build["git_commit"].get<std::string>());
   benchmark::AddCustomContext("vsgl_default_mipmapping", mip_strategy_name(default_mip_strategy(info)));
 
-  const SceneLibrary library = default_scene_library({assets.begin(), assets.end()});
+  const SceneLibrary library = default_scene_library(paths_from_utf8(assets));
   std::vector<std::unique_ptr<TableState>> states;
   for (int number : tables) {
     auto t = std::make_unique<TableState>();
     const TableScene scene = table_scene(number, library);
-    const std::filesystem::path dir = std::filesystem::path(captures) / scene.scene;
+    const std::filesystem::path dir = path_from_utf8(captures) / scene.scene;
     const auto say = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
     t->capture = provide_table_capture(device, scene, library, dir, RecordSizes{}, say).capture;
     benchmark::AddCustomContext("vsgl_table" + std::to_string(number) + "_capture", dir.string());

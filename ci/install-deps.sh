@@ -1,14 +1,17 @@
 #!/usr/bin/env bash
 # Installs the Debian packages vsgl-bench needs, only those that are missing. Idempotent.
-# Usage: bash ci/install-deps.sh             (as root, or as a user with sudo)
-#        bash ci/install-deps.sh --windows   also the Windows cross build's tools and Wine
-#                                            (windows-cross preset, ci/windows-test.sh)
+# Usage: bash ci/install-deps.sh                (as root, or as a user with sudo)
+#        bash ci/install-deps.sh --no-windows   without the Windows cross build's tools and Wine
+#                                               (windows-cross preset, ci/windows-test.sh, which
+#                                               ci/test.sh then skips, saying so)
+# (--windows, the default, is still taken.)
 set -euo pipefail
-windows=false
+windows=true
 for arg in "$@"; do
   case "$arg" in
     --windows) windows=true ;;
-    *) echo "ci/install-deps.sh: unknown option '$arg' (--windows)" >&2; exit 2 ;;
+    --no-windows) windows=false ;;
+    *) echo "ci/install-deps.sh: unknown option '$arg' (--no-windows)" >&2; exit 2 ;;
   esac
 done
 

@@ -2,7 +2,9 @@
 # The README's test command: install what is missing, build with warnings as errors, and run
 # every test on lavapipe with the Khronos validation layer (any validation error fails a test),
 # then the device tests again on SwiftShader (a second Vulkan implementation with other limits:
-# 16 storage images per stage, subgroup size 4) when Debian's chromium provides its ICD.
+# 16 storage images per stage, subgroup size 4) when Debian's chromium provides its ICD; and last
+# the Windows build, its tests and programs under Wine and Xvfb on lavapipe (ci/windows-test.sh,
+# DESIGN.md §13.1; skipped, saying so, without mingw-w64, Wine or Xvfb).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash ci/install-deps.sh
@@ -25,4 +27,7 @@ else
   swift="SwiftShader gpu tests skipped: $swiftshader_icd not found (install Debian's chromium)"
   echo "ci/test.sh: $swift"
 fi
-echo "ci/test.sh: build $((built - start)) s, tests $((tested - built)) s, $swift"
+linux_done=$(date +%s)
+bash ci/windows-test.sh
+echo "ci/test.sh: build $((built - start)) s, tests $((tested - built)) s, $swift," \
+  "Windows step $(( $(date +%s) - linux_done )) s"

@@ -3,7 +3,16 @@
 #include <array>
 #include <cstdio>
 #include <string>
+
+#ifdef _WIN32
+#include <sstream>
+#include <vector>
+
+#include "child_process.hpp"
+#include "test_support.hpp"
+#else
 #include <sys/wait.h>
+#endif
 
 namespace vsgl::test {
 
@@ -11,6 +20,31 @@ struct CliResult {
   int exit_code;
   std::string output;  // stdout and stderr together
 };
+
+#ifdef _WIN32
+
+// No POSIX shell here: the words of `arguments` (the tests put no quotes or redirections in them)
+// become the arguments, and `environment` the changes to this process's environment.
+inline CliResult run_program(const std::string& executable, const std::string& arguments,
+                             const std::string& environment = "") {
+  std::istringstream words(arguments), assignments(environment);
+  std::vector<std::string> args;
+  for (std::string word; words >> word;) args.push_back(word);
+  EnvironmentChanges changes;
+  for (std::string assignment; assignments >> assignment;) {
+    const std::size_t eq = assignment.find('=');
+    changes.emplace_back(assignment.substr(0, eq), eq == std::string::npos ? "" : assignment.substr(eq + 1));
+  }
+  const TempDir dir("cli");
+  ChildProcess child = ChildProcess::start(executable, args, dir / "output.txt", changes);
+  const int code = child.wait();
+  std::string output;  // text as a POSIX pipe gives it: "\r\n" (the C runtime's text mode) is "\n"
+  for (const char c : read_text(dir / "output.txt"))
+    if (c != '\r') output += c;
+  return CliResult{code, output};
+}
+
+#else
 
 // `environment`: "NAME=VALUE ..." put before the command (a shell assignment).
 inline CliResult run_program(const std::string& executable, const std::string& arguments,
@@ -25,6 +59,8 @@ inline CliResult run_program(const std::string& executable, const std::string& a
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return result;
 }
+
+#endif
 
 inline CliResult run_cli(const std::string& arguments) { return run_program(VSGL_BENCH_EXE, arguments); }
 

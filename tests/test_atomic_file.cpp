@@ -1,16 +1,12 @@
 // No half-written output after a kill (DESIGN.md §10, §12). Real `vsgl-bench tables` and
 // `record` runs are stopped at known points of writing a known output file by the atomic
-// writer's TEST-ONLY pause hook (harness/core/test_pause.hpp) and then sent SIGKILL by this test.
+// writer's TEST-ONLY pause hook (harness/core/test_pause.hpp) and then killed by this test (SIGKILL;
+// TerminateProcess on Windows: tests/child_process.hpp).
 // Afterwards every output path must hold the complete old file or the complete new one, the
 // file being written at "partial" or "complete" must still be the old one (and its temporary
 // must exist: the hook really stopped mid-write), at "renamed" the new one; the next run must
 // succeed and leave no temporary behind.
 #include <gtest/gtest.h>
-
-#include <fcntl.h>
-#include <signal.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <chrono>
 #include <cstdlib>
@@ -31,6 +27,7 @@
 #include "harness/core/json_schema_subset.hpp"
 #include "harness/formats/sweep_model.hpp"
 #include "harness/formats/table_model.hpp"
+#include "child_process.hpp"
 #include "test_support.hpp"
 
 namespace vsgl {
@@ -49,7 +46,7 @@ std::string test_device() {
 }
 
 struct Child {
-  pid_t pid = -1;
+  test::ChildProcess process;
   fs::path log;
 };
 
@@ -57,46 +54,20 @@ struct Child {
 // `pause_at` is not empty.
 Child start(const std::vector<std::string>& args, const fs::path& log, const std::string& pause_at,
             const fs::path& notify) {
-  Child c{-1, log};
-  c.pid = ::fork();
-  if (c.pid == 0) {
-    const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    if (fd >= 0) {
-      ::dup2(fd, 1);
-      ::dup2(fd, 2);
-    }
-    if (!pause_at.empty()) {
-      ::setenv("VSGL_TEST_PAUSE_AT", pause_at.c_str(), 1);
-      ::setenv("VSGL_TEST_PAUSE_NOTIFY", notify.c_str(), 1);
-    } else {
-      ::unsetenv("VSGL_TEST_PAUSE_AT");
-    }
-    std::vector<char*> argv;
-    std::string exe = VSGL_BENCH_EXE;
-    argv.push_back(exe.data());
-    std::vector<std::string> copy = args;
-    for (auto& a : copy) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    ::execv(exe.c_str(), argv.data());
-    ::_exit(127);
-  }
-  return c;
-}
-
-// Runs to the end; returns the exit code (-1 when killed by a signal).
-int finish(const Child& c) {
-  int status = 0;
-  ::waitpid(c.pid, &status, 0);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  const test::EnvironmentChanges hook =
+      pause_at.empty()
+          ? test::EnvironmentChanges{{"VSGL_TEST_PAUSE_AT", ""}}
+          : test::EnvironmentChanges{{"VSGL_TEST_PAUSE_AT", pause_at}, {"VSGL_TEST_PAUSE_NOTIFY", notify.string()}};
+  return Child{test::ChildProcess::start(VSGL_BENCH_EXE, args, log, hook), log};
 }
 
 int run_to_end(const std::vector<std::string>& args, const fs::path& log) {
-  return finish(start(args, log, "", {}));
+  return start(args, log, "", {}).process.wait();
 }
 
-// Waits until the child reached the pause point (the marker appears), then sends SIGKILL.
-// Fails (and kills the child) when it exits first or takes longer than the limit.
-void kill_at_pause(const Child& c, const fs::path& notify) {
+// Waits until the child reached the pause point (the marker appears), then kills it (SIGKILL;
+// TerminateProcess). Fails (and kills the child) when it exits first or takes longer than the limit.
+void kill_at_pause(Child c, const fs::path& notify) {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(8);
   bool paused = false;
   while (std::chrono::steady_clock::now() < deadline) {
@@ -104,18 +75,15 @@ void kill_at_pause(const Child& c, const fs::path& notify) {
       paused = true;
       break;
     }
-    int status = 0;
-    if (::waitpid(c.pid, &status, WNOHANG) == c.pid) {
-      ADD_FAILURE() << "the run ended (status " << status << ") before the pause point:\n" << slurp(c.log);
+    if (const auto code = c.process.exit_code_if_ended()) {
+      ADD_FAILURE() << "the run ended (exit code " << *code << ") before the pause point:\n" << slurp(c.log);
       return;
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
-  ::kill(c.pid, SIGKILL);
-  int status = 0;
-  ::waitpid(c.pid, &status, 0);
+  const bool killed = c.process.kill_and_wait();
   EXPECT_TRUE(paused) << "the run never reached the pause point:\n" << slurp(c.log);
-  EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL);
+  EXPECT_TRUE(killed);
   fs::remove(notify);
 }
 

@@ -1,7 +1,4 @@
 // Capture storage (DESIGN.md §3) and its rejection of bad input (DESIGN.md §12). CPU only, no device.
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <bit>
 #include <cmath>
 #include <cstring>
@@ -22,6 +19,7 @@
 #include "harness/capture/capture_files.hpp"
 #include "harness/core/error.hpp"
 #include "harness/capture/exr_io.hpp"
+#include "child_process.hpp"
 #include "test_support.hpp"
 
 namespace vsgl {
@@ -34,7 +32,7 @@ using test::TempDir;
 
 std::set<std::string> file_names(const fs::path& dir) {
   std::set<std::string> names;
-  for (const auto& entry : fs::directory_iterator(dir)) names.insert(entry.path().filename());
+  for (const auto& entry : fs::directory_iterator(dir)) names.insert(entry.path().filename().string());
   return names;
 }
 
@@ -558,13 +556,12 @@ TEST(CaptureIo, CorruptChannelNameIsEscapedInTheMessage) {
 // the next write of NAME; one of a live process is left alone (it may still be writing).
 TEST(CaptureIo, AtomicWriterRemovesTemporariesOfDeadWriters) {
   TempDir temp;
-  const pid_t dead = ::fork();
-  if (dead == 0) ::_exit(0);
-  ASSERT_GT(dead, 0);
-  ::waitpid(dead, nullptr, 0);
+  const std::uint64_t dead = test::ended_process_id();
+  ASSERT_GT(dead, 0u);
+  test::ChildProcess running = test::ChildProcess::start_idle();
   const fs::path file = temp.path() / "table1.json";
   const std::string stale = ".table1.json.tmp-" + std::to_string(dead) + "-0";
-  const std::string live = ".table1.json.tmp-" + std::to_string(::getppid()) + "-3";
+  const std::string live = ".table1.json.tmp-" + std::to_string(running.id()) + "-3";
   const std::string other = ".table2.json.tmp-" + std::to_string(dead) + "-1";
   for (const auto& name : {stale, live, other}) std::ofstream(temp.path() / name) << "partial";
   write_text_atomic(file, "new");

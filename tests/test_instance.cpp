@@ -12,6 +12,7 @@ namespace vsgl {
 namespace {
 
 TEST(ValidationLayer, CountsErrorsOfInvalidCalls) {
+  if (!test::test_validation()) GTEST_SKIP() << "VSGL_TEST_VALIDATION=off: no validation layer to count errors with";
   GpuContextOptions options;
   options.instance.validation = true;
   options.instance.quiet_validation = true;

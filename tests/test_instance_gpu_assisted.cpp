@@ -12,6 +12,7 @@
 #include <memory>
 #include <string>
 
+#include "gpu_test.hpp"
 #include "tiny_capture.hpp"
 #include "harness/vk/buffer.hpp"
 #include "kernels/include/interface/testing.h"
@@ -58,6 +59,7 @@ std::string all_messages(const Instance& instance) {
 }
 
 TEST(GpuAssistedValidation, GeneratorsMakeNoOutOfBoundsAccess) {
+  if (!test::test_validation()) GTEST_SKIP() << "VSGL_TEST_VALIDATION=off: no validation layer";
   GpuContext& ctx = gpu_av_context();
   Device& dev = ctx.device();
   Instance& instance = ctx.instance();

@@ -2,7 +2,9 @@
 // the Windows build, where ci/windows-test.sh exercises them through vsgl-bench.exe.
 #include <gtest/gtest.h>
 
+#ifndef _WIN32
 #include <sys/wait.h>
+#endif
 #include <unistd.h>
 
 #include <cstdio>
@@ -16,6 +18,7 @@
 #include "harness/core/platform_file.hpp"
 #include "harness/core/platform_path.hpp"
 #include "harness/core/platform_process.hpp"
+#include "child_process.hpp"
 #include "test_support.hpp"
 
 namespace vsgl {
@@ -33,6 +36,12 @@ fs::path fresh_dir(const std::string& name) {
 TEST(Platform, ARunningProcessIsNotGoneAnEndedOneIs) {
   EXPECT_EQ(current_process_id(), static_cast<std::uint64_t>(::getpid()));
   EXPECT_FALSE(process_is_gone(current_process_id()));
+  test::ChildProcess running = test::ChildProcess::start_idle();
+  ASSERT_NE(running.id(), 0u);
+  EXPECT_FALSE(process_is_gone(running.id()));
+  ASSERT_TRUE(running.kill_and_wait());
+  EXPECT_TRUE(process_is_gone(test::ended_process_id()));
+#ifndef _WIN32
   const pid_t child = ::fork();
   ASSERT_GE(child, 0);
   if (child == 0) ::_exit(0);
@@ -40,6 +49,7 @@ TEST(Platform, ARunningProcessIsNotGoneAnEndedOneIs) {
   int status = 0;
   ASSERT_EQ(::waitpid(child, &status, 0), child);
   EXPECT_TRUE(process_is_gone(static_cast<std::uint64_t>(child)));
+#endif
 }
 
 TEST(Platform, NewFileIsExclusiveAndReplaceFileReplacesTheTarget) {
@@ -64,13 +74,23 @@ TEST(Platform, NewFileIsExclusiveAndReplaceFileReplacesTheTarget) {
 TEST(Platform, Utf8TextBecomesThePathOfThatName) {
   const std::string name = "données-Φγ-µ";
   const fs::path dir = fresh_dir("path");
-  const fs::path p = path_from_utf8((dir / name).string());
+  const fs::path p = path_from_utf8(dir.string() + "/" + name);
   EXPECT_EQ(p.filename().string(), name);
   fs::create_directories(p);
-  EXPECT_TRUE(fs::is_directory(dir / name));
+  EXPECT_TRUE(fs::is_directory(dir / std::u8string(u8"données-Φγ-µ")));
   fs::remove_all(dir);
 }
 
+#ifdef _WIN32
+// Windows: this process's own arguments, from its wide command line (a non-ASCII one is
+// ci/windows-test.sh's end-to-end run, in a folder named données-Φγ).
+TEST(Platform, ArgumentsAreTheWideCommandLines) {
+  Utf8Arguments args(__argc, __argv);
+  ASSERT_EQ(args.argc(), __argc);
+  EXPECT_NE(std::string(args.argv()[0]).find("vsgl_tests"), std::string::npos) << args.argv()[0];
+  EXPECT_EQ(args.argv()[__argc], nullptr);
+}
+#else
 TEST(Platform, ArgumentsAreKeptAsGiven) {
   std::string a0 = "vsgl-bench", a1 = "--out", a2 = "données";
   char* argv[] = {a0.data(), a1.data(), a2.data(), nullptr};
@@ -79,6 +99,7 @@ TEST(Platform, ArgumentsAreKeptAsGiven) {
   EXPECT_EQ(std::string(args.argv()[2]), a2);
   EXPECT_EQ(args.argv()[3], nullptr);
 }
+#endif
 
 TEST(Platform, AFileIsNotATerminal) {
   std::FILE* f = std::tmpfile();

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <numbers>
 
 #include "gpu_test.hpp"
 #include "harness/scene/brsm_pdf.hpp"
@@ -114,16 +115,18 @@ TEST_F(QualityGpuTest, ReferenceMatchesABruteForceVplSum) {
       const glm::dvec3 wo = glm::normalize(cam - P);
       const double s_r = (2.0 / (alpha * alpha)) / (4.0 * std::max(glm::dot(n, wo), 1e-4));
       const glm::dvec3 axis_r = glm::reflect(-wo, n);
-      const double spec_amp = std::max(glm::dot(axis_r, n), 0.0) * s_r / (2.0 * M_PI * (1.0 - std::exp(-2.0 * s_r)));
+      const double spec_amp =
+          std::max(glm::dot(axis_r, n), 0.0) * s_r / (2.0 * std::numbers::pi * (1.0 - std::exp(-2.0 * s_r)));
       glm::dvec3 sum(0.0);
       for (const auto& v : vpls) {
         const glm::dvec3 d = glm::dvec3(v.mu()) - P;
         const double d2 = glm::dot(d, d);
         const glm::dvec3 wc = d / std::sqrt(d2);
         const double lambda = static_cast<double>(v.sharpness());
-        const double norm = lambda < 1e-6 ? 1.0 / (4.0 * M_PI) : lambda / (2.0 * M_PI * (1.0 - std::exp(-2.0 * lambda)));
+        const double norm = lambda < 1e-6 ? 1.0 / (4.0 * std::numbers::pi)
+                                          : lambda / (2.0 * std::numbers::pi * (1.0 - std::exp(-2.0 * lambda)));
         const double emission = norm * std::exp(lambda * (glm::dot(wc, -glm::dvec3(v.axis())) - 1.0));
-        const double f_d = 1.17 / M_PI * std::exp(2.133 * (glm::dot(wc, n) - 1.0));
+        const double f_d = 1.17 / std::numbers::pi * std::exp(2.133 * (glm::dot(wc, n) - 1.0));
         const double f_s = spec_amp * std::exp(s_r * (glm::dot(wc, axis_r) - 1.0));
         sum += glm::dvec3(v.power()) * emission * (rd * f_d + rs * f_s) / d2;
       }

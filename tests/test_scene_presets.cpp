@@ -13,6 +13,7 @@
 #include "harness/capture/capture_files.hpp"
 #include "harness/core/embedded_files.hpp"
 #include "harness/core/error.hpp"
+#include "harness/core/platform_path.hpp"
 #include "harness/scene/named_scene.hpp"
 #include "harness/report/tables_run.hpp"
 #include "harness/scene/asset_search.hpp"
@@ -106,7 +107,8 @@ TEST(ScenePresets, UnknownKeysAndBadValuesAreRefusedNamingTheKey) {
 TEST(ScenePresets, AMissingModelListsEveryPlaceLookedAndWhereToGetIt) {
   test::TempDir tmp("assets");
   const ScenePreset p = read_scene_preset(write_preset(tmp.path() / "presets", "x", preset_text("x")));
-  const AssetSearch search = make_asset_search({tmp.path() / "a"}, "/nowhere/b::/nowhere/c");
+  const std::string env_assets = "/nowhere/b" + std::string(2, kPathListSeparator) + "/nowhere/c";
+  const AssetSearch search = make_asset_search({tmp.path() / "a"}, env_assets.c_str());
   // Nothing beside the checkout: --assets, VSGL_ASSETS, then assets/ in the current directory.
   ASSERT_EQ(search.dirs.size(), 4u);
   EXPECT_EQ(search.dirs[1].origin, "VSGL_ASSETS");

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <functional>
 #include <iterator>
+#include <random>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -19,17 +20,28 @@
 
 namespace vsgl::test {
 
-// A fresh, empty directory <system temp>/vsgl_<name>_XXXXXX (mkdtemp: unique even across
-// concurrent test processes and reruns), removed with everything in it on destruction.
+// A fresh, empty directory <system temp>/vsgl_<name>_XXXXXX (mkdtemp; on Windows random names
+// until one is new: unique even across concurrent test processes and reruns), removed with
+// everything in it on destruction.
 class TempDir {
  public:
   explicit TempDir(std::string_view name = "test") {
     std::string pattern = (std::filesystem::temp_directory_path() / ("vsgl_" + std::string(name) + "_XXXXXX")).string();
+#ifdef _WIN32
+    // No mkdtemp: random names until one is new (create_directory is false for an existing one).
+    std::random_device random;
+    for (int attempt = 0; attempt < 100 && path_.empty(); ++attempt) {
+      std::filesystem::path candidate = pattern.substr(0, pattern.size() - 6) + std::to_string(random() % 1000000);
+      if (std::filesystem::create_directory(candidate)) path_ = candidate;
+    }
+    if (path_.empty()) throw std::runtime_error("cannot create a temporary directory " + pattern);
+#else
     std::vector<char> buffer(pattern.begin(), pattern.end());
     buffer.push_back('\0');
     if (::mkdtemp(buffer.data()) == nullptr)
       throw std::system_error(errno, std::generic_category(), "cannot create a temporary directory " + pattern);
     path_ = buffer.data();
+#endif
   }
   TempDir(const TempDir&) = delete;
   TempDir& operator=(const TempDir&) = delete;

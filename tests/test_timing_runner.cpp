@@ -3,8 +3,12 @@
 // runs the round-robin schedule and the stop rule, and its dispatch counts (Table 3) equal the
 // vkCmdDispatch calls actually recorded, counted here independently by wrapping the Vulkan entry
 // points, as the number of kernels per generator equals the distinct pipelines bound.
-#include <dlfcn.h>
 #include <gtest/gtest.h>
+#ifdef _WIN32
+#include <windows.h>
+#else
+#include <dlfcn.h>
+#endif
 
 #include <algorithm>
 #include <atomic>
@@ -26,9 +30,19 @@
 #include "harness/vk/timestamp_pool.hpp"
 #include "harness/timing/timing_runner.hpp"
 
-// ---- independent counting: these definitions take precedence over libvulkan's for every call
-// the harness makes from this executable, and forward to the loader's (RTLD_NEXT). ----
+// ---- independent counting: these definitions take precedence over libvulkan's (on Windows over
+// the import library's thunks) for every call the harness makes from this executable, and forward
+// to the loader's: the next definition (RTLD_NEXT), or vulkan-1.dll's export. ----
 namespace {
+template <class Function>
+Function loader_function(const char* name) {
+#ifdef _WIN32
+  return reinterpret_cast<Function>(reinterpret_cast<void*>(GetProcAddress(GetModuleHandleW(L"vulkan-1.dll"), name)));
+#else
+  return reinterpret_cast<Function>(dlsym(RTLD_NEXT, name));
+#endif
+}
+
 std::atomic<bool> g_counting{false};
 std::atomic<uint32_t> g_dispatches{0};
 std::set<VkPipeline>* g_pipelines = nullptr;
@@ -36,14 +50,14 @@ std::set<VkPipeline>* g_created = nullptr;  // compute pipelines created while i
 }  // namespace
 
 extern "C" VKAPI_ATTR void VKAPI_CALL vkCmdDispatch(VkCommandBuffer cmd, uint32_t x, uint32_t y, uint32_t z) {
-  static const auto next = reinterpret_cast<PFN_vkCmdDispatch>(dlsym(RTLD_NEXT, "vkCmdDispatch"));
+  static const auto next = loader_function<PFN_vkCmdDispatch>("vkCmdDispatch");
   if (g_counting) ++g_dispatches;
   next(cmd, x, y, z);
 }
 
 extern "C" VKAPI_ATTR void VKAPI_CALL vkCmdBindPipeline(VkCommandBuffer cmd, VkPipelineBindPoint point,
                                                         VkPipeline pipeline) {
-  static const auto next = reinterpret_cast<PFN_vkCmdBindPipeline>(dlsym(RTLD_NEXT, "vkCmdBindPipeline"));
+  static const auto next = loader_function<PFN_vkCmdBindPipeline>("vkCmdBindPipeline");
   if (g_counting && g_pipelines != nullptr && point == VK_PIPELINE_BIND_POINT_COMPUTE) g_pipelines->insert(pipeline);
   next(cmd, point, pipeline);
 }
@@ -53,7 +67,7 @@ extern "C" VKAPI_ATTR VkResult VKAPI_CALL vkCreateComputePipelines(VkDevice devi
                                                                    const VkComputePipelineCreateInfo* infos,
                                                                    const VkAllocationCallbacks* allocator,
                                                                    VkPipeline* pipelines) {
-  static const auto next = reinterpret_cast<PFN_vkCreateComputePipelines>(dlsym(RTLD_NEXT, "vkCreateComputePipelines"));
+  static const auto next = loader_function<PFN_vkCreateComputePipelines>("vkCreateComputePipelines");
   const VkResult result = next(device, cache, count, infos, allocator, pipelines);
   if (result == VK_SUCCESS && g_created != nullptr) g_created->insert(pipelines, pipelines + count);
   return result;

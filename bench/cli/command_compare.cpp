@@ -65,8 +65,8 @@ struct CompareCommandOptions {
 int run_compare(const CompareCommandOptions& o) {
   const CompareOptions& options = o.options;
   const std::vector<Verdict> fail_on = parse_fail_on(o.fail_on);
-  const BenchRun base = load_bench_run_path(o.base);
-  const BenchRun fresh = load_bench_run_path(o.fresh);
+  const BenchRun base = load_bench_run_path(path_from_utf8(o.base));
+  const BenchRun fresh = load_bench_run_path(path_from_utf8(o.fresh));
   const RunComparison c = compare_runs(base, fresh, options);
   const std::string report = comparison_markdown(base, fresh, c, options);
   if (o.out) write_text_atomic(path_from_utf8(*o.out), report);

@@ -39,7 +39,7 @@ Command add_export_command(CLI::App& parent) {
       ->required();
   return {app, [o] {
             std::vector<BenchRun> runs;
-            for (const auto& f : o->runs) runs.push_back(load_bench_run_path(f));
+            for (const auto& f : o->runs) runs.push_back(load_bench_run_path(path_from_utf8(f)));
             const BenchRun run = merge_bench_runs(runs);
             write_text_atomic(path_from_utf8(o->out), export_run(run, parse_export_format(o->format)).dump(2) + "\n");
             std::fprintf(stderr, "wrote %s (%zu benchmarks)\n", o->out.c_str(), run.series.size());

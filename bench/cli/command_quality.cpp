@@ -78,7 +78,7 @@ Command add_quality_command(CLI::App& parent) {
       ->check(at_least(2))
       ->capture_default_str();
   app->add_option_function<std::string>(
-         "--sequence", [&c](const std::string& dir) { c.sequence = std::filesystem::path(dir); },
+         "--sequence", [&c](const std::string& dir) { c.sequence = path_from_utf8(dir); },
          "also the flicker over a recorded sequence (record --frames F)")
       ->type_name("DIR");
   add_generators_option(*app, c.generators, joined_names(c.generators));

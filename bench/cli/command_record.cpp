@@ -113,10 +113,10 @@ void print_import(const GltfImport& import, double import_ms) {
 int record_model_file(RecordOptions& o, GpuSession& session, const std::string& file, bool any_format) {
   const RecordSizes sizes{o.gbuffer.first, o.gbuffer.second, o.rsm};
   const auto t0 = std::chrono::steady_clock::now();
-  const GltfImport import =
-      any_format ? import_model(file, o.camera, o.light, o.ground) : import_gltf(file, o.camera, o.light, o.ground);
+  const GltfImport import = any_format ? import_model(path_from_utf8(file), o.camera, o.light, o.ground)
+                                       : import_gltf(path_from_utf8(file), o.camera, o.light, o.ground);
   print_import(import, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
-  std::string ext = std::filesystem::path(file).extension().string();
+  std::string ext = path_from_utf8(file).extension().string();
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   // The file by its name in the directory it was given in (DESIGN.md §3.4): the content hash
   // identifies the model, and where it lay is the machine's, not the capture's.
@@ -150,7 +150,7 @@ int record_model_file(RecordOptions& o, GpuSession& session, const std::string& 
 int run_record(RecordOptions& o) {
   // Every named scene is resolved (presets read, models found) before the device is opened, so a
   // missing model is an input error that writes nothing.
-  const SceneLibrary library = default_scene_library({o.assets.begin(), o.assets.end()});
+  const SceneLibrary library = default_scene_library(paths_from_utf8(o.assets));
   const auto names = o.scenes.empty() ? std::vector<std::string>{"atrium"} : o.scenes;
   if (!o.gltf && !o.model)
     for (const auto& name : names)

@@ -59,7 +59,7 @@ int run_sweep_command(const SweepCommandOptions& c) {
                        "--capture");
   if (c.capture) o.capture = path_from_utf8(*c.capture);
   if (c.scene) o.scene = *c.scene;
-  o.scenes = default_scene_library({c.assets.begin(), c.assets.end()});
+  o.scenes = default_scene_library(paths_from_utf8(c.assets));
   o.captures_dir = path_from_utf8(c.captures);
   o.record_sizes = RecordSizes{c.gbuffer.first, c.gbuffer.second, c.rsm};
   o.time_budget_s = c.time_budget;
@@ -70,7 +70,7 @@ int run_sweep_command(const SweepCommandOptions& c) {
   if (o.blocks > kMaxSweepBlocks)
     throw UsageError("--blocks must be 1 to " + std::to_string(kMaxSweepBlocks) + " (got " + std::to_string(o.blocks) +
                      ")");
-  if (c.schema) o.schema = *c.schema;
+  if (c.schema) o.schema = path_from_utf8(*c.schema);
   TablesOptions& t = o.tables;
   t.clocks_locked = c.clocks_locked;
 

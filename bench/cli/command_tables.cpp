@@ -50,7 +50,7 @@ int run_tables_command(const TablesCommandOptions& c) {
   TablesOptions o;
   const bool quick = c.quick;
   o.captures_dir = path_from_utf8(c.captures);
-  o.scenes = default_scene_library({c.assets.begin(), c.assets.end()});
+  o.scenes = default_scene_library(paths_from_utf8(c.assets));
   o.record_sizes = RecordSizes{c.gbuffer.first, c.gbuffer.second, c.rsm};
   for (const auto& d : c.capture_dirs) o.captures.push_back(path_from_utf8(d));
   o.tables.clear();
@@ -62,8 +62,8 @@ int run_tables_command(const TablesCommandOptions& c) {
   o.clocks_locked = c.clocks_locked;
   o.debug_slow = c.debug_slow;  // TEST-ONLY (harness/generators/testing/debug_slowdown.hpp)
   if (!o.debug_slow.empty()) o.wrap_generator = debug_slowdown_of(o.debug_slow);
-  if (c.paper) o.paper_tables = *c.paper;
-  if (c.schema) o.schema = *c.schema;
+  if (c.paper) o.paper_tables = path_from_utf8(*c.paper);
+  if (c.schema) o.schema = path_from_utf8(*c.schema);
   const bool progress_flag = !c.no_progress;
   const auto& out = c.out;
   GpuSession session = GpuSession::open(c.device);

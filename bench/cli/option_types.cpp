@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "harness/core/error.hpp"
+#include "harness/core/platform_path.hpp"
 
 namespace vsgl::cli {
 
@@ -72,7 +73,8 @@ CLI::Validator input_file(std::string what) {
   return CLI::Validator(
       [what](std::string& text) -> std::string {
         std::error_code ec;
-        if (!std::filesystem::is_regular_file(text, ec)) throw InputError(what + " " + text + ": no such file");
+        if (!std::filesystem::is_regular_file(path_from_utf8(text), ec))
+          throw InputError(what + " " + text + ": no such file");
         return {};
       },
       "FILE");

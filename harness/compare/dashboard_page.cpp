@@ -163,7 +163,7 @@ std::vector<BenchRun> find_table_runs(const std::filesystem::path& results_dir) 
     const std::string name = e.path().filename().string();
     if (!e.is_regular_file() || !is_table_file_name(name)) continue;
     BenchRun r = load_bench_run(e.path());
-    r.path = std::filesystem::relative(e.path(), results_dir).string();
+    r.path = std::filesystem::relative(e.path(), results_dir).generic_string();  // '/' on every host
     if (r.format == "table") runs.push_back(std::move(r));
   }
   std::sort(runs.begin(), runs.end(), [](const BenchRun& a, const BenchRun& b) {

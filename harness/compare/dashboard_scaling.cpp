@@ -207,7 +207,8 @@ std::vector<SweepRun> find_sweep_runs(const std::filesystem::path& results_dir) 
   std::vector<SweepRun> runs;
   for (const auto& e : std::filesystem::recursive_directory_iterator(results_dir)) {
     if (!e.is_regular_file() || e.path().filename() != "sweep.json") continue;
-    runs.push_back(SweepRun{std::filesystem::relative(e.path(), results_dir).string(), read_sweep_file(e.path())});
+    runs.push_back(
+        SweepRun{std::filesystem::relative(e.path(), results_dir).generic_string(), read_sweep_file(e.path())});
   }
   std::sort(runs.begin(), runs.end(), [](const SweepRun& a, const SweepRun& b) {
     const std::string sa = scene_label(a.model.scene), sb = scene_label(b.model.scene);

@@ -8,6 +8,8 @@
 #include <string>
 #include <thread>
 
+#include "harness/core/platform_environment.hpp"
+#include "harness/core/platform_path.hpp"
 #include "harness/core/platform_process.hpp"
 
 namespace vsgl {
@@ -59,8 +61,8 @@ bool test_pause_wanted(std::string_view point, const std::filesystem::path& targ
 
 void test_pause_point(std::string_view point, const std::filesystem::path& target) {
   if (!test_pause_wanted(point, target)) return;
-  if (const char* notify = std::getenv("VSGL_TEST_PAUSE_NOTIFY"); notify != nullptr && *notify != '\0') {
-    std::ofstream(std::filesystem::path(notify), std::ios::binary | std::ios::trunc) << current_process_id() << "\n";
+  if (const auto notify = environment_variable("VSGL_TEST_PAUSE_NOTIFY"); notify && !notify->empty()) {
+    std::ofstream(path_from_utf8(*notify), std::ios::binary | std::ios::trunc) << current_process_id() << "\n";
   }
   for (;;) std::this_thread::sleep_for(std::chrono::hours(1));  // until the test kills this process
 }

@@ -3,6 +3,7 @@
 #include <string_view>
 
 #include "harness/core/error.hpp"
+#include "harness/core/platform_path.hpp"
 #include "harness/core/printable_text.hpp"
 #include "harness/scene/scene_preset.hpp"
 
@@ -13,10 +14,10 @@ AssetSearch make_asset_search(const std::vector<std::filesystem::path>& cli_dirs
   for (const auto& d : cli_dirs) out.dirs.push_back({d, "--assets"});
   std::string_view env = env_assets == nullptr ? std::string_view() : std::string_view(env_assets);
   while (!env.empty()) {
-    const std::size_t colon = env.find(':');
-    const std::string_view part = env.substr(0, colon);
-    if (!part.empty()) out.dirs.push_back({std::filesystem::path(part), "VSGL_ASSETS"});
-    env = colon == std::string_view::npos ? std::string_view() : env.substr(colon + 1);
+    const std::size_t separator = env.find(kPathListSeparator);
+    const std::string_view part = env.substr(0, separator);
+    if (!part.empty()) out.dirs.push_back({path_from_utf8(part), "VSGL_ASSETS"});
+    env = separator == std::string_view::npos ? std::string_view() : env.substr(separator + 1);
   }
   out.dirs.push_back({"assets", "assets/ in the current directory"});
   return out;

@@ -1,6 +1,7 @@
 #pragma once
 // Where a scene preset's model file is looked for (DESIGN.md §3.4), in order: every --assets DIR
-// as given, then the directories of VSGL_ASSETS (separated by ':'), then assets/ in the current
+// as given, then the directories of VSGL_ASSETS (separated by ':', on Windows ';': kPathListSeparator,
+// in UTF-8), then assets/ in the current
 // directory. Nothing depends on where the program was built, so a copied binary searches the same
 // places. Models are data: they are read from there and never part of the repository.
 #include <filesystem>
@@ -20,8 +21,8 @@ struct AssetSearch {
   std::vector<AssetDirectory> dirs;  // in search order
 };
 
-// The search path from the command line's directories and the value of VSGL_ASSETS (nullptr or
-// empty: none), then assets/ in the current directory.
+// The search path from the command line's directories and the value of VSGL_ASSETS (UTF-8; nullptr
+// or empty: none), then assets/ in the current directory.
 AssetSearch make_asset_search(const std::vector<std::filesystem::path>& cli_dirs, const char* env_assets);
 
 // A preset's model as found: the file to read, and its name relative to the asset directory it was

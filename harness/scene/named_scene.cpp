@@ -4,8 +4,11 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
+#include <string>
 
 #include "harness/core/error.hpp"
+#include "harness/core/platform_environment.hpp"
 #include "harness/core/printable_text.hpp"
 #include "harness/scene/model_scene.hpp"
 
@@ -40,7 +43,8 @@ Scene NamedScene::frame(uint32_t f, uint32_t frames) const {
 }
 
 SceneLibrary default_scene_library(const std::vector<std::filesystem::path>& assets) {
-  return SceneLibrary{built_in_scene_presets(), make_asset_search(assets, std::getenv("VSGL_ASSETS"))};
+  const std::optional<std::string> env_assets = environment_variable("VSGL_ASSETS");
+  return SceneLibrary{built_in_scene_presets(), make_asset_search(assets, env_assets ? env_assets->c_str() : nullptr)};
 }
 
 bool is_named_scene(const std::string& name, const SceneLibrary& library) {
