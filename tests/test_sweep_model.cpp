@@ -120,14 +120,14 @@ TEST(SweepModel, GammaZeroIsReadOffTheLogAxisAndClaimsAreRead) {
   ASSERT_TRUE(m.claims.has_value());
   ASSERT_EQ(m.claims->size(), 2u);
   const SweepClaim& inconclusive = (*m.claims)[0];
-  EXPECT_EQ(inconclusive.id, "pdf_independence");
-  EXPECT_FALSE(inconclusive.holds.has_value());
-  EXPECT_EQ(inconclusive.note, "too few rounds");
-  EXPECT_TRUE(inconclusive.informative);
+  EXPECT_EQ(inconclusive.claim.id, "pdf_independence");
+  EXPECT_FALSE(inconclusive.claim.holds.has_value());
+  EXPECT_EQ(inconclusive.claim.note, "too few rounds");
+  EXPECT_TRUE(inconclusive.claim.informative);
   EXPECT_EQ(inconclusive.band, 0.1);
   EXPECT_EQ(inconclusive.axis, "pdf-sharpness");
-  EXPECT_EQ((*m.claims)[1].holds, std::optional<bool>(true));
-  EXPECT_NE((*m.claims)[1].criterion.find("\u00b110 %"), std::string::npos);
+  EXPECT_EQ((*m.claims)[1].claim.holds, std::optional<bool>(true));
+  EXPECT_NE((*m.claims)[1].claim.criterion.find("\u00b110 %"), std::string::npos);
 }
 
 // The committed sweeps (results/**/sweep.json) read into the model and write back as the same

@@ -127,7 +127,7 @@ TEST_F(SweepRunTest, RepeatedBlocksTimeEveryPointInEveryBlockAndPoolTheRounds) {
   // The PDF-independence claim is judged on the pooled rounds (without k-means it is undecided).
   ASSERT_TRUE(model.claims.has_value());
   EXPECT_TRUE(model.claims->at(0).alpha.has_value());
-  for (const SweepClaimMeasure& m : model.claims->at(0).measured) EXPECT_TRUE(m.equivalence.has_value());
+  for (const SweepClaimMeasure& m : model.claims->at(0).measures) EXPECT_TRUE(m.equivalence.has_value());
 }
 
 // The error stays; sweep.json keeps the one point timed, marked incomplete (DESIGN.md §10.1), and

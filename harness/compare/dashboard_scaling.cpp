@@ -137,12 +137,13 @@ std::string claims_table(const SweepModel& m) {
   std::ostringstream os;
   os << "<h4>The paper's claims judged on this sweep</h4>\n<table class=\"claims\"><tr><th>claim</th><th>statement</th>"
         "<th>other axes</th><th>result</th><th>note</th></tr>\n";
-  for (const SweepClaim& c : *m.claims) {
+  for (const SweepClaim& s : *m.claims) {
+    const Claim& c = s.claim;
     const char* result = !c.holds ? "inconclusive" : *c.holds ? "holds" : "does not hold";
     const char* css = !c.holds ? "inconclusive" : *c.holds ? "holds" : "fails";
     os << "<tr class=\"claim " << css << "\"><td>" << xml_escape(c.id) << "</td><td title=\""
        << xml_escape("criterion: " + c.criterion) << "\">" << xml_escape(c.text) << "</td><td>"
-       << xml_escape(c.slice.empty() ? "–" : sweep_slice_text(c.slice)) << "</td><td>" << result
+       << xml_escape(s.slice.empty() ? "–" : sweep_slice_text(s.slice)) << "</td><td>" << result
        << (c.informative ? " (informative only: not a GPU's timing)" : "") << "</td><td>" << xml_escape(c.note)
        << "</td></tr>\n";
   }

@@ -23,7 +23,8 @@ struct Claim {
   std::string text;       // the paper's sentence
   std::string source;     // where the paper says it ("paper §3 (Eq. 2-3)"); "" where the document does not say
   std::string criterion;  // what is measured, and the rule the verdict follows
-  // The numbers judged, as the judging code wrote them: an object (table, quality) or an array (sweep).
+  // The numbers judged, as the judging code wrote them (table, quality). The sweep keeps its own
+  // typed (SweepClaim::measures, formats/sweep_model.hpp) and leaves this empty.
   nlohmann::ordered_json measured = nlohmann::ordered_json::object();
   std::optional<bool> holds;  // none: not measured, inconclusive, or no clear verdict; `note` says which
   std::string note;
@@ -35,7 +36,8 @@ std::string claim_verdict(const Claim& claim);
 // The verdict in words, as the quality document states it: "holds", "does not hold", else the note.
 std::string stated_verdict(const Claim& claim);
 
-// How a document writes a claim.
+// How a document writes a claim. The sweep document writes its claims' shared fields itself
+// (formats/sweep_model.cpp), between its own keys in the order its committed files have.
 enum class ClaimLayout {
   // The table's: {id, claim, criterion, measured, holds (null: none), note, informative_only}.
   kTable,

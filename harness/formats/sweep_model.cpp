@@ -289,26 +289,27 @@ std::vector<SweepClaim> read_claims(const Reader& r, const ojson& a) {
     const std::string p = "/claims/" + std::to_string(i);
     const ojson& c = a[i];
     if (!c.is_object()) r.wrong_type(c, p, "an object");
-    SweepClaim claim;
+    SweepClaim sweep;
+    Claim& claim = sweep.claim;  // the fields every document's claim has
     claim.id = r.string(c, p, "id");
     claim.text = r.string(c, p, "text");
-    claim.axis = r.string(c, p, "axis");
-    claim.slice = r.string_map(r.member(c, p, "slice"), p + "/slice");
+    sweep.axis = r.string(c, p, "axis");
+    sweep.slice = r.string_map(r.member(c, p, "slice"), p + "/slice");
     claim.criterion = r.string(c, p, "criterion");
-    claim.reference_gamma = r.non_negative(r.member(c, p, "reference_gamma"), p + "/reference_gamma");
-    claim.band = r.number(c, p, "band");
+    sweep.reference_gamma = r.non_negative(r.member(c, p, "reference_gamma"), p + "/reference_gamma");
+    sweep.band = r.number(c, p, "band");
     if (c.contains("alpha")) {
-      claim.alpha = r.number(c, p, "alpha");
-      if (!(*claim.alpha > 0 && *claim.alpha < 1)) r.fail(p + "/alpha", "is not in (0, 1)");
+      sweep.alpha = r.number(c, p, "alpha");
+      if (!(*sweep.alpha > 0 && *sweep.alpha < 1)) r.fail(p + "/alpha", "is not in (0, 1)");
     }
     const ojson& measured = r.array(c, p, "measured");
     for (std::size_t k = 0; k < measured.size(); ++k)
-      claim.measured.push_back(read_claim_measure(r, measured[k], p + "/measured/" + std::to_string(k)));
+      sweep.measures.push_back(read_claim_measure(r, measured[k], p + "/measured/" + std::to_string(k)));
     const ojson& holds = r.member(c, p, "holds");
     if (!holds.is_null()) claim.holds = r.boolean(c, p, "holds");
     claim.note = r.string(c, p, "note");
     claim.informative = r.boolean(c, p, "informative");
-    out.push_back(std::move(claim));
+    out.push_back(std::move(sweep));
   }
   return out;
 }
@@ -419,9 +420,11 @@ ojson fit_json(const SweepFitModel& f, const std::vector<SweepAxisModel>& axes) 
   return j;
 }
 
-ojson claim_json(const SweepClaim& c) {
+ojson claim_json(const SweepClaim& s) {
+  // The shared fields go between the sweep's own keys, in the order the committed files have.
+  const Claim& c = s.claim;
   ojson measured = ojson::array();
-  for (const SweepClaimMeasure& m : c.measured) {
+  for (const SweepClaimMeasure& m : s.measures) {
     ojson changes = ojson::array();
     for (const SweepClaimChange& g : m.changes) {
       ojson change{{"gamma", g.gamma}, {"point", g.point}, {"change", g.change}, {"low", g.low}, {"high", g.high}};
@@ -442,12 +445,12 @@ ojson claim_json(const SweepClaim& c) {
   }
   ojson j{{"id", c.id},
           {"text", c.text},
-          {"axis", c.axis},
-          {"slice", string_map_json(c.slice)},
+          {"axis", s.axis},
+          {"slice", string_map_json(s.slice)},
           {"criterion", c.criterion},
-          {"reference_gamma", c.reference_gamma},
-          {"band", c.band}};
-  if (c.alpha) j["alpha"] = *c.alpha;
+          {"reference_gamma", s.reference_gamma},
+          {"band", s.band}};
+  if (s.alpha) j["alpha"] = *s.alpha;
   j["measured"] = std::move(measured);
   j["holds"] = c.holds ? ojson(*c.holds) : ojson(nullptr);
   j["note"] = c.note;

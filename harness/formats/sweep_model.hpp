@@ -18,8 +18,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "harness/formats/timing_statistics.hpp"
+#include "harness/formats/claim.hpp"
 #include "harness/formats/scene_identity.hpp"
+#include "harness/formats/timing_statistics.hpp"
 
 namespace vsgl {
 
@@ -171,20 +172,17 @@ struct SweepClaimMeasure {
 };
 
 // One of the paper's claims judged on the sweep: the PDF-independence claim on a pdf-sharpness
-// axis, one per slice (sweep/pdf_independence.hpp).
+// axis, one per slice (sweep/pdf_independence.hpp). What every document's claim says (id, text,
+// criterion, holds, note, informative) is the shared Claim; the rest is the sweep's own. Its numbers
+// stay typed in `measures` (the file's "measured"), so `claim.measured` and `claim.source` are unused.
 struct SweepClaim {
-  std::string id;                                          // "pdf_independence"
-  std::string text;                                        // the paper's claim
-  std::string axis;                                        // "pdf-sharpness"
+  Claim claim;       // id "pdf_independence"; holds none: inconclusive; informative: a CPU device's
+  std::string axis;  // "pdf-sharpness"
   std::vector<std::pair<std::string, std::string>> slice;  // the other axes held; empty when none
-  std::string criterion;
   double reference_gamma = 1;
   double band = 0;
   std::optional<double> alpha;  // of the equivalence tests; absent in files written before them
-  std::vector<SweepClaimMeasure> measured;
-  std::optional<bool> holds;  // none: inconclusive
-  std::string note;
-  bool informative = false;  // a CPU device's: says nothing of a GPU
+  std::vector<SweepClaimMeasure> measures;
 };
 
 struct SweepModel {

@@ -220,11 +220,12 @@ std::vector<PdfIndependence> judge_pdf_independence(const MeasuredSweep& s, cons
 }
 
 SweepClaim pdf_independence_claim(const PdfIndependence& j, const std::string& text, bool informative) {
-  SweepClaim c;
+  SweepClaim s;
+  Claim& c = s.claim;
   c.id = "pdf_independence";
   c.text = text;
-  c.axis = sweep_parameter_name(SweepParameter::kPdfSharpness);
-  c.slice = j.slice;
+  s.axis = sweep_parameter_name(SweepParameter::kPdfSharpness);
+  s.slice = j.slice;
   c.criterion = "change of each view's median total from γ=" + number_text(j.reference_gamma, 4) + " (bootstrap " +
                 number_text(100 * j.confidence, 3) + "% intervals, " + std::to_string(j.resamples) +
                 " resamples): each FIS case (generator, view) equivalent within ±" + percent(j.band) +
@@ -234,9 +235,9 @@ SweepClaim pdf_independence_claim(const PdfIndependence& j, const std::string& t
                 "the same view; a FIS case outside the band at some γ (p = the smallest over γ times their "
                 "number, Holm-corrected) or a k-means spread wholly below a FIS one: does not hold; otherwise "
                 "inconclusive";
-  c.alpha = j.alpha;
-  c.reference_gamma = j.reference_gamma;
-  c.band = j.band;
+  s.alpha = j.alpha;
+  s.reference_gamma = j.reference_gamma;
+  s.band = j.band;
   for (const PdfSpread& p : j.spreads) {
     SweepClaimMeasure m{p.generator, p.view, p.fis ? "fis" : "kmeans", p.in_paper, p.spread, p.low, p.high, {}, {}};
     for (const GammaChange& g : p.changes) {
@@ -251,12 +252,12 @@ SweepClaim pdf_independence_claim(const PdfIndependence& j, const std::string& t
       m.equivalence =
           SweepClaimEquivalence{p.equivalence->p_equivalent, p.equivalence->p_outside, p.equivalence->level_equivalent,
                                 p.equivalence->level_outside, p.equivalence->verdict};
-    c.measured.push_back(std::move(m));
+    s.measures.push_back(std::move(m));
   }
   c.holds = j.holds;
   c.note = j.note;
   c.informative = informative;
-  return c;
+  return s;
 }
 
 }  // namespace vsgl

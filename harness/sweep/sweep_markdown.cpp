@@ -125,10 +125,11 @@ std::string pdf_frequency_table(const SweepModel& s) {
 std::string claim_table(const SweepClaim& c) {
   // Files written before the equivalence test (no alpha) keep their own wording and columns.
   const bool tost = c.alpha.has_value();
-  std::string md =
-      "\n## PDF independence" + (c.slice.empty() ? std::string() : " (" + sweep_slice_text(c.slice) + ")") + ": " +
-      verdict_word(c.holds) + "\n\nChange of each view's median total from γ=" + number_text(c.reference_gamma, 4) +
-      ", with 95 % bootstrap intervals; ";
+  std::string md = "\n## PDF independence" +
+                   (c.slice.empty() ? std::string() : " (" + sweep_slice_text(c.slice) + ")") + ": " +
+                   verdict_word(c.claim.holds) +
+                   "\n\nChange of each view's median total from γ=" + number_text(c.reference_gamma, 4) +
+                   ", with 95 % bootstrap intervals; ";
   if (tost)
     md += "each FIS case must be shown equivalent within ±" + number_text(100 * c.band, 3) +
           " % at every γ (TOST, Holm-corrected across the FIS cases at α=" + number_text(*c.alpha, 3) +
@@ -137,13 +138,13 @@ std::string claim_table(const SweepClaim& c) {
     md += "FIS must stay within ±" + number_text(100 * c.band, 3) +
           " % and each paper k-means generator must move more than either FIS.\n\n";
   md += "| generator | view |";
-  const std::size_t gammas = c.measured.empty() ? 0 : c.measured.front().changes.size();
-  for (std::size_t k = 0; k < gammas; ++k) md += " γ=" + number_text(c.measured.front().changes[k].gamma, 4) + " |";
+  const std::size_t gammas = c.measures.empty() ? 0 : c.measures.front().changes.size();
+  for (std::size_t k = 0; k < gammas; ++k) md += " γ=" + number_text(c.measures.front().changes[k].gamma, 4) + " |";
   md += tost ? " spread | equivalence (TOST p, Holm level) |\n|---|---|" : " spread |\n|---|---|";
   for (std::size_t k = 0; k < gammas; ++k) md += "---:|";
   md += tost ? "---:|---|\n" : "---:|\n";
   const auto pct = [](double v) { return number_text(100 * v, 3) + " %"; };
-  for (const SweepClaimMeasure& p : c.measured) {
+  for (const SweepClaimMeasure& p : c.measures) {
     md += "| " + p.generator + " | " + p.view + " |";
     for (const SweepClaimChange& g : p.changes)
       md += " " + pct(g.change) + " [" + pct(g.low) + ", " + pct(g.high) + "] |";
@@ -154,7 +155,7 @@ std::string claim_table(const SweepClaim& c) {
                           : " |";
     md += "\n";
   }
-  if (!c.note.empty()) md += "\n" + c.note + "\n";
+  if (!c.claim.note.empty()) md += "\n" + c.claim.note + "\n";
   return md;
 }
 
