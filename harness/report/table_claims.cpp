@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -39,6 +40,25 @@ std::vector<std::string> paper_kmeans_names() {
 std::string paper_kmeans_text(const std::string& separator) {
   std::string out;
   for (const auto& g : paper_kmeans_names()) out += (out.empty() ? "" : separator) + g;
+  return out;
+}
+
+// Claims 2 and 6: each paper k-means generator's value over the modified FIS's, for those `value`
+// knows (none: not measured); holds when every ratio is at least `min`, none when there is none.
+struct KmeansRatios {
+  ojson measured = ojson::object();
+  std::optional<bool> holds;
+};
+KmeansRatios kmeans_ratios(const std::function<std::optional<double>(const std::string&)>& value, double min) {
+  KmeansRatios out;
+  const std::optional<double> modified = value(kModified);
+  if (!modified) return out;
+  for (const auto& k : paper_kmeans_names())
+    if (const std::optional<double> v = value(k)) {
+      const double ratio = *v / *modified;
+      out.measured[k] = ratio;
+      out.holds = out.holds.value_or(true) && ratio >= min;
+    }
   return out;
 }
 
@@ -81,23 +101,16 @@ Claim overhead_claim(const std::string& text, const MeasuredTable& t, bool infor
 
 // 2: modified FIS is several times faster than the paper's k-means generators.
 Claim kmeans_speed_claim(const std::string& text, const MeasuredTable& t, bool informative) {
-  ojson measured = ojson::object();
-  bool all = true, any = false;
-  if (has_generator(t, kModified))
-    for (const auto& k : paper_kmeans_names())
-      if (has_generator(t, k)) {
-        const double ratio = median_total(t, k) / median_total(t, kModified);
-        measured[k] = ratio;
-        all = all && ratio >= kKmeansOverModifiedMin;
-        any = true;
-      }
+  const KmeansRatios r = kmeans_ratios(
+      [&](const std::string& g) { return has_generator(t, g) ? std::optional(median_total(t, g)) : std::nullopt; },
+      kKmeansOverModifiedMin);
   return Claim{.id = "modified_vs_kmeans_speed",
                .text = text,
                .criterion = "median total(" + paper_kmeans_text(" and ") + ") / median total(" + kModified +
                             ") >= " + number(kKmeansOverModifiedMin) + " for each",
-               .measured = measured,
-               .holds = any ? std::optional<bool>(all) : std::nullopt,
-               .note = any ? "" : "needs " + kModified + " and a paper k-means generator in this run",
+               .measured = r.measured,
+               .holds = r.holds,
+               .note = r.holds ? "" : "needs " + kModified + " and a paper k-means generator in this run",
                .informative = informative};
 }
 
@@ -148,23 +161,19 @@ Claim not_timed_claim(const std::string& text, const std::string& id, const std:
 // 6: lines of code, counted from the sources (whether or not k-means was timed). Not a timing:
 // the same on every device, so never informative only.
 Claim lines_claim(const std::string& text, const ReportContext& ctx) {
-  ojson measured = ojson::object();
-  bool all = true, any = false;
-  if (ctx.lines.count(kModified))
-    for (const auto& k : paper_kmeans_names())
-      if (ctx.lines.count(k)) {
-        const double ratio = static_cast<double>(ctx.lines.at(k).total) / ctx.lines.at(kModified).total;
-        measured[k] = ratio;
-        all = all && ratio >= kLinesRatioMin;
-        any = true;
-      }
+  const KmeansRatios r = kmeans_ratios(
+      [&](const std::string& g) {
+        const auto it = ctx.lines.find(g);
+        return it == ctx.lines.end() ? std::nullopt : std::optional(static_cast<double>(it->second.total));
+      },
+      kLinesRatioMin);
   return Claim{.id = "lines_of_code",
                .text = text,
                .criterion = "lines_of_code(" + paper_kmeans_text(" and ") + ") / lines_of_code(" + kModified +
                             ") >= " + number(kLinesRatioMin) + " for each",
-               .measured = measured,
-               .holds = any ? std::optional<bool>(all) : std::nullopt,
-               .note = any ? "" : "needs the line counts of " + kModified + " and k-means",
+               .measured = r.measured,
+               .holds = r.holds,
+               .note = r.holds ? "" : "needs the line counts of " + kModified + " and k-means",
                .informative = false};
 }
 }  // namespace
