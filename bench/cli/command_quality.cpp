@@ -16,6 +16,7 @@
 #include "harness/capture/capture_files.hpp"
 #include "harness/core/error.hpp"
 #include "harness/quality/png_image.hpp"
+#include "harness/quality/quality_claims.hpp"
 #include "harness/quality/quality_report.hpp"
 #include "harness/quality/quality_run.hpp"
 
@@ -67,7 +68,8 @@ Command add_quality_command(CLI::App& parent) {
       "quality",
       "the paper's quality claims as numbers (Fig. 1, 5, 6): kernel coverage (gap, overlap, count-weighted error "
       "beside the lattice's own floor), PDF mass per kernel, how high-frequency each view's PDF is, too-bright "
-      "VSGLs, total power, flicker, a K sweep, error against a per-texel VPL reference; writes "
+      "VSGLs, total power, flicker, a K sweep, every frame's error against a per-texel VPL reference (relMSE, "
+      "relative and scaled RMSE, FLIP), verdicts from paired frames; writes "
       "OUT/<scene>/quality.json, quality.md and PNGs");
   auto o = std::make_shared<QualityOptions>();
   QualityConfig& c = o->config;
@@ -92,7 +94,8 @@ Command add_quality_command(CLI::App& parent) {
                   "seconds the references may take at full size (with --error-stride 0)")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  app->add_option("--flicker-width", c.flicker_width, "width of the flicker images (G-buffer stride W_gbuf/W)")
+  app->add_option("--flicker-width", c.flicker_width, "width of the animated sequence's images (G-buffer stride W_gbuf/W); the static frames use the "
+                  "reference comparison's stride")
       ->check(at_least(1))
       ->capture_default_str();
   app->add_option("--reference-rsm", c.reference_rsm, "reference RSM side (every lit texel a VPL); 0: the full RSM")

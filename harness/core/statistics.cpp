@@ -194,4 +194,16 @@ PairedInterval paired_interval(std::span<const double> differences, double confi
   return r;
 }
 
+SeriesSummary summarize_series(std::span<const double> values) {
+  if (values.empty()) throw std::invalid_argument("summarize_series: no values");
+  std::vector<double> sorted(values.begin(), values.end());
+  double sum = 0;
+  for (double v : sorted) {
+    if (!std::isfinite(v)) throw std::invalid_argument("summarize_series: a value is not finite");
+    sum += v;
+  }
+  std::sort(sorted.begin(), sorted.end());
+  return {sum / static_cast<double>(sorted.size()), quantile_sorted(sorted, 0.95), sorted.back()};
+}
+
 }  // namespace vsgl

@@ -31,6 +31,13 @@ double quantile_sorted(std::span<const double> sorted, double p);
 // that is not finite.
 SampleStats summarize(std::span<const double> samples);
 
+// A per-frame series over its frames (DESIGN.md §11a.1): mean, type-7 95th percentile and maximum.
+// Throws std::invalid_argument for no values or a value that is not finite.
+struct SeriesSummary {
+  double mean = 0, p95 = 0, max = 0;
+};
+SeriesSummary summarize_series(std::span<const double> values);
+
 // The stop rule's noise measure: IQR / median. Throws std::invalid_argument when the median
 // is not positive (timings are positive by construction; see TimestampPool::interval_ns).
 double relative_iqr(const SampleStats& stats);

@@ -1,6 +1,9 @@
 #include "harness/formats/quality_model.hpp"
 
+#include <algorithm>
+
 #include "harness/core/json_reader.hpp"
+#include "harness/core/statistics.hpp"
 
 namespace vsgl {
 namespace {
@@ -137,6 +140,59 @@ json error_json(const ImageErrorSummary& e) {
   return json{{"relative_rmse", e.relative_rmse}, {"p99_pixel_error", e.p99_pixel_error}};
 }
 
+// A frame series with its summary (DESIGN.md §11a.1); only per_frame is read back, the rest derives from it.
+json series_json(const FrameSeries& series) {
+  json out = json::object();
+  for (const auto& [name, values] : series) {
+    const SeriesSummary sum = summarize_series(values);
+    out[name] = json{{"per_frame", values}, {"mean", sum.mean}, {"p95", sum.p95}, {"max", sum.max}};
+  }
+  return out;
+}
+
+FrameSeries read_series(const JsonReader& r, const json& o, const std::string& p) {
+  FrameSeries series;
+  for (const auto& [name, v] : o.items()) {
+    const std::string mp = p + "/" + name;
+    if (!v.is_object()) r.wrong_type(v, mp, "an object");
+    series[name] = r.numbers(v, mp, "per_frame");
+    if (series[name].empty()) r.fail(mp + "/per_frame", "has no frames");
+  }
+  return series;
+}
+
+// A generator's worst frame: the one of largest relative RMSE.
+json frame_errors_json(const FrameErrors& f) {
+  json gens = json::object();
+  for (const auto& [name, series] : f.generators) {
+    json g{{"series", series_json(series)}};
+    if (const auto it = series.find("relative_rmse"); it != series.end())
+      g["worst_frame"] = std::max_element(it->second.begin(), it->second.end()) - it->second.begin();
+    gens[name] = g;
+  }
+  return json{{"gbuffer_stride", f.gbuffer_stride},
+              {"image", f.image},
+              {"reference", f.reference},
+              {"flip", json{{"exposure", f.flip_exposure}, {"pixels_per_degree", f.flip_pixels_per_degree}}},
+              {"generators", gens}};
+}
+
+FrameErrors read_frame_errors(const JsonReader& r, const json& o, const std::string& p) {
+  FrameErrors f;
+  f.gbuffer_stride = r.uint32(o, p, "gbuffer_stride");
+  f.image = r.array(o, p, "image", 2);
+  f.reference = r.string(o, p, "reference");
+  const json& flip = r.object(o, p, "flip");
+  f.flip_exposure = r.number(flip, p + "/flip", "exposure");
+  f.flip_pixels_per_degree = r.number(flip, p + "/flip", "pixels_per_degree");
+  for (const auto& [g, v] : r.object(o, p, "generators").items()) {
+    const std::string gp = p + "/generators/" + g;
+    if (!v.is_object()) r.wrong_type(v, gp, "an object");
+    f.generators[g] = read_series(r, r.object(v, gp, "series"), gp + "/series");
+  }
+  return f;
+}
+
 json reference_detail_json(const ReferenceDetail& d) {
   json rows = json::array();
   for (const ReferenceConvergenceRow& r : d.convergence)
@@ -144,7 +200,7 @@ json reference_detail_json(const ReferenceDetail& d) {
         {"rsm_stride", r.rsm_stride}, {"vpls", r.vpls}, {"relative_rmse", r.relative_rmse}, {"seconds", r.seconds}});
   json size{{"error_stride", d.error_stride}, {"rule", d.camera_size_rule}, {"budget_s", d.budget_s}};
   if (d.predicted_full_size_s) size["predicted_full_size_s"] = *d.predicted_full_size_s;
-  return json{{"convergence", rows},
+  json out{{"convergence", rows},
               {"own_error", d.own_error},
               {"seconds", d.seconds},
               {"support", json{{"vpls", d.support_vpls},
@@ -154,6 +210,8 @@ json reference_detail_json(const ReferenceDetail& d) {
               {"camera_size", size},
               {"dispatch", json{{"evaluations_per_dispatch", d.evaluations_per_dispatch},
                                 {"vsgls_per_dispatch", d.vsgls_per_dispatch}}}};
+  if (!d.own_errors.empty()) out["own_errors"] = d.own_errors;
+  return out;
 }
 
 ReferenceDetail read_reference_detail(const JsonReader& r, const json& ref) {
@@ -166,6 +224,8 @@ ReferenceDetail read_reference_detail(const JsonReader& r, const json& ref) {
                              r.number(rows[i], p, "relative_rmse"), r.number(rows[i], p, "seconds")});
   }
   d.own_error = r.number(ref, "/reference", "own_error");
+  if (const json* own = r.optional_object(ref, "/reference", "own_errors"))
+    for (const auto& [metric, v] : own->items()) d.own_errors[metric] = r.number(v, "/reference/own_errors/" + metric);
   d.seconds = r.number(ref, "/reference", "seconds");
   const json& sup = r.object(ref, "/reference", "support");
   d.support_vpls = r.uint64(sup, "/reference/support", "vpls");
@@ -306,9 +366,13 @@ void to_json(json& j, const QualityModel& m) {
                          {"error", error_json(row.error)},
                          {"coverage", coverage_json(row.coverage)},
                          {"power", power_json(row.power)}});
+    for (std::size_t i = 0; i < rows.size(); ++i)
+      if (!rows[i].per_frame.empty()) out[i]["per_frame"] = series_json(rows[i].per_frame);
     sweep[name] = out;
   }
   j["k_sweep"] = sweep;
+  if (m.frames_static) j["frames_static"] = frame_errors_json(*m.frames_static);
+  if (m.frames_animated) j["frames_animated"] = frame_errors_json(*m.frames_animated);
   if (m.claims) {
     json claims = json::array();
     for (const Claim& c : *m.claims) claims.push_back(json(to_json(c, ClaimLayout::kQuality)));
@@ -319,10 +383,10 @@ void to_json(json& j, const QualityModel& m) {
   j["timings_s"] = timings;
 }
 
-QualityModel quality_model_from_json(const json& doc, const std::string& what) {
-  const JsonReader r(what, JsonPathStyle::kPointer);
-  if (!doc.is_object()) r.fail("", "is not a JSON object");
-  QualityModel m;
+namespace {
+
+// What was measured: the capture, the device, the build and the configuration.
+void read_header(const JsonReader& r, const json& doc, QualityModel& m) {
   m.schema_version = r.member(doc, "", "schema_version");
   m.schema = r.string(doc, "", "schema");
   m.scene = r.string(doc, "", "scene");
@@ -352,11 +416,10 @@ QualityModel quality_model_from_json(const json& doc, const std::string& what) {
   m.frames = r.member(config, "/config", "frames");
   m.config_rest = config;
   for (const char* typed : {"generators", "light_vsgls", "camera_vsgls", "K", "frames"}) m.config_rest.erase(typed);
+}
 
-  const json& views = r.object(doc, "", "views");
-  for (const char* view : {"camera_view", "light_view"})
-    m.views[view] = read_view(r, r.object(views, "/views", view), std::string("/views/") + view);
-
+// The reference, and each generator's error against it at offset 0.
+void read_reference(const JsonReader& r, const json& doc, QualityModel& m) {
   const json& ref = r.object(doc, "", "reference");
   m.reference_power_ratio = r.number(ref, "/reference", "power_ratio");
   m.reference_method = r.string(ref, "/reference", "method");
@@ -371,60 +434,86 @@ QualityModel quality_model_from_json(const json& doc, const std::string& what) {
           read_error(r, r.object(r.object(doc, "", "reference_error_support"), "/reference_error_support", g),
                      "/reference_error_support/" + g);
   const json& errors = r.object(doc, "", "reference_error");
+  for (const std::string& g : m.generators)
+    m.reference_error[g] = read_error(r, r.object(errors, "/reference_error", g), "/reference_error/" + g);
+}
+
+void read_static_flicker(const JsonReader& r, const json& doc, QualityModel& m) {
   const json& fs = r.object(doc, "", "flicker_static");
   m.flicker_image = r.array(fs, "/flicker_static", "image", 2);
   m.flicker_gbuffer_stride = r.uint32(fs, "/flicker_static", "gbuffer_stride");
   const json& fsg = r.object(fs, "/flicker_static", "generators");
   for (const std::string& g : m.generators) {
-    m.reference_error[g] = read_error(r, r.object(errors, "/reference_error", g), "/reference_error/" + g);
     const std::string p = "/flicker_static/generators/" + g;
     const json& f = r.object(fsg, "/flicker_static/generators", g);
     m.flicker_static[g] = {r.number(f, p, "weighted_cv"), r.number(f, p, "power_stdev"),
                            r.number(f, p, "power_relative_stdev"), r.uint32(f, p, "frames")};
   }
-  if (doc.contains("flicker_animated")) {
-    const json& fa = r.object(doc, "", "flicker_animated");
-    QualityModel::Animated a;
-    a.frames = r.member(fa, "/flicker_animated", "frames");
-    a.sequence = r.string(fa, "/flicker_animated", "sequence");
-    a.note = r.string(fa, "/flicker_animated", "note");
-    a.scene = r.string(fa, "/flicker_animated", "scene");
-    a.gbuffer_stride = r.uint32(fa, "/flicker_animated", "gbuffer_stride");
-    a.reference_rsm_stride = r.uint32(fa, "/flicker_animated", "reference_rsm_stride");
-    const json& hashes = r.member(fa, "/flicker_animated", "frame_content_hashes");
-    if (!hashes.is_array()) r.wrong_type(hashes, "/flicker_animated/frame_content_hashes", "an array");
-    for (std::size_t i = 0; i < hashes.size(); ++i) {
-      if (!hashes[i].is_string())
-        r.wrong_type(hashes[i], r.element("/flicker_animated/frame_content_hashes", i), "a string");
-      a.frame_content_hashes.push_back(hashes[i].get<std::string>());
-    }
-    a.reference_weighted_cv = r.number(fa, "/flicker_animated", "reference_weighted_cv");
-    const json& ag = r.object(fa, "/flicker_animated", "generators");
-    for (const auto& [g, f] : ag.items()) {
-      const std::string p = "/flicker_animated/generators/" + g;
-      if (!f.is_object()) r.wrong_type(f, p, "an object");
-      a.generators[g] = {r.number(f, p, "weighted_cv"), r.number(f, p, "error_cv"),
-                         r.number(f, p, "power_relative_stdev")};
-    }
-    m.flicker_animated = a;
+}
+
+QualityModel::Animated read_animated(const JsonReader& r, const json& fa) {
+  QualityModel::Animated a;
+  a.frames = r.member(fa, "/flicker_animated", "frames");
+  a.sequence = r.string(fa, "/flicker_animated", "sequence");
+  a.note = r.string(fa, "/flicker_animated", "note");
+  a.scene = r.string(fa, "/flicker_animated", "scene");
+  a.gbuffer_stride = r.uint32(fa, "/flicker_animated", "gbuffer_stride");
+  a.reference_rsm_stride = r.uint32(fa, "/flicker_animated", "reference_rsm_stride");
+  const json& hashes = r.member(fa, "/flicker_animated", "frame_content_hashes");
+  if (!hashes.is_array()) r.wrong_type(hashes, "/flicker_animated/frame_content_hashes", "an array");
+  for (std::size_t i = 0; i < hashes.size(); ++i) {
+    if (!hashes[i].is_string()) r.wrong_type(hashes[i], r.element("/flicker_animated/frame_content_hashes", i), "a string");
+    a.frame_content_hashes.push_back(hashes[i].get<std::string>());
   }
+  a.reference_weighted_cv = r.number(fa, "/flicker_animated", "reference_weighted_cv");
+  const json& ag = r.object(fa, "/flicker_animated", "generators");
+  for (const auto& [g, f] : ag.items()) {
+    const std::string p = "/flicker_animated/generators/" + g;
+    if (!f.is_object()) r.wrong_type(f, p, "an object");
+    a.generators[g] = {r.number(f, p, "weighted_cv"), r.number(f, p, "error_cv"),
+                       r.number(f, p, "power_relative_stdev")};
+  }
+  return a;
+}
+
+std::vector<KSweepRow> read_k_sweep_rows(const JsonReader& r, const json& rows, const std::string& gp) {
+  if (!rows.is_array()) r.wrong_type(rows, gp, "an array");
+  std::vector<KSweepRow> out;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const std::string p = r.element(gp, i);
+    const json& row = rows[i];
+    if (!row.is_object()) r.wrong_type(row, p, "an object");
+    out.push_back({r.number(row, p, "K"), r.number(row, p, "weighted_cv"), r.number(row, p, "power_stdev"),
+                   r.number(row, p, "power_relative_stdev"), r.uint32(row, p, "frames"),
+                   read_error(r, r.object(row, p, "error"), p + "/error"),
+                   read_coverage(r, r.object(row, p, "coverage"), p + "/coverage"),
+                   read_power(r, r.object(row, p, "power"), p + "/power"), FrameSeries{}});
+    if (const json* series = r.optional_object(row, p, "per_frame"))
+      out.back().per_frame = read_series(r, *series, p + "/per_frame");
+  }
+  return out;
+}
+
+}  // namespace
+
+QualityModel quality_model_from_json(const json& doc, const std::string& what) {
+  const JsonReader r(what, JsonPathStyle::kPointer);
+  if (!doc.is_object()) r.fail("", "is not a JSON object");
+  QualityModel m;
+  read_header(r, doc, m);
+  const json& views = r.object(doc, "", "views");
+  for (const char* view : {"camera_view", "light_view"})
+    m.views[view] = read_view(r, r.object(views, "/views", view), std::string("/views/") + view);
+  read_reference(r, doc, m);
+  read_static_flicker(r, doc, m);
+  if (doc.contains("flicker_animated")) m.flicker_animated = read_animated(r, r.object(doc, "", "flicker_animated"));
   if (doc.contains("k_sweep"))
-    for (const auto& [g, rows] : r.object(doc, "", "k_sweep").items()) {
-      const std::string gp = "/k_sweep/" + g;
-      if (!rows.is_array()) r.wrong_type(rows, gp, "an array");
-      std::vector<KSweepRow> out;
-      for (std::size_t i = 0; i < rows.size(); ++i) {
-        const std::string p = r.element(gp, i);
-        const json& row = rows[i];
-        if (!row.is_object()) r.wrong_type(row, p, "an object");
-        out.push_back({r.number(row, p, "K"), r.number(row, p, "weighted_cv"), r.number(row, p, "power_stdev"),
-                       r.number(row, p, "power_relative_stdev"), r.uint32(row, p, "frames"),
-                       read_error(r, r.object(row, p, "error"), p + "/error"),
-                       read_coverage(r, r.object(row, p, "coverage"), p + "/coverage"),
-                       read_power(r, r.object(row, p, "power"), p + "/power")});
-      }
-      m.k_sweep.emplace_back(g, std::move(out));
-    }
+    for (const auto& [g, rows] : r.object(doc, "", "k_sweep").items())
+      m.k_sweep.emplace_back(g, read_k_sweep_rows(r, rows, "/k_sweep/" + g));
+  if (const json* f = r.optional_object(doc, "", "frames_static"))
+    m.frames_static = read_frame_errors(r, *f, "/frames_static");
+  if (const json* f = r.optional_object(doc, "", "frames_animated"))
+    m.frames_animated = read_frame_errors(r, *f, "/frames_animated");
   if (doc.contains("claims")) {
     const json& claims = r.array(doc, "", "claims");
     m.claims.emplace();

@@ -1,6 +1,6 @@
 #pragma once
 // The quality JSON ("vsgl-quality", quality_run.hpp) as a typed model: what run_quality fills and
-// writes with to_json, and what the markdown and the claim verdicts of quality_report.hpp read,
+// writes with to_json, and what the markdown and the claim verdicts of quality_claims.hpp read,
 // parsed once from the document with every missing or mistyped field named by its JSON pointer.
 // Raw JSON members are provenance and configuration passed through as written.
 #include <cstdint>
@@ -102,6 +102,21 @@ struct AnimatedFlicker {
   double weighted_cv = 0, error_cv = 0, power_relative_stdev = 0;
 };
 
+// Per-frame values (schema 5, DESIGN.md §11a.1): by measure ("relative_rmse", "flip",
+// "flicker_deviation", "light_view_coverage_excess", ...), one value per frame, frames in order.
+// Written with each series' mean, 95th percentile and maximum beside it (derived, not read back).
+using FrameSeries = std::map<std::string, std::vector<double>>;
+
+// Every frame's image error and flicker of each generator: the static frames (lattice offsets) or
+// the animated sequence's.
+struct FrameErrors {
+  uint32_t gbuffer_stride = 0;
+  nlohmann::json image;   // [w, h]
+  std::string reference;  // what each frame is compared with
+  double flip_exposure = 0, flip_pixels_per_degree = 0;
+  std::map<std::string, FrameSeries> generators;
+};
+
 struct KSweepRow {
   double K = 0, weighted_cv = 0;
   double power_stdev = 0, power_relative_stdev = 0;  // the row's static flicker, as flicker_static
@@ -109,6 +124,7 @@ struct KSweepRow {
   ImageErrorSummary error;
   CoverageSummary coverage;
   PowerSummary power;
+  FrameSeries per_frame;  // schema 5: "flicker_deviation" and "relative_rmse" over the static frames
 };
 
 // The converged reference of schema 4 (DESIGN.md §11a): how far coarser RSM strides are from it,
@@ -122,6 +138,8 @@ struct ReferenceConvergenceRow {
 struct ReferenceDetail {
   std::vector<ReferenceConvergenceRow> convergence;  // coarsest first, the reference itself last
   double own_error = 0;  // the row at twice the reference's stride: the reference's own error
+  // schema 5: that row's error in every frame metric (frame_error.hpp), the same pixels and exposure
+  std::map<std::string, double> own_errors;
   double seconds = 0;    // shading the reference
   uint64_t support_vpls = 0;
   double support_power_ratio = 0, support_seconds = 0;
@@ -170,6 +188,7 @@ struct QualityModel {
     std::map<std::string, AnimatedFlicker> generators;
   };
   std::optional<Animated> flicker_animated;
+  std::optional<FrameErrors> frames_static, frames_animated;             // schema 5
   std::vector<std::pair<std::string, std::vector<KSweepRow>>> k_sweep;  // in the file's order
   // ClaimLayout::kQuality: the numbers each claim was judged on (fis_tok15, fis_modified, and a
   // claim's own, such as the Fig. 1 margin) are its `measured`. None before add_claim_verdicts,

@@ -338,6 +338,7 @@ void FlickerAccumulator::check_size(const RadianceImage& image) {
 
 void FlickerAccumulator::add_frame(const RadianceImage& image, double total_power) {
   check_size(image);
+  std::vector<float> lum(image.pixels.size());
   for (std::size_t i = 0; i < image.pixels.size(); ++i) {
     if (!(image.pixels[i].a > 0.0f)) surface_[i] = 0;
     const double y = luminance_d(image.pixels[i]);
@@ -346,7 +347,9 @@ void FlickerAccumulator::add_frame(const RadianceImage& image, double total_powe
     const double d = y - first_[i];
     sum_[i] += d;
     sum_sq_[i] += d * d;
+    lum[i] = static_cast<float>(y);
   }
+  luminance_.push_back(std::move(lum));
   powers_.push_back(total_power);
   ++frames_;
 }
@@ -356,17 +359,61 @@ void FlickerAccumulator::add_frame(const RadianceImage& image, double total_powe
     throw InputError("flicker: the reference frame's size differs from the frame's");
   if (reference_frames_ != frames_) throw InputError("flicker: every frame needs a reference, or none");
   add_frame(image, total_power);
+  std::vector<float> err(image.pixels.size());
   for (std::size_t i = 0; i < image.pixels.size(); ++i) {
     if (!(reference.pixels[i].a > 0.0f)) surface_[i] = 0;
     const double r = luminance_d(reference.pixels[i]);
     const double e0 = luminance_d(image.pixels[i]) - r;
+    err[i] = static_cast<float>(e0);
     if (reference_frames_ == 0) err_first_[i] = e0;
     const double e = e0 - err_first_[i];
     err_sum_[i] += e;
     err_sum_sq_[i] += e * e;
     ref_sum_[i] += r;
   }
+  error_.push_back(std::move(err));
   ++reference_frames_;
+}
+
+namespace {
+
+// delta_f = sum_p |v_f(p) - mean_t v_t(p)| / denominator over the surface pixels.
+std::vector<double> deviations_about_mean(const std::vector<std::vector<float>>& frames,
+                                          const std::vector<uint8_t>& surface, double denominator) {
+  const std::size_t n = surface.size();
+  std::vector<double> mean(n, 0.0);
+  for (const auto& f : frames)
+    for (std::size_t i = 0; i < n; ++i) mean[i] += static_cast<double>(f[i]);
+  for (double& m : mean) m /= static_cast<double>(frames.size());
+  std::vector<double> out;
+  for (const auto& f : frames) {
+    double sum = 0;
+    for (std::size_t i = 0; i < n; ++i)
+      if (surface[i]) sum += std::abs(static_cast<double>(f[i]) - mean[i]);
+    out.push_back(sum / denominator);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<double> FlickerAccumulator::frame_deviations() const {
+  if (frames_ < 2) throw InputError("flicker: needs at least 2 frames");
+  double den = 0;
+  for (std::size_t i = 0; i < sum_.size(); ++i)
+    if (surface_[i]) den += first_[i] + sum_[i] / frames_;
+  if (!(den > 0.0)) throw InputError("flicker: no pixel is lit in any frame");
+  return deviations_about_mean(luminance_, surface_, den);
+}
+
+std::vector<double> FlickerAccumulator::error_frame_deviations() const {
+  if (frames_ < 2) throw InputError("flicker: needs at least 2 frames");
+  if (reference_frames_ != frames_) throw InputError("flicker: the error flicker needs a reference for every frame");
+  double den = 0;
+  for (std::size_t i = 0; i < sum_.size(); ++i)
+    if (surface_[i]) den += ref_sum_[i] / frames_;
+  if (!(den > 0.0)) throw InputError("flicker: the reference is black in every frame");
+  return deviations_about_mean(error_, surface_, den);
 }
 
 namespace {

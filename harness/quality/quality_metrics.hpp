@@ -157,12 +157,19 @@ class FlickerAccumulator {
   // With references: sum_p stdev_t(Y_t(p) - Yref_t(p)) / sum_p mean_t(Yref_t(p)) — the part of the
   // frame-to-frame change that the reference does not have. Throws InputError without references.
   double error_cv() const;
+  // Per frame f, delta_f = sum_p |Y_f(p) - mu(p)| / sum_p mu(p), mu the pixel's mean over the
+  // frames (DESIGN.md §11a.1): the frame's share of the flicker, a value two generators' frames
+  // pair on. The error's: the same of Y_f - Yref_f about its mean, over sum_p mean_t Yref_t(p).
+  // Throw as weighted_cv and error_cv do.
+  std::vector<double> frame_deviations() const;
+  std::vector<double> error_frame_deviations() const;
 
  private:
   void check_size(const RadianceImage& image);
   uint32_t frames_ = 0, width_ = 0, height_ = 0, reference_frames_ = 0;
   std::vector<double> first_, sum_, sum_sq_;  // per pixel: first frame's luminance, deviation sums
   std::vector<double> err_first_, err_sum_, err_sum_sq_, ref_sum_;
+  std::vector<std::vector<float>> luminance_, error_;  // per frame, per pixel: Y and Y - Yref
   std::vector<uint8_t> surface_;              // 1 where every frame had a surface
   std::vector<double> powers_;
 };

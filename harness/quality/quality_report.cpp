@@ -11,6 +11,7 @@
 
 #include "harness/core/error.hpp"
 #include "harness/core/generator_ids.hpp"
+#include "harness/core/statistics.hpp"
 
 namespace vsgl {
 namespace {
@@ -27,144 +28,8 @@ std::string num(double v) {
   return buf;
 }
 
-std::string arrow(double a, double b) { return num(a) + " -> " + num(b); }
-
-// A reduction claim: "holds" when modified is lower than Tok15 by more than kTie (relative),
-// "does not hold" when it is higher by more than that, else "no clear difference".
-constexpr double kTie = 0.01;
-
-// A claim of the quality document (ClaimLayout::kQuality): a verdict, or else the note that says
-// why there is none.
-Claim quality_claim(const std::string& text, const std::string& source, const std::string& measure, ojson measured,
-                    std::optional<bool> holds, const std::string& note) {
-  Claim c;
-  c.text = text;
-  c.source = source;
-  c.criterion = measure;
-  c.measured = std::move(measured);
-  c.holds = holds;
-  if (!holds) c.note = note;
-  return c;
-}
-
-// Holds when `difference` is below -margin, does not hold above +margin; else `tie`.
-Claim margin_claim(const std::string& text, const std::string& source, const std::string& measure, ojson measured,
-                   double difference, double margin, const std::string& tie) {
-  const std::optional<bool> holds = difference < -margin  ? std::optional<bool>(true)
-                                    : difference > margin ? std::optional<bool>(false)
-                                                          : std::nullopt;
-  return quality_claim(text, source, measure, std::move(measured), holds, tie);
-}
-
-Claim claim(const std::string& text, const std::string& source, const std::string& measure, double tok15,
-            double modified) {
-  const double rel = tok15 != 0.0 ? (modified - tok15) / std::abs(tok15) : modified - tok15;
-  return margin_claim(text, source, measure, ojson{{kTok15, tok15}, {kModified, modified}}, rel, kTie,
-                      "no clear difference (within 1%)");
-}
-
-// Fig. 1's verdict (DESIGN.md §11a): judged on each generator's excess of the count-weighted coverage
-// error over its lattice floor, with the footprint Eq. 3 controls (the trilinear weights of the
-// lookup p_bar(x_i, l_i) at the kernel's level: the weights its flux and PDF are fetched with, so
-// n(t) is how often texel t's flux is counted). It holds when Tok15's excess exceeds modified's by
-// more than kExcessMargin, in units of the PDF-weighted coverage error (0.02 = 2 % of the PDF's
-// weight counted wrongly), fixed here once and for all scenes.
-constexpr double kExcessMargin = 0.02;
-constexpr const char* kVerdictFootprint = "eq3";
-
-Claim excess_claim(const std::string& text, const std::string& view, const CoverageSummary& tok15,
-                   const CoverageSummary& modified) {
-  static_assert(std::string_view(kVerdictFootprint) == "eq3", "the verdict reads the Eq. 3 footprint");
-  const double t = tok15.excess_eq3.count_error, m = modified.excess_eq3.count_error;
-  const ojson measured{
-      {kTok15, t},
-      {kModified, m},
-      {"margin", kExcessMargin},
-      {"footprint", kVerdictFootprint},
-      {"floor", ojson::array({tok15.floor_eq3.count_error, modified.floor_eq3.count_error})},
-      {"box_footprint_excess", ojson::array({tok15.excess_box.count_error, modified.excess_box.count_error})}};
-  return margin_claim(text, "paper_tables.json claims[3]; DESIGN.md §11a",
-                      view +
-                          ": excess of the count-weighted coverage error sum q|n-1|/sum q over the lattice "
-                          "floor, Eq. 3 (trilinear) footprint",
-                      measured, m - t, kExcessMargin, "no clear difference (within " + num(kExcessMargin) + ")");
-}
-
-const std::string kFig1Claim =
-    "Modified FIS reduces overlaps of and gaps between filtering kernels (Fig. 1) and the too-bright VSGLs they "
-    "cause (Fig. 5).";
-const std::string kFlickerClaim =
-    "Using our kernel size, flickering artifacts are reduced significantly for a high-frequency PDF.";
-
-// Fig. 1 / Fig. 5 on one view: the coverage excess, the spread of the kernel mass, the brightest VSGL.
-void add_view_claims(std::vector<Claim>& claims, const ViewQuality& v, const std::string& view) {
-  const auto tok = v.generators.find(kTok15), mod = v.generators.find(kModified);
-  if (tok == v.generators.end() || mod == v.generators.end()) return;
-  if (!tok->second.coverage || !mod->second.coverage) throw InputError("quality: " + view + ": the FIS generators have no coverage");
-  const CoverageSummary& tc = *tok->second.coverage;
-  const CoverageSummary& mc = *mod->second.coverage;
-  claims.push_back(excess_claim(kFig1Claim, view, tc, mc));
-  claims.push_back(claim(kFig1Claim, "paper §3 (Eq. 2-3)", view + ": stdev of kernel PDF mass a(l)p_bar / (K/N)",
-                         tc.mass_over_target.stdev, mc.mass_over_target.stdev));
-  claims.push_back(claim(kFig1Claim, "paper_tables.json claims[3]", view + ": too-bright VSGLs, max Phi_i / mean Phi",
-                         tok->second.power.max_over_mean, mod->second.power.max_over_mean));
-}
-
-void add_flicker_claims(std::vector<Claim>& claims, const QualityModel& m) {
-  if (m.flicker_static.contains(kTok15) && m.flicker_static.contains(kModified))
-    claims.push_back(claim(kFlickerClaim, "paper §1, §4 (text)", "static scene, per-frame lattice offset: luminance-weighted temporal CV",
-                           m.flicker_static.at(kTok15).weighted_cv, m.flicker_static.at(kModified).weighted_cv));
-  if (!m.flicker_animated) return;
-  const auto& f = m.flicker_animated->generators;
-  if (f.contains(kTok15) && f.contains(kModified))
-    claims.push_back(claim(kFlickerClaim, "paper §1, §4 (text)",
-                           "animated sequence: temporal CV of the error against the per-frame reference",
-                           f.at(kTok15).error_cv, f.at(kModified).error_cv));
-}
-
-// Fig. 6: from the smallest to the largest K of the sweep, flicker should fall and the error grow.
-void add_k_sweep_claims(std::vector<Claim>& claims, const QualityModel& m) {
-  for (const std::string& gen : {kModified, kTok15}) {
-    const auto it = std::find_if(m.k_sweep.begin(), m.k_sweep.end(), [&](const auto& s) { return s.first == gen; });
-    if (it == m.k_sweep.end() || it->second.size() < 2) continue;
-    const KSweepRow& lo = it->second.front();
-    const KSweepRow& hi = it->second.back();
-    const double cv_lo = lo.weighted_cv, cv_hi = hi.weighted_cv;
-    const double e_lo = lo.error.relative_rmse, e_hi = hi.error.relative_rmse;
-    const bool coherence = cv_hi < cv_lo, blur = e_hi > e_lo;
-    const std::optional<bool> holds =
-        coherence == blur ? std::optional<bool>(coherence && blur) : std::optional<bool>(std::nullopt);
-    claims.push_back(quality_claim(
-        "K > 1 trades illumination detail for temporal coherence (Fig. 6).", "paper_tables.json claims[4]",
-        std::string(gen) + ": K = " + num(lo.K) + " -> " + num(hi.K) + ": flicker (weighted CV) " +
-            arrow(cv_lo, cv_hi) + ", relative RMSE vs reference " + arrow(e_lo, e_hi),
-        ojson{{"generator", gen},
-              {"flicker", ojson::array({cv_lo, cv_hi})},
-              {"relative_rmse", ojson::array({e_lo, e_hi})}},
-        holds,
-        coherence ? "partly: coherence improves, error does not grow"
-                  : "partly: error grows, coherence does not improve"));
-  }
-}
 
 }  // namespace
-
-void add_claim_verdicts(json& r) {
-  const QualityModel m = quality_model_from_json(r, "the quality document");
-  std::vector<Claim> claims;
-  for (const char* view : {"light_view", "camera_view"}) add_view_claims(claims, m.views.at(view), view);
-  add_flicker_claims(claims, m);
-  add_k_sweep_claims(claims, m);
-  for (const char* t : {"Modified FIS costs about 5 microseconds more in total than Tok15 FIS.",
-                        "Modified FIS is about 7-9 times faster than the k-means generators.",
-                        "FIS cost is almost independent of the PDF; k-means cost is not.",
-                        "Modified FIS needs about five times fewer lines of code than k-means (Table 3)."})
-    claims.push_back(quality_claim(t, "paper_tables.json claims", "a timing/code-size claim: see `vsgl-bench tables`",
-                                   ojson::object(), std::nullopt, "not measured here"));
-  json document = json::array();
-  for (const Claim& c : claims) document.push_back(json(to_json(c, ClaimLayout::kQuality)));
-  r["claims"] = document;
-}
 
 namespace {
 
@@ -177,28 +42,44 @@ void write_heading(std::ostringstream& md, const QualityModel& m) {
      << "; every number is in `quality.json`.\n\n";
 }
 
-void write_claims(std::ostringstream& md, const QualityModel& m) {
-  md << "## Claims\n\n| claim | measure | fis_tok15 | fis_modified | verdict |\n|---|---|---|---|---|\n";
-  for (const Claim& c : m.claims.value_or(std::vector<Claim>{})) {
-    md << "| " << c.text << " | " << c.criterion << " | ";
-    const auto tok15 = c.measured.find(kTok15);
-    if (tok15 != c.measured.end() && tok15->is_number())
-      md << num(tok15->get<double>()) << " | " << num(c.measured.value(kModified, 0.0));
-    else
-      md << " | ";
-    md << " | **" << stated_verdict(c) << "** |\n";
+// A claim's numbers: the two means, and for a paired claim its estimate, interval and bound.
+std::string measured_cell(const Claim& c) {
+  if (c.measured.contains("steps")) {
+    std::string out;
+    for (const auto& step : c.measured.at("steps")) {
+      const auto interval = [](const ojson& j) {
+        if (!j.contains("interval")) return std::string("no interval");
+        return num(j.at("estimate").get<double>()) + " [" + num(j.at("interval")[0].get<double>()) + ", " +
+               num(j.at("interval")[1].get<double>()) + "]";
+      };
+      out += (out.empty() ? "" : "; ") + std::string("K ") + num(step.at("from_K").get<double>()) + " -> " +
+             num(step.at("to_K").get<double>()) + ": flicker " + interval(step.at("flicker")) + ", error " +
+             interval(step.at("error"));
+    }
+    return out;
   }
-  md << "\nFig. 1 (the coverage rows) is judged on each generator's *excess* over its lattice floor: the "
-        "count-weighted coverage error e = sum q |n - 1| / sum q (n = kernels covering texel t) of the generator on "
-        "the view, minus e of the same generator and N on the view's uniform copy (PDF 1 on every texel with q > 0): "
-        "the golden-ratio lattice alone puts 0-2 kernel centres in a texel, which no kernel size removes. n uses the "
-        "footprint Eq. 3 controls, the trilinear weights of the lookup p_bar(x_i, l_i) scaled by 4^l_i (with K = 1, "
-        "n(t) is how often texel t's flux enters the VSGLs); the box footprint (side 2^l, as Fig. 1 draws it) is "
-        "reported beside it. The claim holds when Tok15's excess exceeds modified's by more than "
-     << num(kExcessMargin)
-     << " (the margin, fixed for all scenes), does not hold when it is lower by more than that. The other "
-        "reduction claims hold when "
-     << kModified << " is lower than " << kTok15 << " by more than 1%.\n";
+  std::string out;
+  for (const auto& [key, value] : c.measured.items())
+    if (key.find('_') != std::string::npos && value.is_number() && (key.rfind("fis_", 0) == 0 || key.rfind("kmeans_", 0) == 0))
+      out += (out.empty() ? "" : ", ") + key + " " + num(value.get<double>());
+  if (c.measured.contains("interval"))
+    out += "; " + c.measured.at("quantity").get<std::string>() + " " + num(c.measured.at("estimate").get<double>()) +
+           " [" + num(c.measured.at("interval")[0].get<double>()) + ", " +
+           num(c.measured.at("interval")[1].get<double>()) + "], claimed " +
+           c.measured.at("claimed_side").get<std::string>() + " " + num(c.measured.at("bound").get<double>());
+  return out;
+}
+
+void write_claims(std::ostringstream& md, const QualityModel& m) {
+  md << "## Claims\n\n| claim | measure | measured (95 % interval) | verdict |\n|---|---|---|---|\n";
+  for (const Claim& c : m.claims.value_or(std::vector<Claim>{}))
+    md << "| " << c.text << " | " << c.criterion << " | " << measured_cell(c) << " | **" << stated_verdict(c) << "** |\n";
+  md << "\nEach claim compares per-frame values paired by frame (the same lattice offset, or the same animation "
+        "frame): the interval is the paired percentile bootstrap of the ratio of means (the difference for the "
+        "coverage excess), and a claim holds when the whole interval lies on the claimed side of its bound, does "
+        "not hold when it lies wholly on the other side, and is inconclusive otherwise (DESIGN.md §11a.1). A claim "
+        "on an error against the reference is decided only when the reference's own error in that metric is below "
+        "a tenth of the measured distance from the bound.\n";
 }
 
 void write_frequency(std::ostringstream& md, const QualityModel& m) {
@@ -347,8 +228,10 @@ void write_reference_error(std::ostringstream& md, const QualityModel& m) {
         "seconds |\n|---|---|---|---|\n";
   for (const ReferenceConvergenceRow& r : d.convergence)
     md << "| " << r.rsm_stride << " | " << r.vpls << " | " << num(r.relative_rmse) << " | " << num(r.seconds) << " |\n";
-  md << "\nThe reference's own error (the next coarser stride against it): " << num(d.own_error)
-     << "; a difference it judges must exceed ten times that, or the verdict is \"reference not converged\".\n\n"
+  md << "\nThe reference's own error (the next coarser stride against it): " << num(d.own_error);
+  for (const auto& [metric, e] : d.own_errors) md << (metric == d.own_errors.begin()->first ? " (" : ", ") << metric << " " << num(e);
+  if (!d.own_errors.empty()) md << ")";
+  md << "; a difference it judges must exceed ten times that, or the verdict is \"reference not converged\".\n\n"
         "PDF-support reference (texels with PDF > 0 only): "
      << d.support_vpls << " VPLs, sum Phi / flux " << num(d.support_power_ratio)
      << ", relative RMSE against the all-lit "
@@ -358,6 +241,49 @@ void write_reference_error(std::ostringstream& md, const QualityModel& m) {
     if (m.reference_error_support.count(g) != 0)
       md << "| " << g << " | " << num(m.reference_error_support.at(g).relative_rmse) << " | "
          << num(m.reference_error_support.at(g).p99_pixel_error) << " |\n";
+}
+
+// Every frame's image error (schema 5): each metric's mean / p95 / max over the frames.
+void write_frame_errors(std::ostringstream& md, const QualityModel& m, const FrameErrors& f, const std::string& title) {
+  md << "\n## Image error per frame, " << title << " (image " << f.image[0] << "x" << f.image[1] << ", G-buffer stride "
+     << f.gbuffer_stride << ")\n\nAgainst " << f.reference << ". Each cell: mean / 95th percentile / maximum over the "
+     << "frames. relMSE = mean (dY)^2 / (Y_ref^2 + 0.01 mean(Y_ref)^2); scale s* = sum L.R / sum L.L and the "
+        "relative RMSE of s* L; FLIP at exposure "
+     << num(f.flip_exposure) << " stops, " << num(f.flip_pixels_per_degree)
+     << " pixels per degree; pixel errors |dY| / mean Y_ref (DESIGN.md §11a.1).\n\n| metric |";
+  std::vector<std::string> gens;
+  for (const auto& g : m.generators)
+    if (f.generators.contains(g)) gens.push_back(g);
+  for (const auto& g : gens) md << " " << g << " |";
+  md << "\n|---|";
+  for (std::size_t i = 0; i < gens.size(); ++i) md << "---|";
+  md << "\n";
+  for (const char* metric : {"rel_mse", "relative_rmse", "scaled_rmse", "scale", "flip", "p99_pixel_error",
+                             "max_pixel_error", "flicker_deviation", "error_flicker_deviation"}) {
+    bool any = false;
+    for (const auto& g : gens) any = any || f.generators.at(g).contains(metric);
+    if (!any) continue;
+    md << "| " << metric << " |";
+    for (const auto& g : gens) {
+      const auto it = f.generators.at(g).find(metric);
+      if (it == f.generators.at(g).end()) {
+        md << " n/a |";
+        continue;
+      }
+      const SeriesSummary sum = summarize_series(it->second);
+      md << " " << num(sum.mean) << " / " << num(sum.p95) << " / " << num(sum.max) << " |";
+    }
+    md << "\n";
+  }
+  md << "| worst frame (largest relative RMSE) |";
+  for (const auto& g : gens) {
+    const auto it = f.generators.at(g).find("relative_rmse");
+    md << " " << (it == f.generators.at(g).end() ? std::string("n/a")
+                                                 : std::to_string(std::max_element(it->second.begin(), it->second.end()) -
+                                                                  it->second.begin()))
+       << " |";
+  }
+  md << "\n";
 }
 
 void write_flicker(std::ostringstream& md, const QualityModel& m) {
@@ -383,14 +309,20 @@ void write_flicker(std::ostringstream& md, const QualityModel& m) {
 }
 
 void write_k_sweep(std::ostringstream& md, const QualityModel& m) {
-  md << "\n## K sweep (Fig. 6)\n\n| generator | K | weighted CV | relative RMSE | p99 pixel error | gap + overlap | "
-        "count error, Eq. 3 (floor) | max Phi_i / mean |\n|---|---|---|---|---|---|---|---|\n";
+  md << "\n## K sweep (Fig. 6)\n\nOffset 0, and the mean over the static frames (schema 5).\n\n| generator | K | weighted CV "
+        "| frame flicker, mean | relative RMSE | relative RMSE, frame mean | p99 pixel error | gap + overlap | "
+        "count error, Eq. 3 (floor) | max Phi_i / mean |\n|---|---|---|---|---|---|---|---|---|---|\n";
+  const auto frame_mean = [](const KSweepRow& row, const char* series) {
+    const auto it = row.per_frame.find(series);
+    return it == row.per_frame.end() ? std::string("n/a") : num(summarize_series(it->second).mean);
+  };
   for (const auto& [g, rows] : m.k_sweep)
     for (const KSweepRow& row : rows)
-      md << "| " << g << " | " << num(row.K) << " | " << num(row.weighted_cv) << " | " << num(row.error.relative_rmse) << " | "
-         << num(row.error.p99_pixel_error) << " | " << num(row.coverage.gap_plus_overlap) << " | "
-         << num(row.coverage.eq3.count_error) << " (" << num(row.coverage.floor_eq3.count_error) << ") | "
-         << num(row.power.max_over_mean) << " |\n";
+      md << "| " << g << " | " << num(row.K) << " | " << num(row.weighted_cv) << " | "
+         << frame_mean(row, "flicker_deviation") << " | " << num(row.error.relative_rmse) << " | "
+         << frame_mean(row, "relative_rmse") << " | " << num(row.error.p99_pixel_error) << " | "
+         << num(row.coverage.gap_plus_overlap) << " | " << num(row.coverage.eq3.count_error) << " ("
+         << num(row.coverage.floor_eq3.count_error) << ") | " << num(row.power.max_over_mean) << " |\n";
 }
 
 }  // namespace
@@ -404,6 +336,8 @@ std::string quality_markdown(const QualityModel& m, const std::vector<QualityPic
   md << "\nCoverage is defined for the FIS generators only (a k-means cluster has no square footprint): n/a.\n";
   write_flux_origin(md, m);
   write_reference_error(md, m);
+  if (m.frames_static) write_frame_errors(md, m, *m.frames_static, "static scene (lattice offsets)");
+  if (m.frames_animated) write_frame_errors(md, m, *m.frames_animated, "animated sequence");
   write_flicker(md, m);
   write_k_sweep(md, m);
   md << "\n## Pictures\n\n";

@@ -17,7 +17,9 @@
 #include "harness/core/generator_ids.hpp"
 #include "harness/reference/fis_reference.hpp"
 #include "harness/generators/generator_registry.hpp"
+#include "harness/quality/flip.hpp"
 #include "harness/quality/flux_origin.hpp"
+#include "harness/quality/frame_error.hpp"
 #include "harness/quality/quality_metrics.hpp"
 #include "harness/formats/quality_model.hpp"
 #include "harness/quality/quality_pictures.hpp"
@@ -222,13 +224,37 @@ std::string k_label(float K) {
 // Pictures at half the error resolution, to keep them small.
 constexpr uint32_t kTileFactor = 2;
 
-// The reference image (DESIGN.md §11) the errors, the K sweep and the pictures compare with.
+// The references (DESIGN.md §11a) every frame, the K sweep and the pictures compare with.
 struct ReferenceShading {
-  RadianceImage image;
-  float exposure;                                  // of every render picture
-  std::map<std::string, RadianceImage> k1_images;  // the FIS generators' renders at the configured K
-  uint32_t error_stride = 1;                       // the G-buffer stride of every comparison with it
+  RadianceImage image;          // all lit texels
+  RadianceImage support_image;  // the PDF's support
+  float exposure = 1;           // of every render picture (a scale)
+  FlipSettings flip;            // FLIP of every frame: the reference's exposure, in stops
+  uint32_t error_stride = 1;    // the G-buffer stride of every comparison with it
 };
+
+// The images the K sweep reuses from the static frames: each FIS generator's frame at offset 0.
+using OffsetZeroImages = std::map<std::string, RadianceImage>;
+
+// One generator's static frames (DESIGN.md §11a.1): the per-frame series, the flicker, the
+// light-view flux origins (FIS), and the frames the pictures show.
+struct StaticFrames {
+  FrameSeries series;
+  FlickerAccumulator flicker;
+  std::vector<FluxOrigin> origins;
+  RadianceImage offset_zero, worst;
+  std::size_t worst_frame = 0;
+};
+
+void add_image_error(FrameSeries& series, const FrameImageError& e) {
+  series["rel_mse"].push_back(e.rel_mse);
+  series["relative_rmse"].push_back(e.relative_rmse);
+  series["scaled_rmse"].push_back(e.scaled_rmse);
+  series["scale"].push_back(e.scale);
+  series["flip"].push_back(e.flip);
+  series["p99_pixel_error"].push_back(e.p99_pixel_error);
+  series["max_pixel_error"].push_back(e.max_pixel_error);
+}
 
 // One quality run: the device, the capture and its views on the device, and the lattice floor's
 // input, the same views with the PDF 1 on the texels it weighs (DESIGN.md §11a). Each block of
@@ -250,10 +276,12 @@ struct QualityRun {
     if (progress) progress(line);
   }
 
-  // Coverage of a generator's kernels on a view beside the same generator's on the view's floor.
+  // Coverage of a generator's kernels on a view beside the same generator's, at the same lattice
+  // offset, on the view's floor.
   CoverageSummary coverage_with_floor(const std::vector<VsglRecord>& kernels, const MipPyramid& pdf, const DeviceView& floor_view,
-                           const MipPyramid& floor_pdf, const std::string& name, uint32_t n, float K) const {
-    const GeneratorRun floor_run = run_generator(device, floor_view, name, config, n, K, 0);
+                                      const MipPyramid& floor_pdf, const std::string& name, uint32_t n, float K,
+                                      uint32_t offset_bits = 0) const {
+    const GeneratorRun floor_run = run_generator(device, floor_view, name, config, n, K, offset_bits);
     return coverage_summary(footprint_coverage(kernels, pdf, K), footprint_coverage(floor_run.vsgls, floor_pdf, K));
   }
 
@@ -325,9 +353,36 @@ struct QualityRun {
     return n;
   }
 
-  // 6: the converged reference (DESIGN.md §11a) and the errors against it (light-view VSGLs shading
-  // the camera view).
-  ReferenceShading reference_and_errors(QualityModel& out, QualityResult& result, double light_flux) const {
+  // The camera size (DESIGN.md §11a): the given stride, or by the budget: shade the coarsest set at
+  // the reduced size and predict the whole reference work (every convergence stride, both
+  // references) at full size from its rate. A probe shaded at the chosen size is kept in `coarse`.
+  uint32_t camera_size(ReferenceDetail& detail, const std::vector<uint32_t>& strides, uint32_t ref_stride,
+                       std::map<uint32_t, ShadedReference>& coarse) const {
+    if (config.error_stride != 0) {
+      detail.camera_size_rule = "G-buffer stride given (--error-stride)";
+      return config.error_stride;
+    }
+    const uint32_t probe_stride = strides.empty() ? ref_stride : strides.front();
+    ShadedReference probe = shade_reference(probe_stride, VplSet::kAllLit, kReducedErrorStride);
+    const double probe_work = static_cast<double>(probe.vpls.size()) * static_cast<double>(probe.image.pixels.size());
+    double vpls_total =
+        static_cast<double>(vpl_count(ref_stride, VplSet::kAllLit) + vpl_count(ref_stride, VplSet::kPdfSupport));
+    for (uint32_t s : strides) vpls_total += static_cast<double>(vpl_count(s, VplSet::kAllLit));
+    const double full_pixels = static_cast<double>(capture.gbuffer.width) * capture.gbuffer.height;
+    const double predicted = probe.seconds * vpls_total * full_pixels / std::max(probe_work, 1.0);
+    detail.predicted_full_size_s = predicted;
+    const uint32_t error_stride = predicted <= config.reference_budget_s ? 1u : kReducedErrorStride;
+    detail.camera_size_rule =
+        "full size (G-buffer stride 1) when the references are predicted to shade within "
+        "budget_s, from the rate of the coarsest set shaded at stride " +
+        std::to_string(kReducedErrorStride) + "; else stride " + std::to_string(kReducedErrorStride);
+    if (error_stride == kReducedErrorStride && probe_stride != ref_stride) coarse[probe_stride] = std::move(probe);
+    return error_stride;
+  }
+
+  // 6: the converged reference (DESIGN.md §11a), its convergence table and its own error in every
+  // frame metric, and the PDF-support reference.
+  ReferenceShading reference(QualityModel& out, double light_flux) const {
     const uint32_t ref_stride = reference_stride(capture.rsm, config.reference_rsm);
     const uint32_t rsm_side = std::max(capture.rsm.width, capture.rsm.height);
     // The coarser strides of the convergence table, coarsest first, each leaving at least 2 texels a side.
@@ -338,33 +393,14 @@ struct QualityRun {
     detail.budget_s = config.reference_budget_s;
     detail.evaluations_per_dispatch = kShadeEvaluationsPerDispatch;
     std::map<uint32_t, ShadedReference> coarse;
-    uint32_t error_stride = config.error_stride;
-    if (error_stride == 0) {
-      // Camera size by the budget: shade the coarsest set at the reduced size, and predict the
-      // whole reference work (every convergence stride, both references) at full size from its rate.
-      const uint32_t probe_stride = strides.empty() ? ref_stride : strides.front();
-      ShadedReference probe = shade_reference(probe_stride, VplSet::kAllLit, kReducedErrorStride);
-      const double probe_work = static_cast<double>(probe.vpls.size()) * static_cast<double>(probe.image.pixels.size());
-      double vpls_total =
-          static_cast<double>(vpl_count(ref_stride, VplSet::kAllLit) + vpl_count(ref_stride, VplSet::kPdfSupport));
-      for (uint32_t s : strides) vpls_total += static_cast<double>(vpl_count(s, VplSet::kAllLit));
-      const double full_pixels = static_cast<double>(capture.gbuffer.width) * capture.gbuffer.height;
-      const double predicted = probe.seconds * vpls_total * full_pixels / std::max(probe_work, 1.0);
-      detail.predicted_full_size_s = predicted;
-      error_stride = predicted <= config.reference_budget_s ? 1u : kReducedErrorStride;
-      detail.camera_size_rule =
-          "full size (G-buffer stride 1) when the references are predicted to shade within "
-          "budget_s, from the rate of the coarsest set shaded at stride " +
-          std::to_string(kReducedErrorStride) + "; else stride " + std::to_string(kReducedErrorStride);
-      if (error_stride == kReducedErrorStride && probe_stride != ref_stride) coarse[probe_stride] = std::move(probe);
-    } else {
-      detail.camera_size_rule = "G-buffer stride given (--error-stride)";
-    }
+    const uint32_t error_stride = camera_size(detail, strides, ref_stride, coarse);
     detail.error_stride = error_stride;
     out.config_rest["error_stride"] = error_stride;
 
     const ShadedReference all = shade_reference(ref_stride, VplSet::kAllLit, error_stride);
     const RadianceImage& ref_image = all.image;
+    // FLIP of every frame at the reference's own exposure (DESIGN.md §11a.1), in stops.
+    const FlipSettings flip{std::log2(static_cast<double>(auto_exposure(ref_image))), kFlipDefaultPixelsPerDegree};
     detail.vsgls_per_dispatch = shade_chunk_vsgls(ref_image.pixels.size());
     detail.seconds = all.seconds;
     say("reference: " + std::to_string(all.vpls.size()) + " VPLs at " + std::to_string(ref_image.width) + "x" +
@@ -378,7 +414,12 @@ struct QualityRun {
     detail.convergence.push_back({ref_stride, all.vpls.size(), 0.0, all.seconds});
     detail.own_error =
         detail.convergence.size() >= 2 ? detail.convergence[detail.convergence.size() - 2].relative_rmse : 0.0;
-    const ShadedReference support = shade_reference(ref_stride, VplSet::kPdfSupport, error_stride);
+    if (const auto own = coarse.find(2 * ref_stride); own != coarse.end()) {
+      FrameSeries one;
+      add_image_error(one, frame_image_error(own->second.image, ref_image, flip));
+      for (const auto& [metric, values] : one) detail.own_errors[metric] = values.front();
+    }
+    ShadedReference support = shade_reference(ref_stride, VplSet::kPdfSupport, error_stride);
     detail.support_vpls = support.vpls.size();
     detail.support_power_ratio = power_sum(support.vpls) / light_flux;
     detail.support_seconds = support.seconds;
@@ -399,87 +440,168 @@ struct QualityRun {
         "(bounds the 1/d^2 spikes of point VPLs); shaded at the "
         "generators' pixels (G-buffer stride) by the same shading pass, in chunked dispatches";
     const float exposure = auto_exposure(downscale(ref_image, kTileFactor));
-    std::vector<Rgb8Image> render_tiles{tone_map(downscale(ref_image, kTileFactor), exposure)};
-    std::vector<Rgb8Image> error_tiles{error_map(downscale(ref_image, kTileFactor), downscale(ref_image, kTileFactor), 1.0f)};
-    std::map<std::string, RadianceImage> k1_images;
-    for (const auto& name : config.generators) {
-      const GeneratorRun run = run_generator(device, light, name, config, config.light_vsgls, config.K, 0);
-      const RadianceImage img =
-          shade_camera_view(device, camera, run.generator->vsgls(), run.generator->vsgl_count(), error_stride);
-      out.reference_error[name] = error_summary(image_error(img, ref_image));
-      out.reference_error_support[name] = error_summary(image_error(img, support.image));
-      render_tiles.push_back(tone_map(downscale(img, kTileFactor), exposure));
-      error_tiles.push_back(error_map(downscale(img, kTileFactor), downscale(ref_image, kTileFactor), 1.0f));
-      if (is_fis(name)) k1_images[name] = img;
-    }
-    {
-      std::vector<Rgb8Image> tiles = render_tiles;
-      tiles.insert(tiles.end(), error_tiles.begin(), error_tiles.end());
-      std::string order = "reference";
-      for (const auto& g : config.generators) order += ", " + g;
-      result.pictures.push_back({scene + "_renders.png",
-                                 "Fig. 5 analog. Top row: " + order +
-                                     " (indirect light, no visibility, one exposure). Bottom row: |dY| / mean Y of the "
-                                     "reference (black 0, red, yellow, white >= 1)",
-                                 tile_grid(tiles, static_cast<uint32_t>(render_tiles.size()))});
-    }
-    return ReferenceShading{ref_image, exposure, k1_images, error_stride};
+    return ReferenceShading{ref_image, std::move(support.image), exposure, flip, error_stride};
   }
 
-  // 4 + 5: static flicker over offsets, with the K sweep for the FIS generators.
-  void flicker_and_k_sweep(QualityModel& out, QualityResult& result, const ReferenceShading& reference,
-                           const MipPyramid& light_pdf, double light_flux) const {
-    const uint32_t flicker_stride = stride_for_width(capture.gbuffer.width, config.flicker_width);
+  // The light-view VSGLs of `name` at lattice offset `offset_bits` and K, shading the camera view
+  // at the reference's pixels.
+  RadianceImage shade_frame(const GeneratorRun& run, const ReferenceShading& ref) const {
+    return shade_camera_view(device, camera, run.generator->vsgls(), run.generator->vsgl_count(), ref.error_stride);
+  }
+
+  // Fig. 1 and Fig. 5 of one FIS frame on both views: the coverage excess over the floor at the
+  // same offset, the spread of the kernel mass, the brightest VSGL (DESIGN.md §11a.1).
+  void fis_frame_coverage(FrameSeries& series, const std::string& name, const GeneratorRun& light_run,
+                          const MipPyramid& light_pdf, const ViewData& camera_data, const MipPyramid& floor_camera_pdf,
+                          uint32_t offset) const {
+    const CoverageSummary lc = coverage_with_floor(light_run.vsgls, light_pdf, floor_light, floor_light_pdf, name,
+                                                   config.light_vsgls, config.K, offset);
+    series["light_view_coverage_excess"].push_back(lc.excess_eq3.count_error);
+    series["light_view_mass_stdev"].push_back(lc.mass_over_target.stdev);
+    const GeneratorRun cam = run_generator(device, camera, name, config, config.camera_vsgls, config.K, offset);
+    const CoverageSummary cc = coverage_with_floor(cam.vsgls, camera_data.pdf, floor_camera, floor_camera_pdf, name,
+                                                   config.camera_vsgls, config.K, offset);
+    series["camera_view_coverage_excess"].push_back(cc.excess_eq3.count_error);
+    series["camera_view_mass_stdev"].push_back(cc.mass_over_target.stdev);
+    series["camera_view_max_over_mean"].push_back(power_metrics(cam.vsgls, camera_data.flux).max_over_mean);
+  }
+
+  // One generator over the static frames: every lattice offset's image error, flicker and, for
+  // FIS, coverage and flux origin.
+  StaticFrames frames_of(const std::string& name, const ReferenceShading& ref, const MipPyramid& light_pdf,
+                         double light_flux, const ViewData& camera_data, const MipPyramid& floor_camera_pdf) const {
     const std::vector<float> light_texel_flux = view_data(capture, ViewKind::kLight).texel_flux;
-    // The flux origin of every frame (FIS, the configured K): where the power comes from, over offsets.
-    std::vector<FluxOrigin> origins;
-    const auto flicker_of = [&](const std::string& name, float K) {
-      FlickerAccumulator acc;
-      origins.clear();
-      for (uint32_t f = 0; f < config.frames; ++f) {
-        const GeneratorRun run = run_generator(device, light, name, config, config.light_vsgls, K, frame_offset_bits(f));
-        acc.add_frame(shade_camera_view(device, camera, run.generator->vsgls(), run.generator->vsgl_count(), flicker_stride),
-                      power_sum(run.vsgls));
-        if (is_fis(name) && K == config.K)
-          origins.push_back(flux_origin(run.vsgls, fis_variant(name), light_texel_flux, light_pdf, K));
+    StaticFrames s;
+    double worst = -1;
+    for (uint32_t f = 0; f < config.frames; ++f) {
+      const uint32_t offset = frame_offset_bits(f);
+      const GeneratorRun run = run_generator(device, light, name, config, config.light_vsgls, config.K, offset);
+      RadianceImage img = shade_frame(run, ref);
+      s.flicker.add_frame(img, power_sum(run.vsgls));
+      const FrameImageError e = frame_image_error(img, ref.image, ref.flip);
+      add_image_error(s.series, e);
+      s.series["light_view_max_over_mean"].push_back(power_metrics(run.vsgls, light_flux).max_over_mean);
+      if (is_fis(name)) {
+        s.origins.push_back(flux_origin(run.vsgls, fis_variant(name), light_texel_flux, light_pdf, config.K));
+        fis_frame_coverage(s.series, name, run, light_pdf, camera_data, floor_camera_pdf, offset);
       }
-      return StaticFlicker{acc.weighted_cv(), acc.power_stdev(), acc.power_relative_stdev(), acc.frames()};
-    };
+      if (e.relative_rmse > worst) {
+        worst = e.relative_rmse;
+        s.worst = img;
+        s.worst_frame = f;
+      }
+      if (f == 0) s.offset_zero = std::move(img);
+    }
+    s.series["flicker_deviation"] = s.flicker.frame_deviations();
+    return s;
+  }
+
+  // 4: the static frames (DESIGN.md §11a.1): every generator at each of the F lattice offsets,
+  // its image error against the reference, flicker, and (FIS) coverage on both views; the renders
+  // at offset 0 and each generator's worst frame as pictures.
+  OffsetZeroImages static_frames(QualityModel& out, QualityResult& result, const ReferenceShading& ref,
+                                 const MipPyramid& light_pdf, double light_flux) const {
+    const ViewData camera_data = view_data(capture, ViewKind::kCamera);
+    const MipPyramid floor_camera_pdf = view_data(floor_capture, ViewKind::kCamera).pdf;
+    FrameErrors frames;
+    frames.gbuffer_stride = ref.error_stride;
+    frames.image = json::array({ref.image.width, ref.image.height});
+    frames.reference = "the all-lit reference (every lit RSM texel a VPL), the same for every frame";
+    frames.flip_exposure = ref.flip.exposure;
+    frames.flip_pixels_per_degree = ref.flip.pixels_per_degree;
+    const RadianceImage ref_tile = downscale(ref.image, kTileFactor);
+    std::vector<Rgb8Image> render_tiles{tone_map(ref_tile, ref.exposure)}, error_tiles{error_map(ref_tile, ref_tile, 1.0f)};
+    std::vector<Rgb8Image> worst_tiles, worst_error_tiles;
+    std::string worst_text;
+    OffsetZeroImages offset_zero;
     for (const auto& name : config.generators) {
       const auto tg = Clock::now();
-      out.flicker_static[name] = flicker_of(name, config.K);
+      StaticFrames s = frames_of(name, ref, light_pdf, light_flux, camera_data, floor_camera_pdf);
+      out.flicker_static[name] = {s.flicker.weighted_cv(), s.flicker.power_stdev(), s.flicker.power_relative_stdev(),
+                                  s.flicker.frames()};
+      out.reference_error[name] = error_summary(image_error(s.offset_zero, ref.image));
+      out.reference_error_support[name] = error_summary(image_error(s.offset_zero, ref.support_image));
       auto& light_view = out.views.at(view_name(ViewKind::kLight));
-      if (!origins.empty() && light_view.generators.at(name).flux_origin)
-        light_view.generators.at(name).flux_origin->over_frames = flux_origin_frames(origins);
-      say("static flicker " + name + ": " + std::to_string(seconds_since(tg)) + " s");
+      if (!s.origins.empty() && light_view.generators.at(name).flux_origin)
+        light_view.generators.at(name).flux_origin->over_frames = flux_origin_frames(s.origins);
+      const RadianceImage tile = downscale(s.offset_zero, kTileFactor), worst = downscale(s.worst, kTileFactor);
+      render_tiles.push_back(tone_map(tile, ref.exposure));
+      error_tiles.push_back(error_map(tile, ref_tile, 1.0f));
+      worst_tiles.push_back(tone_map(worst, ref.exposure));
+      worst_error_tiles.push_back(error_map(worst, ref_tile, 1.0f));
+      worst_text += (worst_text.empty() ? "" : ", ") + name + " frame " + std::to_string(s.worst_frame);
+      frames.generators[name] = std::move(s.series);
+      if (is_fis(name)) offset_zero[name] = std::move(s.offset_zero);
+      say("static frames " + name + ": " + std::to_string(seconds_since(tg)) + " s");
     }
-    out.flicker_image = json::array({shaded_extent(capture.gbuffer.width, flicker_stride),
-                                     shaded_extent(capture.gbuffer.height, flicker_stride)});
-    out.flicker_gbuffer_stride = flicker_stride;
+    out.frames_static = std::move(frames);
+    out.flicker_image = out.frames_static->image;
+    out.flicker_gbuffer_stride = ref.error_stride;
+    std::string order = "reference";
+    for (const auto& g : config.generators) order += ", " + g;
+    const auto grid = [](std::vector<Rgb8Image> top, const std::vector<Rgb8Image>& bottom) {
+      const auto columns = static_cast<uint32_t>(top.size());
+      top.insert(top.end(), bottom.begin(), bottom.end());
+      return tile_grid(top, columns);
+    };
+    const std::string error_row = "|dY| / mean Y of the reference (black 0, red, yellow, white >= 1)";
+    result.pictures.push_back({scene + "_renders.png",
+                               "Fig. 5 analog at lattice offset 0. Top row: " + order +
+                                   " (indirect light, no visibility, one exposure). Bottom row: " + error_row,
+                               grid(render_tiles, error_tiles)});
+    result.pictures.push_back({scene + "_worst_frames.png",
+                               "Each generator's frame of largest relative RMSE (" + worst_text +
+                                   "), same exposure as the renders. Bottom row: " + error_row,
+                               grid(worst_tiles, worst_error_tiles)});
+    return offset_zero;
+  }
 
+  // 5: the K sweep (Fig. 6) for the FIS generators: per K the static frames' flicker and error
+  // (DESIGN.md §11a.1), and coverage and power at offset 0.
+  void k_sweep(QualityModel& out, QualityResult& result, const ReferenceShading& ref, const OffsetZeroImages& offset_zero,
+               const MipPyramid& light_pdf, double light_flux) const {
     std::vector<Rgb8Image> k_tiles;
     for (const auto& name : config.generators) {
       if (!is_fis(name)) continue;
       std::vector<KSweepRow> rows;
       for (float K : config.k_sweep) {
         const auto tg = Clock::now();
-        const StaticFlicker flicker = K == config.K ? out.flicker_static.at(name) : flicker_of(name, K);
-        const GeneratorRun run = run_generator(device, light, name, config, config.light_vsgls, K, 0);
-        const RadianceImage img = K == config.K && reference.k1_images.count(name) > 0
-                                      ? reference.k1_images.at(name)
-                                      : shade_camera_view(device, camera, run.generator->vsgls(),
-                                                          run.generator->vsgl_count(), reference.error_stride);
         KSweepRow row;
         row.K = K;
-        row.weighted_cv = flicker.weighted_cv;
-        row.power_stdev = flicker.power_stdev;
-        row.power_relative_stdev = flicker.power_relative_stdev;
-        row.frames = flicker.frames;
-        row.error = error_summary(image_error(img, reference.image));
+        RadianceImage img;
+        if (K == config.K) {
+          const StaticFlicker& f = out.flicker_static.at(name);
+          row.weighted_cv = f.weighted_cv;
+          row.power_stdev = f.power_stdev;
+          row.power_relative_stdev = f.power_relative_stdev;
+          row.frames = f.frames;
+          const FrameSeries& series = out.frames_static->generators.at(name);
+          row.per_frame = {{"flicker_deviation", series.at("flicker_deviation")},
+                           {"relative_rmse", series.at("relative_rmse")}};
+          img = offset_zero.at(name);
+        } else {
+          FlickerAccumulator acc;
+          std::vector<double> error;
+          for (uint32_t f = 0; f < config.frames; ++f) {
+            const GeneratorRun run =
+                run_generator(device, light, name, config, config.light_vsgls, K, frame_offset_bits(f));
+            RadianceImage frame = shade_frame(run, ref);
+            acc.add_frame(frame, power_sum(run.vsgls));
+            error.push_back(image_error(frame, ref.image).relative_rmse);
+            if (f == 0) img = std::move(frame);
+          }
+          row.weighted_cv = acc.weighted_cv();
+          row.power_stdev = acc.power_stdev();
+          row.power_relative_stdev = acc.power_relative_stdev();
+          row.frames = acc.frames();
+          row.per_frame = {{"flicker_deviation", acc.frame_deviations()}, {"relative_rmse", std::move(error)}};
+        }
+        const GeneratorRun run = run_generator(device, light, name, config, config.light_vsgls, K, 0);
+        row.error = error_summary(image_error(img, ref.image));
         row.coverage = coverage_with_floor(run.vsgls, light_pdf, floor_light, floor_light_pdf, name, config.light_vsgls, K);
         row.power = power_summary(power_metrics(run.vsgls, light_flux));
         rows.push_back(row);
-        k_tiles.push_back(tone_map(downscale(img, kTileFactor), reference.exposure));
+        k_tiles.push_back(tone_map(downscale(img, kTileFactor), ref.exposure));
         say("K sweep " + name + " K=" + k_label(K) + ": " + std::to_string(seconds_since(tg)) + " s");
       }
       out.k_sweep.emplace_back(name, std::move(rows));
@@ -495,15 +617,19 @@ struct QualityRun {
     }
   }
 
-  // 4b: the animated sequence (moving light and camera), reported separately.
-  QualityModel::Animated animated_sequence() const {
+  // 4b: the animated sequence (moving light and camera), reported separately: flicker, and every
+  // frame's image error against its own reference (DESIGN.md §11a.1).
+  void animated_sequence(QualityModel& out) const {
     const auto t0 = Clock::now();
     const auto frames = sequence_frames(*config.sequence, config.frames);
     std::map<std::string, FlickerAccumulator> acc;
+    std::map<std::string, FrameSeries> series;
     FlickerAccumulator ref_acc;
     std::vector<std::string> hashes;
     uint32_t seq_stride = 1, seq_ref_stride = 1;
     std::string seq_scene;
+    std::optional<FlipSettings> flip;
+    json image;
     for (const auto& dir : frames) {
       const Capture c = load_capture(dir);
       if (seq_scene.empty()) seq_scene = c.meta.scene;
@@ -514,16 +640,26 @@ struct QualityRun {
       seq_ref_stride = reference_stride(c.rsm, config.sequence_reference_rsm);
       FixedVsglGenerator ref(device, reference_vpls(c.rsm, c.meta.light, seq_ref_stride, VplExtent::kTexelFootprint), "sequence_reference");
       const RadianceImage ref_img = shade_camera_view(device, cam, ref.vsgls(), ref.vsgl_count(), seq_stride);
+      // One exposure for the whole sequence: the first frame's reference's.
+      if (!flip) flip = FlipSettings{std::log2(static_cast<double>(auto_exposure(ref_img))), kFlipDefaultPixelsPerDegree};
+      image = json::array({ref_img.width, ref_img.height});
       ref_acc.add_frame(ref_img, 0.0);
       for (const auto& name : config.generators) {
         const GeneratorRun run = run_generator(device, lig, name, config, config.light_vsgls, config.K, 0);
-        acc[name].add_frame(shade_camera_view(device, cam, run.generator->vsgls(), run.generator->vsgl_count(), seq_stride),
-                            power_sum(run.vsgls), ref_img);
+        const RadianceImage img =
+            shade_camera_view(device, cam, run.generator->vsgls(), run.generator->vsgl_count(), seq_stride);
+        acc[name].add_frame(img, power_sum(run.vsgls), ref_img);
+        add_image_error(series[name], frame_image_error(img, ref_img, *flip));
       }
     }
     QualityModel::Animated animated;
-    for (const auto& name : config.generators)
+    FrameErrors errors;
+    for (const auto& name : config.generators) {
       animated.generators[name] = {acc[name].weighted_cv(), acc[name].error_cv(), acc[name].power_relative_stdev()};
+      series[name]["flicker_deviation"] = acc[name].frame_deviations();
+      series[name]["error_flicker_deviation"] = acc[name].error_frame_deviations();
+      errors.generators[name] = std::move(series[name]);
+    }
     animated.sequence = config.sequence->string();
     animated.scene = seq_scene;
     animated.frames = frames.size();
@@ -533,8 +669,15 @@ struct QualityRun {
     animated.reference_weighted_cv = ref_acc.weighted_cv();
     animated.note = "light and camera move: weighted_cv includes the true change (compare with the reference's); "
                       "error_cv = sum_p stdev_t(Y - Yref) / sum_p mean_t(Yref) is the change the reference does not have";
+    errors.gbuffer_stride = seq_stride;
+    errors.image = image;
+    errors.reference = "each frame's own reference (every " + std::to_string(seq_ref_stride) +
+                       "th RSM texel a VPL), convergence not measured";
+    errors.flip_exposure = flip->exposure;
+    errors.flip_pixels_per_degree = flip->pixels_per_degree;
+    out.flicker_animated = std::move(animated);
+    out.frames_animated = std::move(errors);
     say("animated sequence: " + std::to_string(frames.size()) + " frames in " + std::to_string(seconds_since(t0)) + " s");
-    return animated;
   }
 };
 
@@ -624,16 +767,20 @@ QualityResult run_quality(Device& device, const Capture& capture, const std::fil
 
   t0 = Clock::now();
   const double light_flux = out.views.at("light_view").total_flux;
-  const ReferenceShading reference = run.reference_and_errors(out, result, light_flux);
-  out.timings_s.emplace_back("reference_and_errors", seconds_since(t0));
+  const ReferenceShading reference = run.reference(out, light_flux);
+  out.timings_s.emplace_back("reference", seconds_since(t0));
 
   t0 = Clock::now();
-  run.flicker_and_k_sweep(out, result, reference, light_pdf, light_flux);
-  out.timings_s.emplace_back("flicker_and_k_sweep", seconds_since(t0));
+  const OffsetZeroImages offset_zero = run.static_frames(out, result, reference, light_pdf, light_flux);
+  out.timings_s.emplace_back("static_frames", seconds_since(t0));
+
+  t0 = Clock::now();
+  run.k_sweep(out, result, reference, offset_zero, light_pdf, light_flux);
+  out.timings_s.emplace_back("k_sweep", seconds_since(t0));
 
   if (config.sequence) {
     t0 = Clock::now();
-    out.flicker_animated = run.animated_sequence();
+    run.animated_sequence(out);
     out.timings_s.emplace_back("animated_sequence", seconds_since(t0));
   }
   out.timings_s.emplace_back("total", seconds_since(t_start));

@@ -7,7 +7,7 @@
 //   5. the K sweep (Fig. 6): flicker and reference error of both FIS generators for each K;
 //   6. error against a VPL reference (harness/quality/quality_reference.hpp).
 // Everything is computed before anything is written; the result is a JSON document (schema
-// "vsgl-quality", version 4) plus pictures, rendered to markdown by quality_report.hpp.
+// "vsgl-quality", version 5) plus pictures, rendered to markdown by quality_report.hpp.
 #include <array>
 #include <cstdint>
 #include <filesystem>
@@ -30,7 +30,11 @@ class Device;
 // 3: every "stdev" (mass_over_target.stdev, power_stdev, power_relative_stdev) is the sample standard
 //    deviation (n - 1) of core/statistics.hpp, as in the tables; version 2 files hold the population value.
 // 4: views carry flux_by_pdf and FIS generators flux_origin (flux_origin.hpp); optional, so 3 is still read.
-inline constexpr int kQualitySchemaVersion = 4;
+// 5: frames_static / frames_animated (every frame's image error and flicker, frame_error.hpp), K sweep
+//    rows' per_frame, the reference's own_errors; claims judged on them (quality_claims.hpp, DESIGN.md
+//    §11a.1); the static flicker uses the reference comparison's G-buffer stride. Optional, so 3 and 4
+//    are still read.
+inline constexpr int kQualitySchemaVersion = 5;
 
 // The reduced camera size of the reference comparison (1920x1088 -> 240x136) where the full size
 // does not fit the time budget, and the coarser RSM strides the convergence table compares with
@@ -52,7 +56,7 @@ struct QualityConfig {
   // to shade within reference_budget_s, else kReducedErrorStride (DESIGN.md §11a).
   uint32_t error_stride = 0;
   double reference_budget_s = 600.0;
-  uint32_t flicker_width = 120;       // flicker images are about this wide (stride = W / this)
+  uint32_t flicker_width = 120;       // the animated sequence's images are about this wide (stride = W / this)
   uint32_t reference_rsm = 0;         // reference RSM side (every lit texel a VPL); 0: the full RSM
   uint32_t sequence_reference_rsm = 64;  // the per-frame reference of the animated sequence
   std::vector<float> k_sweep = {1.0f, 2.0f, 4.0f, 8.0f};
