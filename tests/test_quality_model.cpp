@@ -10,6 +10,7 @@
 
 #include "harness/core/error.hpp"
 #include "harness/core/json_reader.hpp"
+#include "harness/quality/quality_claims.hpp"
 #include "harness/quality/quality_report.hpp"
 #include "test_support.hpp"
 

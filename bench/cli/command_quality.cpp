@@ -94,7 +94,8 @@ Command add_quality_command(CLI::App& parent) {
                   "seconds the references may take at full size (with --error-stride 0)")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  app->add_option("--flicker-width", c.flicker_width, "width of the animated sequence's images (G-buffer stride W_gbuf/W); the static frames use the "
+  app->add_option("--flicker-width", c.flicker_width,
+                  "width of the animated sequence's images (G-buffer stride W_gbuf/W); the static frames use the "
                   "reference comparison's stride")
       ->check(at_least(1))
       ->capture_default_str();

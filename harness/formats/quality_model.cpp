@@ -201,15 +201,15 @@ json reference_detail_json(const ReferenceDetail& d) {
   json size{{"error_stride", d.error_stride}, {"rule", d.camera_size_rule}, {"budget_s", d.budget_s}};
   if (d.predicted_full_size_s) size["predicted_full_size_s"] = *d.predicted_full_size_s;
   json out{{"convergence", rows},
-              {"own_error", d.own_error},
-              {"seconds", d.seconds},
-              {"support", json{{"vpls", d.support_vpls},
-                               {"power_ratio", d.support_power_ratio},
-                               {"seconds", d.support_seconds},
-                               {"relative_rmse_to_all_lit", d.support_vs_all_lit}}},
-              {"camera_size", size},
-              {"dispatch", json{{"evaluations_per_dispatch", d.evaluations_per_dispatch},
-                                {"vsgls_per_dispatch", d.vsgls_per_dispatch}}}};
+           {"own_error", d.own_error},
+           {"seconds", d.seconds},
+           {"support", json{{"vpls", d.support_vpls},
+                            {"power_ratio", d.support_power_ratio},
+                            {"seconds", d.support_seconds},
+                            {"relative_rmse_to_all_lit", d.support_vs_all_lit}}},
+           {"camera_size", size},
+           {"dispatch", json{{"evaluations_per_dispatch", d.evaluations_per_dispatch},
+                             {"vsgls_per_dispatch", d.vsgls_per_dispatch}}}};
   if (!d.own_errors.empty()) out["own_errors"] = d.own_errors;
   return out;
 }
@@ -462,7 +462,8 @@ QualityModel::Animated read_animated(const JsonReader& r, const json& fa) {
   const json& hashes = r.member(fa, "/flicker_animated", "frame_content_hashes");
   if (!hashes.is_array()) r.wrong_type(hashes, "/flicker_animated/frame_content_hashes", "an array");
   for (std::size_t i = 0; i < hashes.size(); ++i) {
-    if (!hashes[i].is_string()) r.wrong_type(hashes[i], r.element("/flicker_animated/frame_content_hashes", i), "a string");
+    if (!hashes[i].is_string())
+      r.wrong_type(hashes[i], r.element("/flicker_animated/frame_content_hashes", i), "a string");
     a.frame_content_hashes.push_back(hashes[i].get<std::string>());
   }
   a.reference_weighted_cv = r.number(fa, "/flicker_animated", "reference_weighted_cv");

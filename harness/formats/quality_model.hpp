@@ -188,7 +188,7 @@ struct QualityModel {
     std::map<std::string, AnimatedFlicker> generators;
   };
   std::optional<Animated> flicker_animated;
-  std::optional<FrameErrors> frames_static, frames_animated;             // schema 5
+  std::optional<FrameErrors> frames_static, frames_animated;            // schema 5
   std::vector<std::pair<std::string, std::vector<KSweepRow>>> k_sweep;  // in the file's order
   // ClaimLayout::kQuality: the numbers each claim was judged on (fis_tok15, fis_modified, and a
   // claim's own, such as the Fig. 1 margin) are its `measured`. None before add_claim_verdicts,

@@ -21,7 +21,8 @@ constexpr double kRelMseEpsilon = 0.01;
 
 FrameImageError frame_image_error(const RadianceImage& frame, const RadianceImage& reference,
                                   const FlipSettings& flip) {
-  if (frame.width != reference.width || frame.height != reference.height || frame.pixels.size() != reference.pixels.size())
+  if (frame.width != reference.width || frame.height != reference.height ||
+      frame.pixels.size() != reference.pixels.size())
     throw InputError("image error: the frame is " + std::to_string(frame.width) + "x" + std::to_string(frame.height) +
                      " but the reference is " + std::to_string(reference.width) + "x" +
                      std::to_string(reference.height));

@@ -22,8 +22,8 @@ using ojson = nlohmann::ordered_json;
 const std::string kTok15(kFisTok15), kModified(kFisModified);
 
 // The bounds of DESIGN.md §11a.1, fixed for every scene and device.
-constexpr double kReductionBound = 0.99;   // a reduction: mean(mod) / mean(Tok15) below 0.99
-constexpr double kExcessBound = -0.02;     // Fig. 1: mean(mod) - mean(Tok15) below -0.02
+constexpr double kReductionBound = 0.99;     // a reduction: mean(mod) / mean(Tok15) below 0.99
+constexpr double kExcessBound = -0.02;       // Fig. 1: mean(mod) - mean(Tok15) below -0.02
 constexpr double kKmeansMarginBound = 1.10;  // Fig. 5: mean(mod) / mean(k-means) below 1.10
 
 const std::string kFig1Claim =
@@ -69,10 +69,9 @@ Judgement judge(const Comparison& c) {
   j.measured["quantity"] = ratio ? "mean(a) / mean(b)" : "mean(a) - mean(b)";
   j.measured["bound"] = c.bound;
   j.measured["claimed_side"] = c.below ? "below" : "above";
-  j.measured["sign_test"] = ojson{{"a_below", sign.a_below}, {"a_above", sign.a_above}, {"ties", sign.ties},
-                                  {"p_two_sided", sign.p_two_sided}};
-  j.measured["bootstrap"] =
-      ojson{{"resamples", boot.resamples}, {"confidence", boot.confidence}, {"seed", boot.seed}};
+  j.measured["sign_test"] = ojson{
+      {"a_below", sign.a_below}, {"a_above", sign.a_above}, {"ties", sign.ties}, {"p_two_sided", sign.p_two_sided}};
+  j.measured["bootstrap"] = ojson{{"resamples", boot.resamples}, {"confidence", boot.confidence}, {"seed", boot.seed}};
   if (ratio && !boot.ratio_interval) {
     j.note = "inconclusive: a frame of " + c.b_label + " is not positive, so the ratio has no interval";
     return j;
@@ -131,7 +130,8 @@ void add_fis_claim(std::vector<Claim>& claims, const FrameErrors& f, const std::
   const auto* mod = series_of(f, kModified, series);
   const auto* tok = series_of(f, kTok15, series);
   if (!mod || !tok) return;
-  claims.push_back(make_claim(text, source, measure, judge({kModified, kTok15, *mod, *tok, quantity, true, bound, {}})));
+  claims.push_back(
+      make_claim(text, source, measure, judge({kModified, kTok15, *mod, *tok, quantity, true, bound, {}})));
 }
 
 void add_static_claims(std::vector<Claim>& claims, const QualityModel& m) {
@@ -160,7 +160,8 @@ void add_static_claims(std::vector<Claim>& claims, const QualityModel& m) {
     j.measured["worst_frame"] = ojson{{kModified, worst_mod}, {kTok15, worst_tok}};
     if (j.holds == true && !(worst_mod < worst_tok)) {
       j.holds.reset();
-      j.note = std::string(kInconclusivePrefix) + ": the interval holds, but modified's worst frame is not below Tok15's";
+      j.note =
+          std::string(kInconclusivePrefix) + ": the interval holds, but modified's worst frame is not below Tok15's";
     }
     claims.push_back(make_claim(kFig5Claim, "paper §4, Fig. 5; DESIGN.md §11a.1",
                                 "tail error: 99th percentile pixel error against the reference, per frame, and the "
@@ -172,8 +173,9 @@ void add_static_claims(std::vector<Claim>& claims, const QualityModel& m) {
     const auto* md = series_of(f, kModified, "relative_rmse");
     if (!km || !md) continue;
     claims.push_back(make_claim(kFig5Claim, "paper Fig. 5 (modified beside k-means); DESIGN.md §11a.1",
-                                "k-means margin, " + kmeans + ": relative RMSE against the reference, per frame, "
-                                "modified within 10 % of k-means",
+                                "k-means margin, " + kmeans +
+                                    ": relative RMSE against the reference, per frame, "
+                                    "modified within 10 % of k-means",
                                 judge({kModified, kmeans, *md, *km, Quantity::kRatio, true, kKmeansMarginBound,
                                        own_error(m, "relative_rmse")})));
   }
@@ -203,8 +205,14 @@ void add_k_sweep_claims(std::vector<Claim>& claims, const QualityModel& m) {
     for (std::size_t i = 0; i + 1 < rows.size(); ++i) {
       const KSweepRow &lo = rows[i], &hi = rows[i + 1];
       const std::string a = "K=" + num(hi.K), b = "K=" + num(lo.K);
-      const Judgement flicker = judge({a, b, hi.per_frame.at("flicker_deviation"), lo.per_frame.at("flicker_deviation"),
-                                       Quantity::kRatio, true, 1.0, {}});
+      const Judgement flicker = judge({a,
+                                       b,
+                                       hi.per_frame.at("flicker_deviation"),
+                                       lo.per_frame.at("flicker_deviation"),
+                                       Quantity::kRatio,
+                                       true,
+                                       1.0,
+                                       {}});
       const Judgement error = judge({a, b, hi.per_frame.at("relative_rmse"), lo.per_frame.at("relative_rmse"),
                                      Quantity::kRatio, false, 1.0, own_error(m, "relative_rmse")});
       for (const Judgement* j : {&flicker, &error}) {
@@ -212,18 +220,21 @@ void add_k_sweep_claims(std::vector<Claim>& claims, const QualityModel& m) {
         any_fails = any_fails || j->holds == false;
         unconverged = unconverged || (!j->holds && j->note.rfind("reference not converged", 0) == 0);
       }
-      steps.push_back(ojson{{"from_K", lo.K}, {"to_K", hi.K}, {"flicker", flicker.measured}, {"error", error.measured}});
+      steps.push_back(
+          ojson{{"from_K", lo.K}, {"to_K", hi.K}, {"flicker", flicker.measured}, {"error", error.measured}});
       ks += (ks.empty() ? num(lo.K) : "") + ", " + num(hi.K);
     }
     Judgement j;
     j.measured = ojson{{"generator", gen}, {"steps", steps}};
     if (all_hold) j.holds = true;
     else if (any_fails) j.holds = false;
-    else j.note = unconverged ? "reference not converged at some step" : std::string(kInconclusivePrefix) + ": some step's interval reaches 1";
-    claims.push_back(make_claim(kFig6Claim, "paper_tables.json claims[4]; DESIGN.md §11a.1",
-                                "K sweep, " + gen + ": K = " + ks +
-                                    ": at every step the frame flicker falls and the relative RMSE grows",
-                                std::move(j)));
+    else
+      j.note = unconverged ? "reference not converged at some step"
+                           : std::string(kInconclusivePrefix) + ": some step's interval reaches 1";
+    claims.push_back(make_claim(
+        kFig6Claim, "paper_tables.json claims[4]; DESIGN.md §11a.1",
+        "K sweep, " + gen + ": K = " + ks + ": at every step the frame flicker falls and the relative RMSE grows",
+        std::move(j)));
   }
 }
 

@@ -28,7 +28,6 @@ std::string num(double v) {
   return buf;
 }
 
-
 }  // namespace
 
 namespace {
@@ -60,7 +59,8 @@ std::string measured_cell(const Claim& c) {
   }
   std::string out;
   for (const auto& [key, value] : c.measured.items())
-    if (key.find('_') != std::string::npos && value.is_number() && (key.rfind("fis_", 0) == 0 || key.rfind("kmeans_", 0) == 0))
+    if (key.find('_') != std::string::npos && value.is_number() &&
+        (key.rfind("fis_", 0) == 0 || key.rfind("kmeans_", 0) == 0))
       out += (out.empty() ? "" : ", ") + key + " " + num(value.get<double>());
   if (c.measured.contains("interval"))
     out += "; " + c.measured.at("quantity").get<std::string>() + " " + num(c.measured.at("estimate").get<double>()) +
@@ -73,7 +73,8 @@ std::string measured_cell(const Claim& c) {
 void write_claims(std::ostringstream& md, const QualityModel& m) {
   md << "## Claims\n\n| claim | measure | measured (95 % interval) | verdict |\n|---|---|---|---|\n";
   for (const Claim& c : m.claims.value_or(std::vector<Claim>{}))
-    md << "| " << c.text << " | " << c.criterion << " | " << measured_cell(c) << " | **" << stated_verdict(c) << "** |\n";
+    md << "| " << c.text << " | " << c.criterion << " | " << measured_cell(c) << " | **" << stated_verdict(c)
+       << "** |\n";
   md << "\nEach claim compares per-frame values paired by frame (the same lattice offset, or the same animation "
         "frame): the interval is the paired percentile bootstrap of the ratio of means (the difference for the "
         "coverage excess), and a claim holds when the whole interval lies on the claimed side of its bound, does "
@@ -229,7 +230,8 @@ void write_reference_error(std::ostringstream& md, const QualityModel& m) {
   for (const ReferenceConvergenceRow& r : d.convergence)
     md << "| " << r.rsm_stride << " | " << r.vpls << " | " << num(r.relative_rmse) << " | " << num(r.seconds) << " |\n";
   md << "\nThe reference's own error (the next coarser stride against it): " << num(d.own_error);
-  for (const auto& [metric, e] : d.own_errors) md << (metric == d.own_errors.begin()->first ? " (" : ", ") << metric << " " << num(e);
+  for (const auto& [metric, e] : d.own_errors)
+    md << (metric == d.own_errors.begin()->first ? " (" : ", ") << metric << " " << num(e);
   if (!d.own_errors.empty()) md << ")";
   md << "; a difference it judges must exceed ten times that, or the verdict is \"reference not converged\".\n\n"
         "PDF-support reference (texels with PDF > 0 only): "
@@ -278,9 +280,10 @@ void write_frame_errors(std::ostringstream& md, const QualityModel& m, const Fra
   md << "| worst frame (largest relative RMSE) |";
   for (const auto& g : gens) {
     const auto it = f.generators.at(g).find("relative_rmse");
-    md << " " << (it == f.generators.at(g).end() ? std::string("n/a")
-                                                 : std::to_string(std::max_element(it->second.begin(), it->second.end()) -
-                                                                  it->second.begin()))
+    md << " "
+       << (it == f.generators.at(g).end()
+               ? std::string("n/a")
+               : std::to_string(std::max_element(it->second.begin(), it->second.end()) - it->second.begin()))
        << " |";
   }
   md << "\n";
@@ -309,7 +312,8 @@ void write_flicker(std::ostringstream& md, const QualityModel& m) {
 }
 
 void write_k_sweep(std::ostringstream& md, const QualityModel& m) {
-  md << "\n## K sweep (Fig. 6)\n\nOffset 0, and the mean over the static frames (schema 5).\n\n| generator | K | weighted CV "
+  md << "\n## K sweep (Fig. 6)\n\nOffset 0, and the mean over the static frames (schema 5).\n\n| generator | K | "
+        "weighted CV "
         "| frame flicker, mean | relative RMSE | relative RMSE, frame mean | p99 pixel error | gap + overlap | "
         "count error, Eq. 3 (floor) | max Phi_i / mean |\n|---|---|---|---|---|---|---|---|---|---|\n";
   const auto frame_mean = [](const KSweepRow& row, const char* series) {

@@ -278,9 +278,9 @@ struct QualityRun {
 
   // Coverage of a generator's kernels on a view beside the same generator's, at the same lattice
   // offset, on the view's floor.
-  CoverageSummary coverage_with_floor(const std::vector<VsglRecord>& kernels, const MipPyramid& pdf, const DeviceView& floor_view,
-                                      const MipPyramid& floor_pdf, const std::string& name, uint32_t n, float K,
-                                      uint32_t offset_bits = 0) const {
+  CoverageSummary coverage_with_floor(const std::vector<VsglRecord>& kernels, const MipPyramid& pdf,
+                                      const DeviceView& floor_view, const MipPyramid& floor_pdf,
+                                      const std::string& name, uint32_t n, float K, uint32_t offset_bits = 0) const {
     const GeneratorRun floor_run = run_generator(device, floor_view, name, config, n, K, offset_bits);
     return coverage_summary(footprint_coverage(kernels, pdf, K), footprint_coverage(floor_run.vsgls, floor_pdf, K));
   }
@@ -510,7 +510,8 @@ struct QualityRun {
     frames.flip_exposure = ref.flip.exposure;
     frames.flip_pixels_per_degree = ref.flip.pixels_per_degree;
     const RadianceImage ref_tile = downscale(ref.image, kTileFactor);
-    std::vector<Rgb8Image> render_tiles{tone_map(ref_tile, ref.exposure)}, error_tiles{error_map(ref_tile, ref_tile, 1.0f)};
+    std::vector<Rgb8Image> render_tiles{tone_map(ref_tile, ref.exposure)},
+        error_tiles{error_map(ref_tile, ref_tile, 1.0f)};
     std::vector<Rgb8Image> worst_tiles, worst_error_tiles;
     std::string worst_text;
     OffsetZeroImages offset_zero;
@@ -558,8 +559,8 @@ struct QualityRun {
 
   // 5: the K sweep (Fig. 6) for the FIS generators: per K the static frames' flicker and error
   // (DESIGN.md §11a.1), and coverage and power at offset 0.
-  void k_sweep(QualityModel& out, QualityResult& result, const ReferenceShading& ref, const OffsetZeroImages& offset_zero,
-               const MipPyramid& light_pdf, double light_flux) const {
+  void k_sweep(QualityModel& out, QualityResult& result, const ReferenceShading& ref,
+               const OffsetZeroImages& offset_zero, const MipPyramid& light_pdf, double light_flux) const {
     std::vector<Rgb8Image> k_tiles;
     for (const auto& name : config.generators) {
       if (!is_fis(name)) continue;
@@ -641,7 +642,8 @@ struct QualityRun {
       FixedVsglGenerator ref(device, reference_vpls(c.rsm, c.meta.light, seq_ref_stride, VplExtent::kTexelFootprint), "sequence_reference");
       const RadianceImage ref_img = shade_camera_view(device, cam, ref.vsgls(), ref.vsgl_count(), seq_stride);
       // One exposure for the whole sequence: the first frame's reference's.
-      if (!flip) flip = FlipSettings{std::log2(static_cast<double>(auto_exposure(ref_img))), kFlipDefaultPixelsPerDegree};
+      if (!flip)
+        flip = FlipSettings{std::log2(static_cast<double>(auto_exposure(ref_img))), kFlipDefaultPixelsPerDegree};
       image = json::array({ref_img.width, ref_img.height});
       ref_acc.add_frame(ref_img, 0.0);
       for (const auto& name : config.generators) {
@@ -677,7 +679,8 @@ struct QualityRun {
     errors.flip_pixels_per_degree = flip->pixels_per_degree;
     out.flicker_animated = std::move(animated);
     out.frames_animated = std::move(errors);
-    say("animated sequence: " + std::to_string(frames.size()) + " frames in " + std::to_string(seconds_since(t0)) + " s");
+    say("animated sequence: " + std::to_string(frames.size()) + " frames in " + std::to_string(seconds_since(t0)) +
+        " s");
   }
 };
 
