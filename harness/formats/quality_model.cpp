@@ -292,6 +292,43 @@ json view_json(const ViewQuality& v) {
   return j;
 }
 
+json animated_json(const QualityModel::Animated& a) {
+  json gens = json::object();
+  for (const auto& [name, f] : a.generators)
+    gens[name] = json{
+        {"weighted_cv", f.weighted_cv}, {"error_cv", f.error_cv}, {"power_relative_stdev", f.power_relative_stdev}};
+  return json{{"sequence", a.sequence},
+              {"scene", a.scene},
+              {"frames", a.frames},
+              {"frame_content_hashes", a.frame_content_hashes},
+              {"gbuffer_stride", a.gbuffer_stride},
+              {"reference_rsm_stride", a.reference_rsm_stride},
+              {"reference_weighted_cv", a.reference_weighted_cv},
+              {"note", a.note},
+              {"generators", gens}};
+}
+
+json k_sweep_json(const std::vector<std::pair<std::string, std::vector<KSweepRow>>>& k_sweep) {
+  json sweep = json::object();
+  for (const auto& [name, rows] : k_sweep) {
+    json out = json::array();
+    for (const KSweepRow& row : rows) {
+      json r{{"K", row.K},
+             {"frames", row.frames},
+             {"weighted_cv", row.weighted_cv},
+             {"power_stdev", row.power_stdev},
+             {"power_relative_stdev", row.power_relative_stdev},
+             {"error", error_json(row.error)},
+             {"coverage", coverage_json(row.coverage)},
+             {"power", power_json(row.power)}};
+      if (!row.per_frame.empty()) r["per_frame"] = series_json(row.per_frame);
+      out.push_back(r);
+    }
+    sweep[name] = out;
+  }
+  return sweep;
+}
+
 }  // namespace
 
 void to_json(json& j, const QualityModel& m) {
@@ -338,39 +375,8 @@ void to_json(json& j, const QualityModel& m) {
                     {"power_relative_stdev", f.power_relative_stdev}};
   j["flicker_static"] =
       json{{"image", m.flicker_image}, {"gbuffer_stride", m.flicker_gbuffer_stride}, {"generators", fs}};
-  if (m.flicker_animated) {
-    const QualityModel::Animated& a = *m.flicker_animated;
-    json gens = json::object();
-    for (const auto& [name, f] : a.generators)
-      gens[name] = json{
-          {"weighted_cv", f.weighted_cv}, {"error_cv", f.error_cv}, {"power_relative_stdev", f.power_relative_stdev}};
-    j["flicker_animated"] = json{{"sequence", a.sequence},
-                                 {"scene", a.scene},
-                                 {"frames", a.frames},
-                                 {"frame_content_hashes", a.frame_content_hashes},
-                                 {"gbuffer_stride", a.gbuffer_stride},
-                                 {"reference_rsm_stride", a.reference_rsm_stride},
-                                 {"reference_weighted_cv", a.reference_weighted_cv},
-                                 {"note", a.note},
-                                 {"generators", gens}};
-  }
-  json sweep = json::object();
-  for (const auto& [name, rows] : m.k_sweep) {
-    json out = json::array();
-    for (const KSweepRow& row : rows)
-      out.push_back(json{{"K", row.K},
-                         {"frames", row.frames},
-                         {"weighted_cv", row.weighted_cv},
-                         {"power_stdev", row.power_stdev},
-                         {"power_relative_stdev", row.power_relative_stdev},
-                         {"error", error_json(row.error)},
-                         {"coverage", coverage_json(row.coverage)},
-                         {"power", power_json(row.power)}});
-    for (std::size_t i = 0; i < rows.size(); ++i)
-      if (!rows[i].per_frame.empty()) out[i]["per_frame"] = series_json(rows[i].per_frame);
-    sweep[name] = out;
-  }
-  j["k_sweep"] = sweep;
+  if (m.flicker_animated) j["flicker_animated"] = animated_json(*m.flicker_animated);
+  j["k_sweep"] = k_sweep_json(m.k_sweep);
   if (m.frames_static) j["frames_static"] = frame_errors_json(*m.frames_static);
   if (m.frames_animated) j["frames_animated"] = frame_errors_json(*m.frames_animated);
   if (m.claims) {
