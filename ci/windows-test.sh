@@ -113,6 +113,8 @@ suite() {  # suite NAME FILTER: vsgl_tests.exe on the tests FILTER selects, in $
   for ((i = 0; i < shards; i++)); do
     local log=build/windows-cross/vsgl_tests-$name-$i.log
     grep -E '^\[ *(PASSED|FAILED|SKIPPED) *\]' "$log" | sed "s/^/  shard $i: /" || true
+    # A child whose Wine start-up died before it ran is started again (tests/child_process.hpp): say so.
+    grep -E '^cannot start .*, try [0-9]+ of' "$log" | sed "s/^/  shard $i: note: /" || true
     [[ $rc -eq 0 ]] || tail -30 "$log"
   done
   echo "ci/windows-test.sh: $name tests $((SECONDS - t)) s"
