@@ -87,11 +87,6 @@ not_here=(
   # Two file names that differ only in case, and a control character in a file name: Windows'
   # file systems refuse both.
   ObjImport.ModelImportChoosesByExtension ObjImport.BadFilesNameTheFileAndLine
-  # The messages name Windows paths ('\' printed as \x5c by printable_text) where these tests
-  # look for the POSIX spelling; the messages themselves are checked in the Linux build.
-  ScenePresets.AMissingModelListsEveryPlaceLookedAndWhereToGetIt
-  GltfImport.ImageViewPastItsBufferIsAnErrorNotAnOverread DashboardPage.ABrokenSweepIsAnErrorNamingIt
-  Table3Markers.GeneratorLinesSplitHostAndShaderAndSkipIncludesOfExcludedRegions
   # The layer check reads the source tree's include lines with POSIX paths: a check of the
   # sources, which the Linux build runs.
   'Layering.*'
