@@ -12,6 +12,9 @@
 #ifdef _WIN32
 #include <windows.h>
 
+#include <cstdio>
+#include <fstream>
+#include <iterator>
 #include <map>
 #include <stdexcept>
 
@@ -121,32 +124,50 @@ inline std::filesystem::path this_executable() {
   return self;
 }
 
+// Under Wine, now and then a child's start-up ends before its program runs a line, and
+// CreateProcessW fails with ERROR_INTERNAL_ERROR (1359): Wine's NtCreateUserProcess reports
+// STATUS_INTERNAL_ERROR for a new process that died before its initialisation was done, without an
+// exit code. Nothing of the program ran, so it is started again, a few times with a pause; what
+// Wine wrote to its output is shown. Any other failure fails at once.
+inline constexpr int kStartTries = 3;
+
 inline ChildProcess start_process(const std::string& executable, const std::vector<std::string>& arguments,
                                   const std::filesystem::path& log, const EnvironmentChanges& environment,
                                   bool suspended) {
-  SECURITY_ATTRIBUTES inherit{sizeof(SECURITY_ATTRIBUTES), nullptr, TRUE};
-  HANDLE out = CreateFileW(log.wstring().c_str(), GENERIC_WRITE, FILE_SHARE_READ | FILE_SHARE_WRITE | FILE_SHARE_DELETE,
-                           &inherit, CREATE_ALWAYS, FILE_ATTRIBUTE_NORMAL, nullptr);
-  if (out == INVALID_HANDLE_VALUE) throw std::runtime_error("cannot create " + log.string());
   // A path such as /work/x names \work\x on the current drive; the program's name keeps its form.
   std::wstring command_line = detail::quoted_argument(path_from_utf8(executable).make_preferred().wstring());
   for (const auto& a : arguments) command_line += L" " + detail::quoted_argument(detail::wide(a));
   std::wstring env = detail::environment_block(environment);
-  STARTUPINFOW startup{};
-  startup.cb = sizeof startup;
-  startup.dwFlags = STARTF_USESTDHANDLES;
-  startup.hStdInput = GetStdHandle(STD_INPUT_HANDLE);
-  startup.hStdOutput = out;
-  startup.hStdError = out;
-  PROCESS_INFORMATION info{};
-  const BOOL started = CreateProcessW(nullptr, command_line.data(), nullptr, nullptr, TRUE,
-                                      CREATE_UNICODE_ENVIRONMENT | (suspended ? CREATE_SUSPENDED : 0), env.data(),
-                                      nullptr, &startup, &info);
-  const DWORD error = GetLastError();
-  CloseHandle(out);
-  if (!started) throw std::runtime_error("cannot start " + executable + " (error " + std::to_string(error) + ")");
-  CloseHandle(info.hThread);
-  return ChildProcess(info.hProcess, info.dwProcessId);
+  for (int attempt = 1;; ++attempt) {
+    SECURITY_ATTRIBUTES inherit{sizeof(SECURITY_ATTRIBUTES), nullptr, TRUE};
+    HANDLE out =
+        CreateFileW(log.wstring().c_str(), GENERIC_WRITE, FILE_SHARE_READ | FILE_SHARE_WRITE | FILE_SHARE_DELETE,
+                    &inherit, CREATE_ALWAYS, FILE_ATTRIBUTE_NORMAL, nullptr);
+    if (out == INVALID_HANDLE_VALUE) throw std::runtime_error("cannot create " + log.string());
+    STARTUPINFOW startup{};
+    startup.cb = sizeof startup;
+    startup.dwFlags = STARTF_USESTDHANDLES;
+    startup.hStdInput = GetStdHandle(STD_INPUT_HANDLE);
+    startup.hStdOutput = out;
+    startup.hStdError = out;
+    PROCESS_INFORMATION info{};
+    const BOOL started = CreateProcessW(nullptr, command_line.data(), nullptr, nullptr, TRUE,
+                                        CREATE_UNICODE_ENVIRONMENT | (suspended ? CREATE_SUSPENDED : 0), env.data(),
+                                        nullptr, &startup, &info);
+    const DWORD error = GetLastError();
+    CloseHandle(out);
+    if (started) {
+      CloseHandle(info.hThread);
+      return ChildProcess(info.hProcess, info.dwProcessId);
+    }
+    const std::string failure = "cannot start " + executable + " (error " + std::to_string(error) + ")";
+    if (error != ERROR_INTERNAL_ERROR) throw std::runtime_error(failure);
+    std::ifstream written(log, std::ios::binary);  // what Wine's start-up wrote before it ended
+    const std::string said{std::istreambuf_iterator<char>(written), std::istreambuf_iterator<char>()};
+    std::fprintf(stderr, "%s, try %d of %d; its output: '%s'\n", failure.c_str(), attempt, kStartTries, said.c_str());
+    if (attempt == kStartTries) throw std::runtime_error(failure + " " + std::to_string(kStartTries) + " times");
+    Sleep(200 * attempt);
+  }
 }
 
 }  // namespace detail

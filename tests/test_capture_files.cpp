@@ -277,21 +277,21 @@ TEST(CaptureIo, RsmWithPdfWhileSidecarSaysNoneIsRejected) {
 TEST(CaptureIo, MissingDirectoryIsRejected) {
   TempDir temp;
   const fs::path dir = temp.path() / "no-such-capture";
-  expect_load_fails(dir, {dir.string(), "does not exist"});
+  expect_load_fails(dir, {dir.generic_string(), "does not exist"});
 }
 
 TEST(CaptureIo, MissingSidecarIsRejected) {
   TempDir temp;
   write_capture(make_capture(), temp.path());
   fs::remove(temp.path() / "capture.json");
-  expect_load_fails(temp.path(), {(temp.path() / "capture.json").string(), "missing"});
+  expect_load_fails(temp.path(), {(temp.path() / "capture.json").generic_string(), "missing"});
 }
 
 TEST(CaptureIo, GarbageSidecarIsRejected) {
   TempDir temp;
   write_capture(make_capture(), temp.path());
   write_text_atomic(temp.path() / "capture.json", std::string("\x7f\x45garbage{]\x01", 11));
-  expect_load_fails(temp.path(), {(temp.path() / "capture.json").string(), "not valid JSON"});
+  expect_load_fails(temp.path(), {(temp.path() / "capture.json").generic_string(), "not valid JSON"});
 }
 
 TEST(CaptureIo, SidecarMissingKeyOrWrongTypeIsNamed) {
@@ -341,7 +341,7 @@ TEST(CaptureIo, MissingGbufferIsRejected) {
   TempDir temp;
   write_capture(make_capture(), temp.path());
   fs::remove(temp.path() / "gbuffer.exr");
-  expect_load_fails(temp.path(), {(temp.path() / "gbuffer.exr").string(), "missing EXR"});
+  expect_load_fails(temp.path(), {(temp.path() / "gbuffer.exr").generic_string(), "missing EXR"});
 }
 
 TEST(CaptureIo, TruncatedRsmIsRejected) {
@@ -349,7 +349,7 @@ TEST(CaptureIo, TruncatedRsmIsRejected) {
   write_capture(make_capture(), temp.path());
   const fs::path rsm = temp.path() / "rsm.exr";
   fs::resize_file(rsm, fs::file_size(rsm) / 2);
-  expect_load_fails(temp.path(), {rsm.string(), "truncated"});
+  expect_load_fails(temp.path(), {rsm.generic_string(), "truncated"});
 }
 
 // Cut anywhere (header, offset table, pixel data, last byte), the file fails at load.
@@ -365,7 +365,7 @@ TEST(CaptureIo, ExrTruncatedAnywhereIsRejected) {
                           size / 4, size - 1000, size - 1}) {
     SCOPED_TRACE("truncated to " + std::to_string(cut) + " of " + std::to_string(size) + " bytes");
     write_file_atomic(gbuffer, std::span<const char>(original.data(), cut));
-    expect_load_fails(temp.path(), {gbuffer.string(), "EXR"});
+    expect_load_fails(temp.path(), {gbuffer.generic_string(), "EXR"});
   }
 }
 
@@ -374,7 +374,7 @@ TEST(CaptureIo, GarbageExrIsRejected) {
   write_capture(make_capture(), temp.path());
   const fs::path gbuffer = temp.path() / "gbuffer.exr";
   write_text_atomic(gbuffer, "this is not an EXR file");
-  expect_load_fails(temp.path(), {gbuffer.string(), "corrupt"});
+  expect_load_fails(temp.path(), {gbuffer.generic_string(), "corrupt"});
 }
 
 TEST(CaptureIo, SizeDifferentFromSidecarIsRejected) {
@@ -518,12 +518,12 @@ TEST(CaptureIo, AtomicWriterReplacesAndLeavesNoTemporaries) {
   // A rename that fails (a directory is in the way) reports the path and removes the temporary.
   const fs::path blocked = temp.path() / "blocked";
   fs::create_directories(blocked / "inside");
-  expect_input_error([&] { write_text_atomic(blocked, "x"); }, {blocked.string(), "renaming"});
+  expect_input_error([&] { write_text_atomic(blocked, "x"); }, {blocked.generic_string(), "renaming"});
   EXPECT_EQ(file_names(temp.path()), (std::set<std::string>{"blocked", "result.json"}));
 
   // A directory that does not exist: nothing to clean up, still a clear error.
   const fs::path nowhere = temp.path() / "missing" / "out.json";
-  expect_input_error([&] { write_text_atomic(nowhere, "x"); }, {nowhere.string()});
+  expect_input_error([&] { write_text_atomic(nowhere, "x"); }, {nowhere.generic_string()});
 }
 
 

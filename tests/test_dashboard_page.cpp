@@ -220,10 +220,10 @@ TEST(DashboardPage, ABrokenSweepIsAnErrorNamingIt) {
   sweeps[1].second["fits"][0].erase("verdict");
   make_results(dir.path(), sweeps, false);
   const std::string m = test::input_error([&] { find_sweep_runs(dir.path()); });
-  EXPECT_NE(m.find((dir / "b/sweep.json").string()), std::string::npos) << m;
+  EXPECT_NE(m.find((dir / "b/sweep.json").generic_string()), std::string::npos) << m;
   EXPECT_NE(m.find("/fits/0/verdict: missing field"), std::string::npos) << m;
   std::ofstream(dir / "b/sweep.json") << "{";
-  EXPECT_NE(test::input_error([&] { find_sweep_runs(dir.path()); }).find((dir / "b/sweep.json").string()),
+  EXPECT_NE(test::input_error([&] { find_sweep_runs(dir.path()); }).find((dir / "b/sweep.json").generic_string()),
             std::string::npos);
   const auto made = test::run_cli("dashboard " + dir.path().string() + " --out " + (dir / "site").string());
   EXPECT_EQ(made.exit_code, 3) << made.output;

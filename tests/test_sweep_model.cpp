@@ -286,7 +286,7 @@ TEST(SweepModel, ReadsAFileAndNamesItWhenItCannot) {
   EXPECT_EQ(read_sweep_file(dir / "sweep.json").points.size(), 3u);
   std::ofstream(dir / "broken.json") << "{\"kind\": \"sweep\", ";
   const std::string m = test::input_error([&] { read_sweep_file(dir / "broken.json"); });
-  EXPECT_NE(m.find((dir / "broken.json").string()), std::string::npos) << m;
+  EXPECT_NE(m.find((dir / "broken.json").generic_string()), std::string::npos) << m;
   EXPECT_NE(m.find("not valid JSON"), std::string::npos) << m;
 }
 

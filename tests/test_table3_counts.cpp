@@ -102,11 +102,12 @@ TEST(Table3Markers, GeneratorLinesSplitHostAndShaderAndSkipIncludesOfExcludedReg
   const test::TempDir temp("table3_regions");
   const fs::path& root = temp.path();
   fs::create_directories(root / "kernels/include");
-  std::ofstream(root / "host.cpp") << "int f();\n// table3: begin b\nint g();\n// table3: end b\n";
-  std::ofstream(root / "kernels/k.comp")
-      << "#version 450\n// table3: begin b\n#include \"unused.glsl\"\n// table3: end b\n"
-      << "#include \"used.glsl\"\nvoid main() {}\n";
-  std::ofstream(root / "kernels/include/used.glsl") << "float u;\n";
+  // Binary: lines end in "\n" as in the checkout, on Windows too (text mode would write "\r\n").
+  const auto write = [](const fs::path& file) { return std::ofstream(file, std::ios::binary); };
+  write(root / "host.cpp") << "int f();\n// table3: begin b\nint g();\n// table3: end b\n";
+  write(root / "kernels/k.comp") << "#version 450\n// table3: begin b\n#include \"unused.glsl\"\n// table3: end b\n"
+                                 << "#include \"used.glsl\"\nvoid main() {}\n";
+  write(root / "kernels/include/used.glsl") << "float u;\n";
   // unused.glsl does not exist: an excluded #include is never read.
   const GeneratorLines lines = count_generator_lines(SourceSet{{"host.cpp"}, {"kernels/k.comp"}, kRegions}, root);
   EXPECT_EQ(lines.host, 1u);

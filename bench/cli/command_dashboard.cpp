@@ -11,6 +11,7 @@
 
 #include "bench/cli/commands.hpp"
 #include "bench/cli/option_types.hpp"
+#include "harness/core/path_text.hpp"
 #include "harness/core/platform_path.hpp"
 #include "harness/core/atomic_file.hpp"
 #include "harness/compare/dashboard_page.hpp"
@@ -51,7 +52,7 @@ Command add_dashboard_command(CLI::App& parent) {
             std::filesystem::create_directories(path_from_utf8(o->out));
             const std::filesystem::path page = path_from_utf8(o->out) / "index.html";
             write_text_atomic(page, dashboard_html(runs, paper, o->results, dashboard_generators(), sweeps));
-            std::fprintf(stderr, "wrote %s (%zu table runs, %zu sweep files)\n", page.string().c_str(), runs.size(),
+            std::fprintf(stderr, "wrote %s (%zu table runs, %zu sweep files)\n", path_text(page).c_str(), runs.size(),
                          sweeps.size());
             return 0;
           }};

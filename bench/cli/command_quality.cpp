@@ -10,6 +10,7 @@
 #include "bench/cli/commands.hpp"
 #include "bench/cli/generator_options.hpp"
 #include "bench/cli/gpu_session.hpp"
+#include "harness/core/path_text.hpp"
 #include "harness/core/platform_path.hpp"
 #include "harness/core/atomic_file.hpp"
 #include "harness/capture/capture.hpp"
@@ -52,12 +53,12 @@ int run_quality_command(QualityOptions& o) {
   const std::filesystem::path out_dir = out_root / capture.meta.scene;
   std::error_code ec;
   std::filesystem::create_directories(out_dir, ec);
-  if (ec) throw InputError(out_dir.string() + ": cannot create the output directory (" + ec.message() + ")");
+  if (ec) throw InputError(path_text(out_dir) + ": cannot create the output directory (" + ec.message() + ")");
   for (const auto& p : result.pictures) write_png_atomic(out_dir / p.file, p.image);
   write_text_atomic(out_dir / "quality.md", markdown);
   write_text_atomic(out_dir / "quality.json", result.json.dump(1) + "\n");  // last: it names the pictures' run
   std::fputs(markdown.c_str(), stdout);
-  std::printf("\nwrote %s (quality.json, quality.md, %zu PNGs)\n", out_dir.string().c_str(), result.pictures.size());
+  std::printf("\nwrote %s (quality.json, quality.md, %zu PNGs)\n", path_text(out_dir).c_str(), result.pictures.size());
   return session.finish(0);
 }
 

@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "bench/cli/option_types.hpp"
+#include "harness/core/path_text.hpp"
 #include "harness/scene/brsm_pdf.hpp"
 
 #include "bench/cli/commands.hpp"
@@ -89,7 +90,7 @@ void print_recorded(const std::string& name, const std::filesystem::path& dir, u
   std::printf(
       "recorded %s frame %u/%u -> %s  (G-buffer %ux%u, RSM %u^2; render + BRSM PDF %.0f ms, of which "
       "BRSM PDF %.1f ms GPU from %u camera VSGLs on the %s pyramid; write %.0f ms; %.1f MiB on disk)\n",
-      name.c_str(), f + 1, frames, dir.string().c_str(), sizes.gbuffer_width, sizes.gbuffer_height, sizes.rsm_size,
+      name.c_str(), f + 1, frames, path_text(dir).c_str(), sizes.gbuffer_width, sizes.gbuffer_height, sizes.rsm_size,
       r.render_and_brsm_ms, r.brsm_gpu_ms, r.brsm_camera_vsgls, path ? pyramid_path_name(*path) : "unrecorded",
       r.write_ms, static_cast<double>(directory_bytes(dir)) / (1 << 20));
 }

@@ -13,6 +13,7 @@
 #include "bench/cli/gpu_session.hpp"
 #include "harness/capture/capture.hpp"
 #include "harness/capture/capture_files.hpp"
+#include "harness/core/path_text.hpp"
 #include "harness/vk/command_stream.hpp"
 #include "harness/generators/device_view.hpp"
 #include "harness/core/error.hpp"
@@ -78,7 +79,7 @@ int run_shade(ShadeOptions& o) {
 
   std::error_code ec;
   std::filesystem::create_directories(out_dir, ec);
-  if (ec) throw InputError(out_dir.string() + ": cannot create the output directory (" + ec.message() + ")");
+  if (ec) throw InputError(path_text(out_dir) + ": cannot create the output directory (" + ec.message() + ")");
   std::printf("shading %s (G-buffer %ux%u, stride %u -> %ux%u) with %u light-view VSGLs per generator; "
               "no visibility (indirect light only); exposure %g%s\n",
               capture_arg->c_str(), capture.gbuffer.width, capture.gbuffer.height, stride, images.front().width,
@@ -88,7 +89,7 @@ int run_shade(ShadeOptions& o) {
   for (std::size_t i = 0; i < generators.size(); ++i) {
     const auto path = out_dir / ("shade_" + capture.meta.scene + "_" + generators[i]->name + ".png");
     write_png_atomic(path, pictures[i]);
-    std::printf("wrote %s\n", path.string().c_str());
+    std::printf("wrote %s\n", path_text(path).c_str());
   }
   return session.finish(0);
 }

@@ -14,6 +14,7 @@
 #include "bench/cli/gpu_session.hpp"
 #include "bench/cli/option_types.hpp"
 #include "harness/core/error.hpp"
+#include "harness/core/path_text.hpp"
 #include "harness/core/platform_path.hpp"
 #include "harness/core/platform_console.hpp"
 #include "harness/generators/generator_registry.hpp"
@@ -106,7 +107,7 @@ int run_sweep_command(const SweepCommandOptions& c) {
   if (line_open) std::fputc('\n', stderr);
   std::printf("%s\n", outcome.markdown.c_str());
   std::fflush(stdout);
-  for (const auto& path : outcome.written) std::fprintf(stderr, "wrote %s\n", path.string().c_str());
+  for (const auto& path : outcome.written) std::fprintf(stderr, "wrote %s\n", path_text(path).c_str());
   return session.finish(0);
 }
 

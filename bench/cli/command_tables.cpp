@@ -10,6 +10,7 @@
 #include "bench/cli/generator_options.hpp"
 #include "bench/cli/timed_generators.hpp"
 #include "bench/cli/timing_flags.hpp"
+#include "harness/core/path_text.hpp"
 #include "harness/generators/testing/debug_slowdown.hpp"
 #include "bench/cli/gpu_session.hpp"
 #include "harness/core/error.hpp"
@@ -111,7 +112,7 @@ int run_tables_command(const TablesCommandOptions& c) {
   if (line_open) std::fputc('\n', stderr);
   for (const auto& md : outcome.markdown) std::printf("%s\n", md.c_str());
   std::fflush(stdout);
-  for (const auto& path : outcome.written) std::fprintf(stderr, "wrote %s\n", path.string().c_str());
+  for (const auto& path : outcome.written) std::fprintf(stderr, "wrote %s\n", path_text(path).c_str());
   return session.finish(0);
 }
 

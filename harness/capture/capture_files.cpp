@@ -10,6 +10,7 @@
 #include "harness/capture/exr_io.hpp"
 #include "harness/core/atomic_file.hpp"
 #include "harness/core/error.hpp"
+#include "harness/core/path_text.hpp"
 #include "harness/core/printable_text.hpp"
 #include "harness/core/text_format.hpp"
 
@@ -61,7 +62,7 @@ std::vector<char> encode_view(const ViewImage& view, const std::string& where) {
 
 ViewImage read_view_file(const std::filesystem::path& path, ViewKind kind,
                          const ViewRecord& record) {
-  const std::string where = path.string();
+  const std::string where = path_text(path);
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) {
     throw InputError(where + ": missing EXR file (" + kSidecarName + " lists it)");
@@ -179,7 +180,7 @@ void check_hashes(const ViewImage& view, const ViewRecord& record, const std::st
 
 ViewImage load_view(const std::filesystem::path& dir, ViewKind kind, const ViewRecord& record) {
   const std::filesystem::path path = dir / record.file;
-  const std::string where = path.string();
+  const std::string where = path_text(path);
   ViewImage view = read_view_file(path, kind, record);
   check_finite(view, where);
   check_geometry(view, where);
@@ -194,13 +195,13 @@ CaptureMeta write_capture(const Capture& capture, const std::filesystem::path& d
   const std::filesystem::path gbuffer_path = dir / view_file_name(ViewKind::kCamera);
   const std::filesystem::path rsm_path = dir / view_file_name(ViewKind::kLight);
   const std::filesystem::path sidecar_path = dir / kSidecarName;
-  check_view_for_writing(capture.gbuffer, ViewKind::kCamera, gbuffer_path.string());
-  check_view_for_writing(capture.rsm, ViewKind::kLight, rsm_path.string());
+  check_view_for_writing(capture.gbuffer, ViewKind::kCamera, path_text(gbuffer_path));
+  check_view_for_writing(capture.rsm, ViewKind::kLight, path_text(rsm_path));
 
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec || !std::filesystem::is_directory(dir)) {
-    throw InputError(dir.string() + ": cannot create the capture directory: " +
+    throw InputError(path_text(dir) + ": cannot create the capture directory: " +
                      (ec ? ec.message() : std::string("a file of that name is in the way")));
   }
 
@@ -215,13 +216,13 @@ CaptureMeta write_capture(const Capture& capture, const std::filesystem::path& d
   }
 
   // The images first, the sidecar last: the sidecar's rename commits the capture.
-  write_file_atomic(gbuffer_path, encode_view(capture.gbuffer, gbuffer_path.string()));
-  write_file_atomic(rsm_path, encode_view(capture.rsm, rsm_path.string()));
+  write_file_atomic(gbuffer_path, encode_view(capture.gbuffer, path_text(gbuffer_path)));
+  write_file_atomic(rsm_path, encode_view(capture.rsm, path_text(rsm_path)));
   std::string sidecar;
   try {
     sidecar = sidecar_text(meta, capture);
   } catch (const nlohmann::json::exception& e) {  // e.g. a scene or device name that is not UTF-8
-    throw InputError(sidecar_path.string() + ": cannot write the capture sidecar: " + e.what());
+    throw InputError(path_text(sidecar_path) + ": cannot write the capture sidecar: " + e.what());
   }
   write_text_atomic(sidecar_path, sidecar);
   return meta;
@@ -230,10 +231,10 @@ CaptureMeta write_capture(const Capture& capture, const std::filesystem::path& d
 Capture load_capture(const std::filesystem::path& dir) {
   std::error_code ec;
   if (!std::filesystem::exists(dir, ec)) {
-    throw InputError(dir.string() + ": capture directory does not exist");
+    throw InputError(path_text(dir) + ": capture directory does not exist");
   }
   if (!std::filesystem::is_directory(dir, ec)) {
-    throw InputError(dir.string() + ": not a directory; a capture is a directory");
+    throw InputError(path_text(dir) + ": not a directory; a capture is a directory");
   }
   const std::filesystem::path sidecar_path = dir / kSidecarName;
   const SidecarContents sidecar = read_sidecar(sidecar_path);

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "harness/core/error.hpp"
+#include "harness/core/path_text.hpp"
 #include "harness/core/text_format.hpp"
 #include "harness/core/json_reader.hpp"
 #include "harness/core/printable_text.hpp"
@@ -149,7 +150,7 @@ glm::mat4 read_mat4(const JsonReader& reader, const json& object, const std::str
 }
 
 json parse_sidecar(const std::filesystem::path& path) {
-  const std::string where = path.string();
+  const std::string where = path_text(path);
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) {
     throw InputError(where + ": missing capture sidecar (" + kSidecarName + " is not there)");
@@ -340,7 +341,7 @@ ViewRecord read_view_record(const JsonReader& reader, const json& doc, ViewKind 
 
 SidecarContents read_sidecar(const std::filesystem::path& path) {
   const json doc = parse_sidecar(path);
-  const JsonReader reader(path.string(), JsonPathStyle::kDottedKey);
+  const JsonReader reader(path_text(path), JsonPathStyle::kDottedKey);
   SidecarContents out;
   out.meta = read_meta(reader, doc);
   out.gbuffer = read_view_record(reader, doc, ViewKind::kCamera);

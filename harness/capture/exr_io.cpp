@@ -20,6 +20,7 @@
 
 #include "harness/core/atomic_file.hpp"
 #include "harness/core/error.hpp"
+#include "harness/core/path_text.hpp"
 #include "harness/core/printable_text.hpp"
 
 namespace vsgl {
@@ -183,7 +184,7 @@ std::vector<char> encode_exr(uint32_t width, uint32_t height,
 
 void write_exr(const std::filesystem::path& path, uint32_t width, uint32_t height,
                std::span<const ExrChannelToWrite> channels) {
-  const std::vector<char> bytes = encode_exr(width, height, channels, path.string());
+  const std::vector<char> bytes = encode_exr(width, height, channels, path_text(path));
   write_file_atomic(path, bytes);
 }
 
@@ -192,7 +193,7 @@ void write_exr(const std::filesystem::path& path, uint32_t width, uint32_t heigh
 // top of 3.9 s, ASan build) and, over 394 fuzzed EXR inputs, flagged none that this reader
 // accepted (this reader refused 2 that it passed).
 ExrImage read_exr(const std::filesystem::path& path, const ExrSizeCheck& check_size) {
-  const std::string where = path.string();
+  const std::string where = path_text(path);
   ExrImage image;
   use_all_cores_for_exr();
   try {

@@ -12,6 +12,7 @@
 #include "harness/compare/dashboard_svg.hpp"
 #include "harness/compare/svg_markup.hpp"
 #include "harness/core/error.hpp"
+#include "harness/core/path_text.hpp"
 
 namespace vsgl {
 namespace {
@@ -157,7 +158,7 @@ std::string total_series(const std::vector<const BenchRun*>& runs, int table, co
 }  // namespace
 
 std::vector<BenchRun> find_table_runs(const std::filesystem::path& results_dir) {
-  if (!std::filesystem::is_directory(results_dir)) throw InputError(results_dir.string() + ": not a directory");
+  if (!std::filesystem::is_directory(results_dir)) throw InputError(path_text(results_dir) + ": not a directory");
   std::vector<BenchRun> runs;
   for (const auto& e : std::filesystem::recursive_directory_iterator(results_dir)) {
     const std::string name = e.path().filename().string();

@@ -7,6 +7,7 @@
 #include "harness/compare/loglog_plot.hpp"
 #include "harness/compare/svg_markup.hpp"
 #include "harness/core/error.hpp"
+#include "harness/core/path_text.hpp"
 #include "harness/core/text_format.hpp"
 
 namespace vsgl {
@@ -204,7 +205,7 @@ std::string sweep_block(const SweepRun& run, std::size_t number) {
 }  // namespace
 
 std::vector<SweepRun> find_sweep_runs(const std::filesystem::path& results_dir) {
-  if (!std::filesystem::is_directory(results_dir)) throw InputError(results_dir.string() + ": not a directory");
+  if (!std::filesystem::is_directory(results_dir)) throw InputError(path_text(results_dir) + ": not a directory");
   std::vector<SweepRun> runs;
   for (const auto& e : std::filesystem::recursive_directory_iterator(results_dir)) {
     if (!e.is_regular_file() || e.path().filename() != "sweep.json") continue;

@@ -8,6 +8,7 @@
 
 #include "harness/core/error.hpp"
 #include "harness/core/json_reader.hpp"
+#include "harness/core/path_text.hpp"
 #include "harness/core/statistics.hpp"
 #include "harness/core/printable_text.hpp"
 #include "harness/formats/table_model.hpp"
@@ -198,7 +199,7 @@ BenchRun parse_bench_run(const nlohmann::ordered_json& doc, const std::string& w
 }
 
 BenchRun load_bench_run(const std::filesystem::path& path) {
-  return parse_bench_run(read_json_file(path, "the run"), path.string());
+  return parse_bench_run(read_json_file(path, "the run"), path_text(path));
 }
 
 BenchRun merge_bench_runs(const std::vector<BenchRun>& runs) {
@@ -232,7 +233,7 @@ BenchRun load_bench_run_path(const std::filesystem::path& file_or_dir) {
     const std::string name = e.path().filename().string();
     if (e.is_regular_file() && is_table_file_name(name)) files.push_back(e.path());
   }
-  if (files.empty()) throw InputError(file_or_dir.string() + ": a directory without tableN.json");
+  if (files.empty()) throw InputError(path_text(file_or_dir) + ": a directory without tableN.json");
   std::sort(files.begin(), files.end());
   std::vector<BenchRun> runs;
   for (const auto& f : files) runs.push_back(load_bench_run(f));

@@ -6,6 +6,7 @@
 #include <system_error>
 
 #include "harness/core/error.hpp"
+#include "harness/core/path_text.hpp"
 #include "harness/core/platform_file.hpp"
 #include "harness/core/platform_process.hpp"
 #include "harness/core/test_pause.hpp"
@@ -48,23 +49,23 @@ void remove_stale_temporaries(const std::filesystem::path& path) {
 }
 
 [[noreturn]] void fail(const std::filesystem::path& path, const std::string& what, std::error_code error) {
-  throw InputError(path.string() + ": cannot write file: " + what + ": " + error.message());
+  throw InputError(path_text(path) + ": cannot write file: " + what + ": " + error.message());
 }
 
 // Writes and flushes the temporary file; on any failure the caller removes it.
 void write_temporary(const std::filesystem::path& target, const std::filesystem::path& temporary,
                      std::span<const char> bytes) {
   NewFile file;
-  if (auto ec = file.create(temporary)) fail(target, "creating temporary " + temporary.string(), ec);
+  if (auto ec = file.create(temporary)) fail(target, "creating temporary " + path_text(temporary), ec);
   // TEST-ONLY (harness/core/test_pause.hpp): stop with half of the bytes written.
   const std::size_t first = test_pause_wanted("partial", target) ? bytes.size() / 2 : bytes.size();
-  if (auto ec = file.write(bytes.first(first))) fail(target, "writing temporary " + temporary.string(), ec);
+  if (auto ec = file.write(bytes.first(first))) fail(target, "writing temporary " + path_text(temporary), ec);
   if (first < bytes.size()) {
     test_pause_point("partial", target);
-    if (auto ec = file.write(bytes.subspan(first))) fail(target, "writing temporary " + temporary.string(), ec);
+    if (auto ec = file.write(bytes.subspan(first))) fail(target, "writing temporary " + path_text(temporary), ec);
   }
-  if (auto ec = file.flush_to_disk()) fail(target, "flushing temporary " + temporary.string(), ec);
-  if (auto ec = file.close()) fail(target, "closing temporary " + temporary.string(), ec);
+  if (auto ec = file.flush_to_disk()) fail(target, "flushing temporary " + path_text(temporary), ec);
+  if (auto ec = file.close()) fail(target, "closing temporary " + path_text(temporary), ec);
 }
 
 }  // namespace
@@ -77,7 +78,7 @@ void write_file_atomic(const std::filesystem::path& path, std::span<const char> 
     write_temporary(path, temporary, bytes);
     test_pause_point("complete", path);  // TEST-ONLY (harness/core/test_pause.hpp)
     if (auto ec = replace_file(temporary, path)) {
-      fail(path, "renaming temporary " + temporary.string() + " onto it", ec);
+      fail(path, "renaming temporary " + path_text(temporary) + " onto it", ec);
     }
   } catch (...) {
     std::error_code ignored;

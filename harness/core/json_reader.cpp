@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "harness/core/error.hpp"
+#include "harness/core/path_text.hpp"
 #include "harness/core/printable_text.hpp"
 #include "harness/core/text_file.hpp"
 #include "harness/core/text_format.hpp"
@@ -12,7 +13,7 @@
 namespace vsgl {
 
 nlohmann::ordered_json read_json_file(const std::filesystem::path& path, const std::string& what, const std::string& hint) {
-  return parse_json_text(read_text_file(path, what, hint), path.string(), what);
+  return parse_json_text(read_text_file(path, what, hint), path_text(path), what);
 }
 
 nlohmann::ordered_json parse_json_text(std::string_view text, const std::string& name, const std::string& what) {

@@ -6,6 +6,7 @@
 #include <set>
 #include <sstream>
 
+#include "harness/core/path_text.hpp"
 #include "harness/core/embedded_files.hpp"
 #include "harness/core/error.hpp"
 
@@ -170,7 +171,7 @@ SourceTree checkout_source_tree(const std::filesystem::path& dir) {
                       ss << in.rdbuf();
                       return ss.str();
                     },
-                    dir.string()};
+                    path_text(dir)};
 }
 
 SourceTree built_in_source_tree() {

@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "harness/core/path_text.hpp"
 #include "harness/core/embedded_files.hpp"
 #include "harness/core/json_reader.hpp"
 #include "harness/core/json_schema_subset.hpp"
@@ -178,7 +179,7 @@ DevicesDocument devices_from_json(const nlohmann::json& doc, const std::string& 
 }
 
 DevicesDocument read_devices_file(const std::filesystem::path& path) {
-  return devices_from_json(json(read_json_file(path, "the devices document")), path.string());
+  return devices_from_json(json(read_json_file(path, "the devices document")), path_text(path));
 }
 
 std::string devices_file_text(const DevicesDocument& doc) {

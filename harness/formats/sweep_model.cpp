@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "harness/core/path_text.hpp"
 #include "harness/core/error.hpp"
 #include "harness/core/json_reader.hpp"
 #include "harness/core/printable_text.hpp"
@@ -578,7 +579,7 @@ SweepModel read_sweep_model(const nlohmann::ordered_json& doc, const std::string
 }
 
 SweepModel read_sweep_file(const std::filesystem::path& path) {
-  return read_sweep_model(read_json_file(path, "the sweep JSON"), path.string());
+  return read_sweep_model(read_json_file(path, "the sweep JSON"), path_text(path));
 }
 
 ojson to_json(const SweepModel& m) {

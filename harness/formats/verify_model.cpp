@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "harness/core/path_text.hpp"
 #include "harness/core/embedded_files.hpp"
 #include "harness/core/json_reader.hpp"
 #include "harness/core/json_schema_subset.hpp"
@@ -77,7 +78,7 @@ VerifyDocument verify_from_json(const nlohmann::json& doc, const std::string& wh
 }
 
 VerifyDocument read_verify_file(const std::filesystem::path& path) {
-  return verify_from_json(json(read_json_file(path, "the verify document")), path.string());
+  return verify_from_json(json(read_json_file(path, "the verify document")), path_text(path));
 }
 
 std::string verify_file_text(const VerifyDocument& doc) {

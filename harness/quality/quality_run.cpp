@@ -7,6 +7,7 @@
 #include <map>
 #include <memory>
 
+#include "harness/core/path_text.hpp"
 #include "harness/capture/capture_files.hpp"
 #include "harness/vk/buffer.hpp"
 #include "harness/scene/capture_provisioning.hpp"
@@ -740,7 +741,8 @@ std::vector<std::filesystem::path> sequence_frames(const std::filesystem::path& 
     frames.push_back(p);
   }
   if (frames.size() < 2)
-    throw InputError(dir.string() + ": not a recorded sequence (need frame_0000, frame_0001, ... with capture.json; "
+    throw InputError(path_text(dir) +
+                     ": not a recorded sequence (need frame_0000, frame_0001, ... with capture.json; "
                      "record one with `vsgl-bench record --frames F --out DIR`)");
   return frames;
 }

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "harness/core/path_text.hpp"
 #include "harness/core/error.hpp"
 #include "harness/core/json_reader.hpp"
 #include "harness/core/printable_text.hpp"
@@ -90,7 +91,7 @@ void check_paper_tables(const json& doc, const std::string& what) {
 
 nlohmann::json load_paper_tables(const std::filesystem::path& path) {
   nlohmann::json doc = read_json_file(path, "the paper's tables", " (use --paper FILE)");
-  check_paper_tables(doc, path.string());
+  check_paper_tables(doc, path_text(path));
   return doc;
 }
 

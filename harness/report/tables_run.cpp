@@ -4,6 +4,7 @@
 #include <map>
 #include <set>
 
+#include "harness/core/path_text.hpp"
 #include "harness/capture/capture_sidecar.hpp"
 #include "harness/core/atomic_file.hpp"
 #include "harness/core/error.hpp"
@@ -119,11 +120,11 @@ std::vector<TableInput> table_inputs(const TablesOptions& o) {
     const int table = paper_table_of(meta);
     const std::string stem = table_file_stem(table, meta.scene);
     if (table == 0 && is_reserved_stem(stem))
-      throw UsageError("capture " + dir.string() + ": its scene is named '" + stem +
+      throw UsageError("capture " + path_text(dir) + ": its scene is named '" + stem +
                        "', which is the name of a paper table's output; rename the file it was recorded from");
     const auto [it, fresh] = stems.emplace(stem, dir);
     if (!fresh)
-      throw UsageError("captures " + it->second.string() + " and " + dir.string() + " are both of scene '" +
+      throw UsageError("captures " + path_text(it->second) + " and " + path_text(dir) + " are both of scene '" +
                        meta.scene + "': their results would both be named " + stem + " (" + stem + ".json, " + stem +
                        "/... benchmarks); time them in separate runs");
     out.push_back(TableInput{dir, table, false});
@@ -160,8 +161,8 @@ ProvidedCapture provide_table_capture(Device& device, const TableScene& scene, c
   if (!scene.note.empty()) say(scene.note);
   ProvidedCapture provided = provide_capture(device, load_named_scene(scene.scene, library), sizes, dir);
   if (!provided.stale_because.empty())
-    say("re-recorded the stale capture " + dir.string() + ": " + provided.stale_because);
-  else if (provided.recorded) say("recorded the missing capture " + dir.string());
+    say("re-recorded the stale capture " + path_text(dir) + ": " + provided.stale_because);
+  else if (provided.recorded) say("recorded the missing capture " + path_text(dir));
   return provided;
 }
 

@@ -2,6 +2,7 @@
 
 #include <string_view>
 
+#include "harness/core/path_text.hpp"
 #include "harness/core/error.hpp"
 #include "harness/core/platform_path.hpp"
 #include "harness/core/printable_text.hpp"
@@ -30,7 +31,7 @@ FoundModel find_preset_model(const ScenePreset& preset, const AssetSearch& searc
       const std::filesystem::path file = d.dir / candidate;
       std::error_code ec;
       if (std::filesystem::is_regular_file(file, ec)) return FoundModel{file, candidate};
-      looked += "\n  " + printable_text(file.string(), std::string_view::npos) + "  (" + d.origin + ")";
+      looked += "\n  " + printable_text(path_text(file), std::string_view::npos) + "  (" + d.origin + ")";
     }
   throw InputError("scene " + quoted_text(preset.name) + ": its model was not found; looked for" + looked +
                    "\nget it: " + preset.where_to_get +

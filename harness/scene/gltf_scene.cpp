@@ -11,6 +11,7 @@
 #include <cstring>
 #include <limits>
 
+#include "harness/core/path_text.hpp"
 #include "harness/core/error.hpp"
 #include "harness/core/printable_text.hpp"
 #include "harness/scene/detail/gltf_accessors.hpp"
@@ -79,7 +80,7 @@ GltfImport import_gltf(const std::filesystem::path& path, const GltfCameraChoice
   GltfImport out;
   // The path is the user's own: shown whole (escaped, never cut), so a message names the file
   // however deep it lies.
-  out.file = printable_text(path.string(), std::string_view::npos);
+  out.file = printable_text(path_text(path), std::string_view::npos);
   const Reporter r(out.file);
   const std::vector<unsigned char> bytes = gltf::read_bytes(path, r);
   gltf::require_gltf2(bytes, r);

@@ -16,6 +16,7 @@
 #include <sstream>
 #include <unordered_map>
 
+#include "harness/core/path_text.hpp"
 #include "harness/core/error.hpp"
 #include "harness/core/printable_text.hpp"
 #include "harness/scene/detail/gltf_accessors.hpp"
@@ -290,7 +291,7 @@ class ObjConverter {
     std::error_code ec;
     std::ifstream in;
     if (fs::is_regular_file(p, ec)) in.open(p, std::ios::binary);
-    if (!in.is_open()) r_.fail(what + " is missing (looked for " + quote_name(p.string()) + ")");
+    if (!in.is_open()) r_.fail(what + " is missing (looked for " + quote_name(path_text(p)) + ")");
     const std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     if (bytes.empty() || bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
       r_.fail(what + " is empty or too large");
@@ -369,7 +370,7 @@ GltfImport import_obj(const fs::path& path, const GltfCameraChoice& camera_choic
   if (camera_choice.camera && (camera_choice.eye || camera_choice.look_at || camera_choice.fov_y_deg))
     throw UsageError("--camera picks a camera of the file; it cannot be combined with --eye/--look-at/--fov");
   GltfImport out;
-  out.file = printable_text(path.string(), std::string_view::npos);
+  out.file = printable_text(path_text(path), std::string_view::npos);
   const Reporter r(out.file, "OBJ file");
   if (camera_choice.camera)
     r.fail("has no camera " + quote_name(*camera_choice.camera) + ": OBJ files have none (use --eye/--look-at/--fov)");

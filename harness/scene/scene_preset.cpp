@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "harness/core/path_text.hpp"
 #include "harness/core/embedded_files.hpp"
 #include "harness/core/error.hpp"
 #include "harness/core/json_reader.hpp"
@@ -124,7 +125,7 @@ ScenePreset parse_scene_preset(const ScenePresetFile& file) {
 
 ScenePreset read_scene_preset(const std::filesystem::path& file) {
   return parse_scene_preset(
-      ScenePresetFile{file.stem().string(), file.string(), read_text_file(file, "the scene preset")});
+      ScenePresetFile{file.stem().string(), path_text(file), read_text_file(file, "the scene preset")});
 }
 
 std::vector<ScenePresetFile> built_in_scene_presets() {
@@ -144,7 +145,7 @@ std::vector<ScenePresetFile> scene_preset_files(const std::filesystem::path& dir
   if (!std::filesystem::is_directory(dir, ec)) return out;
   for (const auto& e : std::filesystem::directory_iterator(dir))
     if (e.is_regular_file() && e.path().extension() == ".json")
-      out.push_back({e.path().stem().string(), e.path().string(), read_text_file(e.path(), "the scene preset")});
+      out.push_back({e.path().stem().string(), path_text(e.path()), read_text_file(e.path(), "the scene preset")});
   std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
   return out;
 }

@@ -1,5 +1,6 @@
 #include "harness/sweep/sweep_capture_cache.hpp"
 
+#include "harness/core/path_text.hpp"
 #include "harness/capture/capture_files.hpp"
 
 namespace vsgl {
@@ -30,8 +31,8 @@ const Capture& SweepCaptureCache::at(const RecordSizes& sizes, std::size_t point
     const std::filesystem::path dir = sweep_capture_dir(options_.captures_dir, options_.scene, sizes);
     held_ = provide_capture(device_, *scene_, sizes, dir);
     if (!held_.stale_because.empty())
-      log.say("re-recorded the stale capture " + dir.string() + ": " + held_.stale_because, point);
-    else if (held_.recorded) log.say("recorded the capture " + dir.string(), point);
+      log.say("re-recorded the stale capture " + path_text(dir) + ": " + held_.stale_because, point);
+    else if (held_.recorded) log.say("recorded the capture " + path_text(dir), point);
   }
   held_sizes_ = sizes;
   return held_.capture;

@@ -1,5 +1,6 @@
 #include "harness/sweep/sweep_run.hpp"
 
+#include "harness/core/path_text.hpp"
 #include "harness/core/error.hpp"
 #include "harness/sweep/sweep_blocks.hpp"
 #include "harness/sweep/sweep_capture_cache.hpp"
@@ -33,7 +34,7 @@ void require_two_points(const MeasuredSweep& m, std::size_t planned, const std::
   throw DeviceError("sweep: only " + std::to_string(m.points.size()) + " of " + std::to_string(planned) +
                     " points fit " + device + ", and a sweep needs 2; the others are beyond it:" + why +
                     (m.points.empty() ? std::string()
-                                      : "\n" + (out_dir / "sweep.json").string() +
+                                      : "\n" + path_text(out_dir / "sweep.json") +
                                             " keeps the point timed, marked \"complete\": false"));
 }
 
