@@ -9,11 +9,7 @@
 #include "harness/core/statistics.hpp"
 
 namespace vsgl {
-namespace {
-
-double luminance_d(glm::vec4 p) { return static_cast<double>(luminance(glm::vec3(p))); }
-
-}  // namespace
+double pixel_luminance(glm::vec4 p) { return static_cast<double>(luminance(glm::vec3(p))); }
 
 ValueSummary summarize_values(std::vector<double> values) {
   if (values.empty()) throw std::invalid_argument("summarize_values: no values");
@@ -305,8 +301,8 @@ ImageError image_error(const RadianceImage& image, const RadianceImage& referenc
       err2 += d * d;
       ref2 += static_cast<double>(r[c]) * static_cast<double>(r[c]);
     }
-    ref_lum += luminance_d(r);
-    abs_lum.push_back(std::abs(luminance_d(p) - luminance_d(r)));
+    ref_lum += pixel_luminance(r);
+    abs_lum.push_back(std::abs(pixel_luminance(p) - pixel_luminance(r)));
   }
   if (!(ref2 > 0.0) || !(ref_lum > 0.0)) throw InputError("image error: the reference image is black");
   ImageError e;
@@ -341,7 +337,7 @@ void FlickerAccumulator::add_frame(const RadianceImage& image, double total_powe
   std::vector<float> lum(image.pixels.size());
   for (std::size_t i = 0; i < image.pixels.size(); ++i) {
     if (!(image.pixels[i].a > 0.0f)) surface_[i] = 0;
-    const double y = luminance_d(image.pixels[i]);
+    const double y = pixel_luminance(image.pixels[i]);
     if (frames_ == 0) first_[i] = y;
     // Shifted by the first frame: identical frames give exactly zero deviation (and less rounding).
     const double d = y - first_[i];
@@ -362,8 +358,8 @@ void FlickerAccumulator::add_frame(const RadianceImage& image, double total_powe
   std::vector<float> err(image.pixels.size());
   for (std::size_t i = 0; i < image.pixels.size(); ++i) {
     if (!(reference.pixels[i].a > 0.0f)) surface_[i] = 0;
-    const double r = luminance_d(reference.pixels[i]);
-    const double e0 = luminance_d(image.pixels[i]) - r;
+    const double r = pixel_luminance(reference.pixels[i]);
+    const double e0 = pixel_luminance(image.pixels[i]) - r;
     err[i] = static_cast<float>(e0);
     if (reference_frames_ == 0) err_first_[i] = e0;
     const double e = e0 - err_first_[i];

@@ -127,6 +127,8 @@ PowerMetrics power_metrics(const std::vector<VsglRecord>& vsgls, double total_fl
 double total_flux(const std::vector<glm::vec4>& m0);
 
 // ---- Error against a reference ---------------------------------------------------------------
+// The Rec. 709 luminance of a radiance pixel (alpha ignored), in double for the sums below.
+double pixel_luminance(glm::vec4 p);
 struct ImageError {
   double relative_rmse = 0;  // sqrt(sum |L - R|^2 / sum |R|^2) over rgb of the pixels with a surface
   // 99th percentile over those pixels of |Y(L) - Y(R)| / mean Y(R) (luminance, relative to the
