@@ -157,5 +157,50 @@ TEST(QualityCli, TinyCaptureWritesJsonMarkdownAndPictures) {
     EXPECT_GT(ref["own_errors"][metric].get<double>(), 0.0) << metric;
 }
 
+// A reference capture (--reference-capture): the same frame with a 4x larger RSM lends the reference
+// its texels as VPLs, which the document names; a capture of another frame is refused (exit 3).
+TEST(QualityCli, ReferenceCaptureLendsItsLargerRsm) {
+  const test::TempDir root_temp("quality_reference_capture");
+  const std::filesystem::path& root = root_temp.path();
+  const auto record = [&](const std::string& sizes, const char* name) {
+    const auto r = test::run_cli("record --scene tiny " + sizes + " --out " + (root / name).string());
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+  };
+  record("--gbuffer 96x64 --rsm 32", "cap");
+  record("--gbuffer 96x64 --rsm 128", "ref");
+  record("--gbuffer 64x64 --rsm 128", "other_camera");
+  const std::string options =
+      " --frames 2 --generators fis_tok15 --k-sweep 1 --error-stride 4 --light-vsgls 64"
+      " --camera-vsgls 128 --out ";
+  const auto quality = [&](const std::string& extra, const char* out) {
+    return test::run_cli("quality --capture " + (root / "cap").string() + extra + options + (root / out).string());
+  };
+  auto r = quality("", "own");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  r = quality(" --reference-capture " + (root / "ref").string(), "lent");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto own = test::read_json(root / "own" / "tiny" / "quality.json");
+  const auto lent = test::read_json(root / "lent" / "tiny" / "quality.json");
+  for (const std::string& problem : validate_against_schema(
+           lent, test::read_json(std::filesystem::path(VSGL_SOURCE_DIR) / "results/schema/quality.schema.json")))
+    ADD_FAILURE() << problem;
+  EXPECT_EQ(own["reference"]["vpl_source"]["capture"], "the capture itself");
+  EXPECT_EQ(lent["reference"]["vpl_source"]["capture"], "reference capture");
+  EXPECT_EQ(lent["reference"]["vpl_source"]["rsm"], nlohmann::json::array({128, 128}));
+  EXPECT_EQ(lent["reference"]["reference_rsm_side"], 128);
+  EXPECT_EQ(lent["capture"]["rsm"], nlohmann::json::array({32, 32}));  // the generators' input is unchanged
+  // 16 times the texels: far more VPLs, the same light to within the discretisation.
+  EXPECT_GT(lent["reference"]["vpls"].get<double>(), 8.0 * own["reference"]["vpls"].get<double>());
+  EXPECT_NEAR(lent["reference"]["power_ratio"].get<double>(), 1.0, 0.1);
+  std::ifstream md(root / "lent" / "tiny" / "quality.md");
+  const std::string text((std::istreambuf_iterator<char>(md)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("the 128x128 RSM of the reference capture"), std::string::npos);
+
+  r = quality(" --reference-capture " + (root / "other_camera").string(), "refused");
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_NE(r.output.find("64x64 G-buffer, the capture 96x64"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(root / "refused" / "tiny" / "quality.json"));
+}
+
 }  // namespace
 }  // namespace vsgl

@@ -103,6 +103,11 @@ Command add_quality_command(CLI::App& parent) {
   app->add_option("--reference-rsm", c.reference_rsm, "reference RSM side (every lit texel a VPL); 0: the full RSM")
       ->check(at_least(0))
       ->capture_default_str();
+  app->add_option_function<std::string>(
+         "--reference-capture", [&c](const std::string& dir) { c.reference_capture = path_from_utf8(dir); },
+         "the reference's VPLs from this capture's RSM: the same frame recorded with a larger --rsm (same scene, "
+         "--gbuffer and device); the generators keep the capture's RSM (DESIGN.md §11a)")
+      ->type_name("DIR");
   app->add_option("--sequence-reference-rsm", c.sequence_reference_rsm, "the same for each sequence frame")
       ->check(at_least(1))
       ->capture_default_str();

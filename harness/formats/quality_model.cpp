@@ -362,6 +362,7 @@ void to_json(json& j, const QualityModel& m) {
   for (const auto& [name, v] : m.views) j["views"][name] = view_json(v);
   for (const auto& [name, e] : m.reference_error) j["reference_error"][name] = error_json(e);
   if (m.reference_detail) j["reference"].update(reference_detail_json(*m.reference_detail));
+  if (!m.reference_vpl_source.is_null()) j["reference"]["vpl_source"] = m.reference_vpl_source;
   if (!m.reference_error_support.empty()) {
     json support = json::object();
     for (const auto& [name, e] : m.reference_error_support) support[name] = error_json(e);
@@ -433,6 +434,7 @@ void read_reference(const JsonReader& r, const json& doc, QualityModel& m) {
   m.reference_rsm_side = r.member(ref, "/reference", "reference_rsm_side");
   m.reference_rsm_stride = r.member(ref, "/reference", "rsm_stride");
   m.reference_image = r.array(ref, "/reference", "image", 2);
+  if (ref.contains("vpl_source")) m.reference_vpl_source = r.object(ref, "/reference", "vpl_source");
   if (ref.contains("convergence")) m.reference_detail = read_reference_detail(r, ref);
   if (doc.contains("reference_error_support"))
     for (const auto& [g, e] : r.object(doc, "", "reference_error_support").items())

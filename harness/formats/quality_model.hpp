@@ -171,6 +171,9 @@ struct QualityModel {
   nlohmann::json config_rest = nlohmann::json::object();
   std::map<std::string, ViewQuality> views;  // "camera_view", "light_view"
   nlohmann::json reference_vpls, reference_rsm_side, reference_rsm_stride, reference_image;  // printed as written
+  // Which capture's RSM the reference's VPLs come from (schema 5, optional): {capture, path, rsm,
+  // rsm_hashes}; null in documents written before it.
+  nlohmann::json reference_vpl_source;
   double reference_power_ratio = 0;
   std::string reference_method;
   std::map<std::string, ImageErrorSummary> reference_error;

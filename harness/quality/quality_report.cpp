@@ -209,9 +209,19 @@ void write_flux_origin(std::ostringstream& md, const QualityModel& m) {
   }
 }
 
+// Whose RSM the reference's VPLs come from: the capture's, or a reference capture's larger one.
+std::string vpl_source_text(const nlohmann::json& source) {
+  if (source.is_null()) return "RSM";  // schema 5 documents written before vpl_source
+  if (source.value("capture", "") != "reference capture") return "the capture's RSM";
+  const auto& rsm = source.at("rsm");
+  return "the " + rsm[0].dump() + "x" + rsm[1].dump() + " RSM of the reference capture " +
+         source.value("path", std::string("?"));
+}
+
 void write_reference_error(std::ostringstream& md, const QualityModel& m) {
-  md << "\n## Error against the reference (light-view VSGLs lighting the camera view)\n\nReference: " << m.reference_vpls
-     << " VPLs (RSM subsampled to " << m.reference_rsm_side << "^2, stride " << m.reference_rsm_stride << ", sum Phi / flux "
+  md << "\n## Error against the reference (light-view VSGLs lighting the camera view)\n\nReference: "
+     << m.reference_vpls << " VPLs (" << vpl_source_text(m.reference_vpl_source) << " subsampled to "
+     << m.reference_rsm_side << "^2, stride " << m.reference_rsm_stride << ", sum Phi / flux "
      << num(m.reference_power_ratio) << "), image " << m.reference_image[0] << "x" << m.reference_image[1] << ". "
      << m.reference_method
      << ". p99 pixel error: 99th percentile of |dY| / mean Y(reference).\n\n| generator | relative RMSE | p99 pixel "

@@ -25,6 +25,7 @@
 #include "harness/formats/quality_model.hpp"
 #include "harness/quality/quality_pictures.hpp"
 #include "harness/quality/quality_reference.hpp"
+#include "harness/quality/reference_capture.hpp"
 #include "harness/timing/run_provenance.hpp"
 #include "harness/quality/shading_pass.hpp"
 
@@ -272,6 +273,8 @@ struct QualityRun {
   const DeviceView& floor_camera;
   const DeviceView& floor_light;
   const MipPyramid& floor_light_pdf;
+  // Where the reference's VPLs come from: the capture's RSM, or a reference capture's larger one.
+  const ViewImage& reference_rsm;
 
   void say(const std::string& line) const {
     if (progress) progress(line);
@@ -332,7 +335,7 @@ struct QualityRun {
   ShadedReference shade_reference(uint32_t rsm_stride, VplSet set, uint32_t error_stride) const {
     const auto t0 = Clock::now();
     ShadedReference r;
-    r.vpls = reference_vpls(capture.rsm, capture.meta.light, rsm_stride, VplExtent::kTexelFootprint, set);
+    r.vpls = reference_vpls(reference_rsm, capture.meta.light, rsm_stride, VplExtent::kTexelFootprint, set);
     FixedVsglGenerator reference(device, r.vpls, std::string("reference_") + vpl_set_name(set));
     r.image = shade_camera_view(device, camera, reference.vsgls(), reference.vsgl_count(), error_stride);
     r.seconds = seconds_since(t0);
@@ -342,7 +345,7 @@ struct QualityRun {
   // The VPL count of a set without building its records.
   uint64_t vpl_count(uint32_t rsm_stride, VplSet set) const {
     uint64_t n = 0;
-    const ViewImage& rsm = capture.rsm;
+    const ViewImage& rsm = reference_rsm;
     for (uint32_t y = 0; y < rsm.height; y += rsm_stride)
       for (uint32_t x = 0; x < rsm.width; x += rsm_stride) {
         if (rsm.at(kValid, x, y) <= 0.5f) continue;
@@ -384,8 +387,8 @@ struct QualityRun {
   // 6: the converged reference (DESIGN.md §11a), its convergence table and its own error in every
   // frame metric, and the PDF-support reference.
   ReferenceShading reference(QualityModel& out, double light_flux) const {
-    const uint32_t ref_stride = reference_stride(capture.rsm, config.reference_rsm);
-    const uint32_t rsm_side = std::max(capture.rsm.width, capture.rsm.height);
+    const uint32_t ref_stride = reference_stride(reference_rsm, config.reference_rsm);
+    const uint32_t rsm_side = std::max(reference_rsm.width, reference_rsm.height);
     // The coarser strides of the convergence table, coarsest first, each leaving at least 2 texels a side.
     std::vector<uint32_t> strides;
     for (uint32_t k : kConvergenceStrides)
@@ -431,12 +434,12 @@ struct QualityRun {
 
     const std::vector<VsglRecord>& vpls = all.vpls;
     out.reference_rsm_stride = ref_stride;
-    out.reference_rsm_side = (capture.rsm.width + ref_stride - 1) / ref_stride;
+    out.reference_rsm_side = (reference_rsm.width + ref_stride - 1) / ref_stride;
     out.reference_vpls = vpls.size();
     out.reference_power_ratio = power_sum(vpls) / light_flux;
     out.reference_image = json::array({ref_image.width, ref_image.height});
     out.reference_method =
-        "Every stride-th RSM texel with positive flux is a VSGL of its own moments "
+        "Every stride-th texel with positive flux of the RSM vpl_source names is a VSGL of its own moments "
         "(level 0), flux scaled by stride^2, sigma^2 = A / 12 with A the world area the texel stands for "
         "(bounds the 1/d^2 spikes of point VPLs); shaded at the "
         "generators' pixels (G-buffer stride) by the same shading pass, in chunked dispatches";
@@ -762,8 +765,19 @@ QualityResult run_quality(Device& device, const Capture& capture, const std::fil
   const DeviceView floor_camera = upload_view(device, floor_capture, ViewKind::kCamera);
   const DeviceView floor_light = upload_view(device, floor_capture, ViewKind::kLight);
   const MipPyramid floor_light_pdf = view_data(floor_capture, ViewKind::kLight).pdf;
-  const QualityRun run{device,       capture,      config,      progress,       capture.meta.scene, camera, light,
-                       floor_capture, floor_camera, floor_light, floor_light_pdf};
+  // The reference's VPLs (DESIGN.md §11a): a reference capture's larger RSM when one is given.
+  std::optional<Capture> reference_capture;
+  if (config.reference_capture) {
+    reference_capture = load_capture(*config.reference_capture);
+    check_reference_capture(capture, *reference_capture, path_text(*config.reference_capture));
+  }
+  const Capture& vpl_capture = reference_capture ? *reference_capture : capture;
+  out.reference_vpl_source = json{{"capture", reference_capture ? "reference capture" : "the capture itself"},
+                                  {"path", path_text(reference_capture ? *config.reference_capture : capture_dir)},
+                                  {"rsm", json::array({vpl_capture.rsm.width, vpl_capture.rsm.height})},
+                                  {"rsm_hashes", capture_hashes_json(vpl_capture).at("rsm")}};
+  const QualityRun run{device, capture,       config,       progress,    capture.meta.scene, camera,
+                       light,  floor_capture, floor_camera, floor_light, floor_light_pdf,    vpl_capture.rsm};
 
   MipPyramid light_pdf;
   auto t0 = Clock::now();

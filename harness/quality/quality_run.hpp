@@ -62,6 +62,9 @@ struct QualityConfig {
   std::vector<float> k_sweep = {1.0f, 2.0f, 4.0f, 8.0f};
   uint32_t coverage_picture_side = 512;
   std::optional<std::filesystem::path> sequence;  // DIR with frame_NNNN captures (vsgl-bench record --frames F)
+  // A capture of the same frame with a larger RSM, whose texels are the reference's VPLs
+  // (reference_capture.hpp); unset: the capture's own RSM.
+  std::optional<std::filesystem::path> reference_capture;
 };
 
 struct QualityPicture {
