@@ -3,10 +3,12 @@
 # and inside a wall-time budget. Steps run most valuable first, so a run cut short still brings
 # back what matters most:
 #   1 devices (--json) and nvidia-smi     5 tables with --pyramid buffer
-#   2 record sponza and conference-room    6 vsgl-mipbench (the three mipmapping strategies)
-#   3 verify both captures: both pyramid   7 vsgl-gbench
-#     paths, every generator               7b a short sweep: N x PDF sharpness (--time-budget)
-#   4 tables (texture path, the default)   8 the GPU test suites under the validation layer
+#   2 record sponza and conference-room    5b quality per scene against a reference capture
+#   3 verify both captures: both pyramid      with a 4096^2 RSM (--reference-rsm)
+#     paths, every generator               6 vsgl-mipbench (the three mipmapping strategies)
+#   4 tables (texture path, the default)   7 vsgl-gbench
+#                                          7b a short sweep: N x PDF sharpness (--time-budget)
+#                                          8 the GPU test suites under the validation layer
 # The paper's scenes come from the pack's scenes.tar.xz (ci/device-pack.sh); a pack without them
 # records the procedural stand-ins atrium and conference instead, and run.log says so. run.log
 # lists the model files carried (size, SHA-256).
@@ -27,28 +29,34 @@
 # crash loses only that suite; GpuAssistedValidation last, in its own process.
 #
 # Usage (repository root, pack in .device-pack/):
-#   bash ci/device-run.sh OUT [--quick] [--budget SECONDS]
+#   bash ci/device-run.sh OUT [--quick] [--budget SECONDS] [--reference-rsm SIDE]
 #   --quick       the rehearsal on lavapipe: 480x272 captures with a 128^2 RSM, tables --quick,
-#                 3 replays per benchmark on Table 1 only, vsgl-gbench for the FIS generators
+#                 3 replays per benchmark on Table 1 only, vsgl-gbench for the FIS generators,
+#                 quality on 4 frames against a 256^2 reference capture at G-buffer stride 8
 #   --budget S    wall-time budget of the whole run [540: nine minutes, so that a run given ten
 #                 has time left to start and to copy its results back]
+#   --reference-rsm SIDE  the reference capture's RSM side for quality (DESIGN.md §11a) [4096]
 # Exit: 0 if every step ran and passed, 1 otherwise (run.log names the steps), 2 on bad usage or
 # no pack. Bring OUT/results.tar.* back and file it with ci/import-device-results.sh.
 set -uo pipefail
 cd "$(dirname "$0")/.." || exit 2
-out=${1:?usage: bash ci/device-run.sh OUT [--quick] [--budget SECONDS]}
+out=${1:?usage: bash ci/device-run.sh OUT [--quick] [--budget SECONDS] [--reference-rsm SIDE]}
 shift
 quick=false
 budget=540
+reference_rsm=""
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --quick) quick=true ;;
     --budget) budget=${2:?--budget takes seconds}; shift ;;
-    *) echo "ci/device-run.sh: unknown option '$1' (--quick, --budget S)" >&2; exit 2 ;;
+    --reference-rsm) reference_rsm=${2:?--reference-rsm takes a side in texels}; shift ;;
+    *) echo "ci/device-run.sh: unknown option '$1' (--quick, --budget S, --reference-rsm SIDE)" >&2; exit 2 ;;
   esac
   shift
 done
 [[ $budget =~ ^[0-9]+$ ]] || { echo "ci/device-run.sh: --budget takes whole seconds, not '$budget'" >&2; exit 2; }
+[[ -z $reference_rsm || $reference_rsm =~ ^[1-9][0-9]*$ ]] ||
+  { echo "ci/device-run.sh: --reference-rsm takes a side in texels, not '$reference_rsm'" >&2; exit 2; }
 start=$SECONDS
 pack=$PWD/.device-pack
 # The pack travels compressed (ci/device-pack.sh): unpack the tools once.
@@ -212,18 +220,24 @@ step() {
 
 if $quick; then
   size="--gbuffer 480x272 --rsm 128"
+  reference_size="--gbuffer 480x272 --rsm ${reference_rsm:-256}"
+  quality_args=(--frames 4 --k-sweep 1,2 --error-stride 8)
   tables_quick=(--quick)
   replays=(--vsgl_replays=3 --vsgl_tables=1)
   gbench_quick=(--vsgl_generators=fis_tok15,fis_modified)
   sweep_args=(--quick --generators fis_tok15,fis_modified --axis vsgls=256,1024 --axis pdf-sharpness=1,2 --time-budget 20)
 else
   size=""
+  reference_size="--rsm ${reference_rsm:-4096}"
+  # G-buffer stride 4 (480x272 of 1920x1088): the per-frame FLIP and pixel statistics run on the
+  # CPU, about 2 s a frame at full size, and a run judges some 400 frames per scene.
+  quality_args=(--error-stride 4)
   tables_quick=()
   replays=()
   gbench_quick=()
   sweep_args=(--axis vsgls=256:16384:x4 --axis pdf-sharpness=0.5,1,2,4 --time-budget 50)
 fi
-export size
+export size reference_size
 
 # 1. The device, as Vulkan and the driver see it. The run stops here when the loader finds no
 # usable device, or (without --quick, whose rehearsal is on lavapipe) only CPU ones.
@@ -306,6 +320,20 @@ step tables_texture 150 30 "$bin/vsgl-bench" tables "${table_captures[@]}" --out
   "${paper[@]}" --no-progress --time-cap 45 "${tables_quick[@]}"
 step tables_buffer 120 30 "$bin/vsgl-bench" tables "${table_captures[@]}" --out "$run/buffer" --pyramid buffer \
   "${paper[@]}" --no-progress --time-cap 35 "${tables_quick[@]}"
+
+# 5b. Quality (DESIGN.md §11a) per scene against a reference capture: the same frame recorded again
+# with a larger RSM, whose texels are the reference's VPLs (the paper-size 512^2 RSM is about 0.08
+# relative RMSE from the continuum on Sponza). Each scene's quality.json is written whole or not.
+record_reference() {
+  # $reference_size unquoted: options
+  "$bin/vsgl-bench" record --scene "$1" --assets "$assets" --out "$captures/$1-reference" $reference_size
+}
+for scene in "${scenes[@]}"; do
+  step "reference_capture_$scene" 90 20 record_reference "$scene" &&
+    step "quality_$scene" 180 40 "$bin/vsgl-bench" quality --capture "$captures/$scene" \
+      --reference-capture "$captures/$scene-reference" "${quality_args[@]}" --out "$run/quality"
+  rm -rf "$captures/$scene-reference"  # up to 1 GiB each at 4096^2
+done
 
 # 6-7. The Google Benchmark binaries, JSON out.
 step mipbench 60 15 "$bin/vsgl-mipbench" --vsgl_captures="$captures" --vsgl_assets="$assets" "${replays[@]}" \
