@@ -78,6 +78,20 @@ TEST(Table3Markers, RegionsCountOnlyWhenEveryEnclosingOneIsCounted) {
   EXPECT_EQ(lines_of("/*\n// table3: begin b\n*/\nfloat x;\n"), std::vector<std::string>{"float x;"});
 }
 
+// A checkout with CRLF line ends (git's autocrlf on Windows) counts exactly as the LF one, its
+// markers included; a lone '\r' inside a line stays whitespace.
+TEST(Table3Markers, CrlfLineEndsCountAsLf) {
+  const std::string lf =
+      "int shared; // why\n// table3: begin b\nint in_b;\n// table3: end b\n/* a\n b */ int after;\n"
+      "// table3: begin a\nint in_a;\n// table3: end a\n";
+  std::string crlf;
+  for (char c : lf) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+  EXPECT_EQ(lines_of(crlf), lines_of(lf));
+  EXPECT_EQ(lines_of(crlf), (std::vector<std::string>{"int shared;", "int after;", "int in_a;"}));
+  EXPECT_EQ(count_code_lines(crlf), count_code_lines(lf));
+  EXPECT_EQ(lines_of("int\rx;\r\n"), std::vector<std::string>{"int x;"});
+}
+
 TEST(Table3Markers, UnbalancedUnknownAndMalformedMarkersAreErrors) {
   EXPECT_NE(counting_error("// table3: end a\n").find("x.cpp:1: `// table3: end a` without a matching begin"),
             std::string::npos)

@@ -22,6 +22,15 @@ struct PhysicalLine {
 };
 
 std::vector<PhysicalLine> split_code(std::string_view text) {
+  // A checkout with CRLF line ends (git's autocrlf on Windows) counts as the LF one: a '\r' left at
+  // a line's end would hide its Table 3 marker from the marker pattern.
+  std::string lf;
+  if (text.find("\r\n") != std::string_view::npos) {
+    lf.reserve(text.size());
+    for (std::size_t i = 0; i < text.size(); ++i)
+      if (!(text[i] == '\r' && i + 1 < text.size() && text[i + 1] == '\n')) lf += text[i];
+    text = lf;
+  }
   std::vector<PhysicalLine> out(1);
   bool in_block = false;  // inside /* */
   char quote = 0;         // inside "..." or '...'
