@@ -118,9 +118,34 @@ TEST_F(ShadingPassTest, ChunkedDispatchesGiveTheSameImage) {
     ASSERT_EQ(chunked.pixels.size(), one.pixels.size());
     EXPECT_TRUE(chunked.pixels == one.pixels);
   }
+  // More VSGLs than one binding holds (maxStorageBufferRange): the records are bound a window of
+  // whole chunks at a time, to the same image.
+  for (const auto& [chunk, binding] : {std::pair{256u, 512u}, {300u, 600u}, {256u, 300u}}) {
+    SCOPED_TRACE(std::to_string(chunk) + " per dispatch, " + std::to_string(binding) + " per binding");
+    const RadianceImage windowed =
+        shade_camera_view(device(), camera, gen.vsgls(), params.vsgl_count, 2, chunk, binding);
+    EXPECT_TRUE(windowed.pixels == one.pixels);
+  }
   float brightest = 0.0f;
   for (const glm::vec4& p : one.pixels) brightest = std::max(brightest, p.r);
   EXPECT_GT(brightest, 0.0f);
+}
+
+TEST_F(ShadingPassTest, BindingWindowsHoldWholeChunksWithinTheRange) {
+  EXPECT_EQ(binding_window_vsgls(device(), 1000, 256, 0), 1000u);  // fits the device's range at once
+  EXPECT_EQ(binding_window_vsgls(device(), 1000, 256, 1000), 1000u);
+  EXPECT_EQ(binding_window_vsgls(device(), 1000, 256, 700), 512u);  // two whole chunks
+  EXPECT_EQ(binding_window_vsgls(device(), 1000, 256, 256), 256u);
+  EXPECT_THROW(binding_window_vsgls(device(), 1000, 256, 255), DeviceLimitError);  // not one chunk
+  // The device's own limit: the records of one binding are at most maxStorageBufferRange bytes.
+  const uint64_t range = device().info().limits.storage_buffer_range;
+  const uint64_t more = range / sizeof(VsglRecord) + 1000;
+  if (more <= UINT32_MAX) {
+    const uint32_t window = binding_window_vsgls(device(), static_cast<uint32_t>(more), 256, 0);
+    EXPECT_LE(uint64_t{window} * sizeof(VsglRecord), range);
+    EXPECT_EQ(window % 256u, 0u);
+    EXPECT_GT(window, 0u);
+  }
 }
 
 TEST(ShadingChunks, ChunksHoldTheEvaluationBudgetInWholeTiles) {

@@ -1,6 +1,7 @@
 #include "harness/quality/shading_pass.hpp"
 
 #include <algorithm>
+#include <numeric>
 
 #include "harness/vk/buffer.hpp"
 #include "harness/vk/command_stream.hpp"
@@ -19,8 +20,26 @@ uint32_t shade_chunk_vsgls(uint64_t pixels) {
   return static_cast<uint32_t>(std::max(tile, fit / tile * tile));
 }
 
+uint32_t binding_window_vsgls(const Device& device, uint32_t vsgl_count, uint32_t chunk, uint32_t vsgls_per_binding) {
+  const DeviceLimits& limits = device.info().limits;
+  const uint64_t fits = vsgls_per_binding != 0 ? vsgls_per_binding : limits.storage_buffer_range / sizeof(VsglRecord);
+  if (vsgl_count <= fits) return vsgl_count;
+  // Every window starts on a chunk and at an offset the device can bind (a power of two of at most
+  // 256 bytes by the Vulkan spec, so at most 4 records).
+  const uint64_t records_per_alignment =
+      std::max<uint64_t>(1, limits.storage_buffer_offset_alignment / sizeof(VsglRecord));
+  const uint64_t step = std::lcm(uint64_t{chunk}, records_per_alignment);
+  const uint64_t window = fits / step * step;
+  if (window == 0)
+    throw DeviceLimitError(device.info().name + " cannot bind one chunk of " + std::to_string(chunk) + " VSGLs (" +
+                           std::to_string(uint64_t{chunk} * sizeof(VsglRecord)) +
+                           " bytes) of the shading pass: maxStorageBufferRange is " +
+                           std::to_string(limits.storage_buffer_range));
+  return static_cast<uint32_t>(window);
+}
+
 RadianceImage shade_camera_view(Device& device, const DeviceView& camera, const Buffer& vsgls, uint32_t vsgl_count,
-                                uint32_t stride, uint32_t vsgls_per_dispatch) {
+                                uint32_t stride, uint32_t vsgls_per_dispatch, uint32_t vsgls_per_binding) {
   if (stride == 0) throw InputError("shading pass: the stride must be at least 1");
   if (camera.kind != ViewKind::kCamera)
     throw InputError("shading pass: it shades the camera view (G-buffer), not the " + camera.label);
@@ -37,33 +56,40 @@ RadianceImage shade_camera_view(Device& device, const DeviceView& camera, const 
   Buffer radiance(device, count * sizeof(glm::vec4), MemoryUsage::kDeviceLocal, "shade.radiance");
   ComputePipeline pipeline(device, {"shade_vsgls.comp", 3, sizeof(gpu::ShadePush),
                                     work_group_size_2d(gpu::kShadeGroupSize, gpu::kShadeGroupSize)});
-  BindingSet set(
-      device, pipeline,
-      buffer_bindings(
-          {camera.layers(), {BufferBinding(vsgls, 0, VkDeviceSize{vsgl_count} * sizeof(VsglRecord))}, {radiance}}),
-      "shade.set");
-  // One submission per chunk: a driver's watchdog (about 2 s on Windows) limits each submission, and
-  // no chunk holds more than kShadeEvaluationsPerDispatch VSGL evaluations.
-  for (uint32_t first = 0; first < vsgl_count; first += chunk) {
-    const uint32_t n = std::min(chunk, vsgl_count - first);
-    const gpu::ShadePush push{camera.square.width,
-                              camera.square.height,
-                              image.width,
-                              image.height,
-                              stride,
-                              n,
-                              first,
-                              first == 0 ? 0u : 1u,
-                              glm::vec4(camera.source_position, 1.0f)};
-    device.submit_and_wait(
-        [&](VkCommandBuffer cmd) {
-          CommandStream stream(cmd);
-          // The VSGLs (and an earlier chunk's sums) were written by an earlier submission.
-          stream.full_barrier();
-          stream.dispatch(pipeline, set, push, div_up(image.width, gpu::kShadeGroupSize),
-                          div_up(image.height, gpu::kShadeGroupSize));
-        },
-        "shading pass");
+  const uint32_t window = binding_window_vsgls(device, vsgl_count, chunk, vsgls_per_binding);
+  // One binding of at most `window` VSGLs at a time (the records past maxStorageBufferRange cannot
+  // be bound at once); its chunks in order, one submission each: a driver's watchdog (about 2 s on
+  // Windows) limits each submission, and no chunk holds more than kShadeEvaluationsPerDispatch
+  // VSGL evaluations.
+  for (uint32_t window_first = 0; window_first < vsgl_count; window_first += window) {
+    const uint32_t window_count = std::min(window, vsgl_count - window_first);
+    BindingSet set(device, pipeline,
+                   buffer_bindings({camera.layers(),
+                                    {BufferBinding(vsgls, VkDeviceSize{window_first} * sizeof(VsglRecord),
+                                                   VkDeviceSize{window_count} * sizeof(VsglRecord))},
+                                    {radiance}}),
+                   "shade.set");
+    for (uint32_t first = window_first; first < window_first + window_count; first += chunk) {
+      const uint32_t n = std::min(chunk, window_first + window_count - first);
+      const gpu::ShadePush push{camera.square.width,
+                                camera.square.height,
+                                image.width,
+                                image.height,
+                                stride,
+                                n,
+                                first - window_first,
+                                first == 0 ? 0u : 1u,
+                                glm::vec4(camera.source_position, 1.0f)};
+      device.submit_and_wait(
+          [&](VkCommandBuffer cmd) {
+            CommandStream stream(cmd);
+            // The VSGLs (and an earlier chunk's sums) were written by an earlier submission.
+            stream.full_barrier();
+            stream.dispatch(pipeline, set, push, div_up(image.width, gpu::kShadeGroupSize),
+                            div_up(image.height, gpu::kShadeGroupSize));
+          },
+          "shading pass");
+    }
   }
   image.pixels = download_vector<glm::vec4>(device, radiance, count);
   return image;

@@ -40,10 +40,17 @@ uint32_t shade_chunk_vsgls(uint64_t pixels);
 // Shades the uploaded camera view (`camera.kind` must be kCamera; the camera position is its
 // source_position) with the first `vsgl_count` records of `vsgls`, in chunks of
 // `vsgls_per_dispatch` VSGLs (0: shade_chunk_vsgls), one submission each; the sum keeps the index
-// order, so the image does not depend on the chunking. Throws InputError for a stride of 0, a light
-// view, or a buffer holding fewer than `vsgl_count` records.
+// order, so the image does not depend on the chunking. The records are bound `vsgls_per_binding`
+// at a time (0: binding_window_vsgls's choice), so a reference of more VPLs than one binding of
+// maxStorageBufferRange holds (2 million on lavapipe) still shades, to the same image. Throws
+// InputError for a stride of 0, a light view, or a buffer holding fewer than `vsgl_count` records.
 RadianceImage shade_camera_view(Device& device, const DeviceView& camera, const Buffer& vsgls, uint32_t vsgl_count,
-                                uint32_t stride, uint32_t vsgls_per_dispatch = 0);
+                                uint32_t stride, uint32_t vsgls_per_dispatch = 0, uint32_t vsgls_per_binding = 0);
+
+// VSGLs per binding of the shading pass: all `vsgl_count` where they fit `vsgls_per_binding` (0: the
+// device's maxStorageBufferRange), else the most whole `chunk`s that fit and start at an offset the
+// device can bind. Throws DeviceLimitError when not one chunk fits.
+uint32_t binding_window_vsgls(const Device& device, uint32_t vsgl_count, uint32_t chunk, uint32_t vsgls_per_binding);
 
 // The CPU twin of one output pixel: G-buffer texel (x, y) of `gbuffer`, seen from `camera_position`.
 glm::vec4 shade_pixel_reference(const ViewImage& gbuffer, uint32_t x, uint32_t y, glm::vec3 camera_position,
