@@ -3,12 +3,12 @@
 # and inside a wall-time budget. Steps run most valuable first, so a run cut short still brings
 # back what matters most:
 #   1 devices (--json) and nvidia-smi     5 tables with --pyramid buffer
-#   2 record sponza and conference-room    5b quality per scene against a reference capture
-#   3 verify both captures: both pyramid      with a 4096^2 RSM (--reference-rsm)
-#     paths, every generator               6 vsgl-mipbench (the three mipmapping strategies)
-#   4 tables (texture path, the default)   7 vsgl-gbench
-#                                          7b a short sweep: N x PDF sharpness (--time-budget)
-#                                          8 the GPU test suites under the validation layer
+#   2 record sponza and conference-room    6 vsgl-mipbench (the three mipmapping strategies)
+#   3 verify both captures: both pyramid   7 vsgl-gbench
+#     paths, every generator               7b a short sweep: N x PDF sharpness (--time-budget)
+#   4 tables (texture path, the default)   8 the GPU test suites under the validation layer
+#                                          9 quality per scene against a reference capture
+#                                            with a 4096^2 RSM (--reference-rsm)
 # The paper's scenes come from the pack's scenes.tar.xz (ci/device-pack.sh); a pack without them
 # records the procedural stand-ins atrium and conference instead, and run.log says so. run.log
 # lists the model files carried (size, SHA-256).
@@ -321,20 +321,6 @@ step tables_texture 150 30 "$bin/vsgl-bench" tables "${table_captures[@]}" --out
 step tables_buffer 120 30 "$bin/vsgl-bench" tables "${table_captures[@]}" --out "$run/buffer" --pyramid buffer \
   "${paper[@]}" --no-progress --time-cap 35 "${tables_quick[@]}"
 
-# 5b. Quality (DESIGN.md §11a) per scene against a reference capture: the same frame recorded again
-# with a larger RSM, whose texels are the reference's VPLs (the paper-size 512^2 RSM is about 0.08
-# relative RMSE from the continuum on Sponza). Each scene's quality.json is written whole or not.
-record_reference() {
-  # $reference_size unquoted: options
-  "$bin/vsgl-bench" record --scene "$1" --assets "$assets" --out "$captures/$1-reference" $reference_size
-}
-for scene in "${scenes[@]}"; do
-  step "reference_capture_$scene" 90 20 record_reference "$scene" &&
-    step "quality_$scene" 180 40 "$bin/vsgl-bench" quality --capture "$captures/$scene" \
-      --reference-capture "$captures/$scene-reference" "${quality_args[@]}" --out "$run/quality"
-  rm -rf "$captures/$scene-reference"  # up to 1 GiB each at 4096^2
-done
-
 # 6-7. The Google Benchmark binaries, JSON out.
 step mipbench 60 15 "$bin/vsgl-mipbench" --vsgl_captures="$captures" --vsgl_assets="$assets" "${replays[@]}" \
   --benchmark_out="$run/mipbench.json" --benchmark_out_format=json
@@ -347,7 +333,7 @@ step gbench 90 20 "$bin/vsgl-gbench" --vsgl_captures="$captures" --vsgl_assets="
 step sweep 90 30 "$bin/vsgl-bench" sweep --capture "$captures/${scenes[0]}" "${sweep_args[@]}" --out "$run/sweep" \
   --schema results/schema/sweep.schema.json --no-progress
 
-# 8. The GPU test suites, last, on this machine's default device under the validation layer (the
+# 8. The GPU test suites, on this machine's default device under the validation layer (the
 # fixture fails a test on any validation message): one process and one gtest JSON per suite, so
 # a crash costs that suite alone; GpuAssistedValidation (a driver it has never met) runs last.
 run_tests() {
@@ -397,4 +383,20 @@ if [[ -d $run/tests ]]; then
   say "   tests: $(cat "$run"/tests/*.txt | grep -c '^\[       OK \]') passed, $(cat "$run"/tests/*.txt | grep -c '^\[  FAILED  \] .*(') failed, $(cat "$run"/tests/*.txt | grep -c '^\[  SKIPPED \] .*(') skipped in $(ls "$run"/tests/*.txt | wc -l) suites, $(ls "$run"/tests/*.json 2>/dev/null | wc -l) with JSON; validation errors outside the GPU-AV positive control: $(cat "$run"/tests/*.txt | grep 'Validation Error' | grep -vc 'positive control')"
   grep -h '^\[  FAILED  \] .*(' "$run"/tests/*.txt | sed 's/^/   /' | tee -a "$log" >&2
 fi
+
+# 9. Quality (DESIGN.md §11a) per scene against a reference capture: the same frame recorded again
+# with a larger RSM, whose texels are the reference's VPLs; it extends the reference's convergence
+# ladder past what lavapipe can shade. Last: the steps above are the run's deliverables, and each
+# scene's quality.json is written whole or not.
+record_reference() {
+  # $reference_size unquoted: options
+  "$bin/vsgl-bench" record --scene "$1" --assets "$assets" --out "$captures/$1-reference" $reference_size
+}
+for scene in "${scenes[@]}"; do
+  step "reference_capture_$scene" 90 20 record_reference "$scene" &&
+    step "quality_$scene" 180 40 "$bin/vsgl-bench" quality --capture "$captures/$scene" \
+      --reference-capture "$captures/$scene-reference" "${quality_args[@]}" --out "$run/quality"
+  rm -rf "$captures/$scene-reference"  # up to 1 GiB each at 4096^2
+done
+
 exit $status
