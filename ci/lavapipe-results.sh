@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Regenerates every committed lavapipe result from freshly recorded captures, in the order of
-# their importance: captures, verify, Tables 1-2, quality (both scenes, with their sequences),
+# their importance: captures, verify, Tables 1-2, quality (both scenes, with their sequences), the
+# reference ladder (Sponza against 2048^2 reference VPLs),
 # the shading pictures, the two compare reports, and the dashboard (+ screenshot when a headless
-# Chromium is there). Each step's wall time goes to OUT/regenerate.log. Long: about 2 hours on
+# Chromium is there). Each step's wall time goes to OUT/regenerate.log. Long: about 2.5 hours on
 # lavapipe on a 2-core machine. Not part of .ci/run.
 #
 # The scenes are the paper's own, Crytek Sponza (Table 1) and the Conference room (Table 2), from
@@ -17,7 +18,7 @@
 # those cases are recorded as beyond the device and FIS is timed. VSGL_SWEEPS="rsm K" runs only
 # the sweeps named.
 # Usage: bash ci/lavapipe-results.sh [--stand-ins] [STEP...]   steps: record verify tables quality
-#        shade compare sweep dashboard (default: all, in that order). VSGL_BENCH=path/to/vsgl-bench to pick
+#        reference-ladder shade compare sweep dashboard (default: all, in that order). VSGL_BENCH=path/to/vsgl-bench to pick
 #        a build; --assets DIR is passed on to record and sweep (repeatable): the paper's scenes' models
 #        are looked for there and in VSGL_ASSETS, never beside the checkout, so one of the two is
 #        needed unless --stand-ins.
@@ -37,8 +38,8 @@ while [[ $# -gt 0 ]]; do
   esac
   shift
 done
-[[ ${#steps[@]} -gt 0 ]] || steps=(record verify tables quality shade compare sweep dashboard)
-if [[ $out == results/lavapipe && ${#assets[@]} -eq 0 && -z ${VSGL_ASSETS:-} && " ${steps[*]} " =~ " "(record|sweep)" " ]]; then
+[[ ${#steps[@]} -gt 0 ]] || steps=(record verify tables quality reference-ladder shade compare sweep dashboard)
+if [[ $out == results/lavapipe && ${#assets[@]} -eq 0 && -z ${VSGL_ASSETS:-} && " ${steps[*]} " =~ " "(record|sweep|reference-ladder)" " ]]; then
   echo "ci/lavapipe-results.sh: where are the paper's scenes? pass --assets DIR or set VSGL_ASSETS (DIR/sponza, DIR/conference), or use --stand-ins" >&2
   exit 2
 fi
@@ -79,6 +80,18 @@ for s in "${steps[@]}"; do
           --out "$caps/sequences/$scene"
         step "quality $scene" "$bench" quality --capture "$caps/$scene" --sequence "$caps/sequences/$scene" \
           --out "$out/quality"
+      done ;;
+    reference-ladder)
+      # How the reference converges with its RSM (DESIGN.md §11a): the first scene recorded again
+      # with a 2048^2 RSM (a reference capture), its VPLs at 512^2, 1024^2 and 2048^2 (each with its
+      # own convergence rows), shading the same 120x68 pixels. About 25 minutes on lavapipe.
+      ladder_capture=$caps/${scenes[0]}-reference-2048
+      step "reference capture ${scenes[0]}" "$bench" record --scene "${scenes[0]}" "${assets[@]}" --rsm 2048 \
+        --out "$ladder_capture"
+      for side in 512 1024 2048; do
+        step "reference ladder $side" "$bench" quality --capture "$caps/${scenes[0]}" --reference-capture "$ladder_capture" \
+          --reference-rsm "$side" --error-stride 16 --frames 2 --k-sweep 1 --generators fis_tok15 \
+          --out "$out/reference-ladder/rsm-$side"
       done ;;
     shade)
       for scene in "${scenes[@]}"; do
