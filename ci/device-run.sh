@@ -321,10 +321,14 @@ step tables_texture 150 30 "$bin/vsgl-bench" tables "${table_captures[@]}" --out
 step tables_buffer 120 30 "$bin/vsgl-bench" tables "${table_captures[@]}" --out "$run/buffer" --pyramid buffer \
   "${paper[@]}" --no-progress --time-cap 35 "${tables_quick[@]}"
 
-# 6-7. The Google Benchmark binaries, JSON out.
-step mipbench 60 15 "$bin/vsgl-mipbench" --vsgl_captures="$captures" --vsgl_assets="$assets" "${replays[@]}" \
+# 6-7. The Google Benchmark binaries, JSON out. Their --vsgl_captures is a cache of the paper-size
+# captures: where a capture there has other sizes they record over it, so the --quick rehearsal,
+# whose captures are small, gives them a folder of their own.
+bench_captures=$captures
+! $quick || bench_captures=$captures/benchmarks
+step mipbench 60 15 "$bin/vsgl-mipbench" --vsgl_captures="$bench_captures" --vsgl_assets="$assets" "${replays[@]}" \
   --benchmark_out="$run/mipbench.json" --benchmark_out_format=json
-step gbench 90 20 "$bin/vsgl-gbench" --vsgl_captures="$captures" --vsgl_assets="$assets" "${replays[@]}" "${gbench_quick[@]}" \
+step gbench 90 20 "$bin/vsgl-gbench" --vsgl_captures="$bench_captures" --vsgl_assets="$assets" "${replays[@]}" "${gbench_quick[@]}" \
   --benchmark_out="$run/gbench.json" --benchmark_out_format=json
 
 # 7b. A short sweep (DESIGN.md §10.1) on Table 1's capture: N on both views times the PDF's
