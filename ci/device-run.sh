@@ -397,7 +397,8 @@ record_reference() {
   "$bin/vsgl-bench" record --scene "$1" --assets "$assets" --out "$captures/$1-reference" $reference_size
 }
 for scene in "${scenes[@]}"; do
-  step "reference_capture_$scene" 90 20 record_reference "$scene" &&
+  # Its minimum leaves quality's: a reference capture with no time to use it is not recorded.
+  step "reference_capture_$scene" 90 60 record_reference "$scene" &&
     step "quality_$scene" 180 40 "$bin/vsgl-bench" quality --capture "$captures/$scene" \
       --reference-capture "$captures/$scene-reference" "${quality_args[@]}" --out "$run/quality"
   rm -rf "$captures/$scene-reference"  # up to 1 GiB each at 4096^2
