@@ -219,8 +219,10 @@ step() {
 }
 
 if $quick; then
-  size="--gbuffer 480x272 --rsm 128"
-  reference_size="--gbuffer 480x272 --rsm ${reference_rsm:-256}"
+  # The reference capture must have the capture's G-buffer (quality refuses any other).
+  gbuffer="--gbuffer 480x272"
+  size="$gbuffer --rsm 128"
+  reference_size="$gbuffer --rsm ${reference_rsm:-256}"
   quality_args=(--frames 4 --k-sweep 1,2 --error-stride 8)
   tables_quick=(--quick)
   replays=(--vsgl_replays=3 --vsgl_tables=1)
