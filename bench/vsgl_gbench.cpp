@@ -45,7 +45,7 @@
 #include "harness/generators/generator_registry.hpp"
 #include "harness/report/capture_cases.hpp"
 #include "harness/report/capture_scene_identity.hpp"
-#include "harness/report/table_measurement.hpp"
+#include "harness/report/table_timing.hpp"
 #include "harness/report/tables_run.hpp"
 #include "harness/scene/named_scene.hpp"
 #include "harness/timing/run_provenance.hpp"

@@ -14,7 +14,7 @@
 #include "harness/report/run_context.hpp"
 #include "harness/report/table_json.hpp"
 #include "harness/report/table_markdown.hpp"
-#include "harness/report/table_measurement.hpp"
+#include "harness/report/table_timing.hpp"
 #include "harness/scene/capture_provisioning.hpp"
 #include "harness/vk/device.hpp"
 

@@ -5,7 +5,7 @@
 #include <map>
 
 #include "harness/core/bootstrap.hpp"
-#include "harness/core/equivalence_test.hpp"
+#include "harness/core/equivalence_tost.hpp"
 #include "harness/core/error.hpp"
 #include "harness/core/holm_correction.hpp"
 #include "harness/core/text_format.hpp"

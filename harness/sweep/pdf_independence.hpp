@@ -6,7 +6,7 @@
 // with a percentile bootstrap interval over the rounds (core/bootstrap.hpp).
 //
 // The FIS side is an equivalence test (DESIGN.md §10.1): per FIS case (generator, view) the TOST
-// at ±kFisPdfChangeMax of its change at every γ (core/equivalence_test.hpp); the case is
+// at ±kFisPdfChangeMax of its change at every γ (core/equivalence_tost.hpp); the case is
 // equivalent when every γ is (an intersection-union test: its p-value is the largest over γ), not
 // equivalent when some γ lies outside the band (its p-value the smallest over γ times their
 // number), each family Holm-corrected across the FIS cases at alpha (core/holm_correction.hpp).
@@ -31,7 +31,7 @@ struct GammaChange {
   double change = 0;      // median total(γ) / median total(reference γ) - 1
   double low = 0, high = 0;
   bool reference = false;                  // the reference γ itself: change 0 by construction, not tested
-  double p_equivalent = 1, p_outside = 1;  // TOST at ±band (core/equivalence_test.hpp); 1 at the reference
+  double p_equivalent = 1, p_outside = 1;  // TOST at ±band (core/equivalence_tost.hpp); 1 at the reference
 };
 
 // A FIS case's equivalence verdict: its p-values over γ and the Holm levels they were held to.

@@ -8,7 +8,7 @@
 #include "harness/reference/fis_reference.hpp"
 #include "harness/report/capture_scene_identity.hpp"
 #include "harness/report/run_context.hpp"
-#include "harness/report/table_measurement.hpp"
+#include "harness/report/table_timing.hpp"
 #include "harness/sweep/pdf_sharpening.hpp"
 #include "harness/vk/device.hpp"
 

@@ -1,6 +1,6 @@
 #pragma once
 // `vsgl-bench sweep` as a library function (DESIGN.md §10.1): the tables' protocol (the same
-// capture provisioning, uploads, recorded cases and interleaved timing, report/table_measurement.hpp)
+// capture provisioning, uploads, recorded cases and interleaved timing, report/table_timing.hpp)
 // at every point of the product of one or more axes, then the growth fits, and OUT/sweep.json
 // (validated against results/schema/sweep.schema.json), OUT/sweep.md and the SVG plots, written
 // atomically once everything is complete. Before that, OUT/sweep.json is rewritten after each point

@@ -1,4 +1,4 @@
-#include "harness/core/equivalence_test.hpp"
+#include "harness/core/equivalence_tost.hpp"
 
 #include <algorithm>
 #include <cmath>

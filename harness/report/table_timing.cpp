@@ -1,4 +1,4 @@
-#include "harness/report/table_measurement.hpp"
+#include "harness/report/table_timing.hpp"
 
 #include <cstdio>
 #include <filesystem>
@@ -54,8 +54,9 @@ TableMeasurement measure_table(Device& device, const TablesOptions& o, const Tab
   if (capture.meta.brsm_pyramid) t.capture["brsm_pyramid"] = pyramid_path_name(*capture.meta.brsm_pyramid);
   if (capture.meta.source) {
     const SceneSource& src = *capture.meta.source;
-    t.capture["source"] = ojson{{"format", src.format},         {"file", src.file},     {"content_hash", src.content_hash},
-                                {"triangles", src.triangles},   {"camera", src.camera}, {"light", src.light}};
+    t.capture["source"] =
+        ojson{{"format", src.format},       {"file", src.file},     {"content_hash", src.content_hash},
+              {"triangles", src.triangles}, {"camera", src.camera}, {"light", src.light}};
   }
   out.config = config_json(o, capture, device.info());
   t.views["camera_view"] = ViewExtent{capture.gbuffer.width, capture.gbuffer.height};
@@ -71,7 +72,8 @@ TableMeasurement measure_table(Device& device, const TablesOptions& o, const Tab
   say("measuring copy bandwidth (two device-local buffers of " + mib(o.copy_bandwidth.bytes) + ")");
   t.copy_bandwidth = measure_copy_bandwidth(device, o.copy_bandwidth);
   if (!t.copy_bandwidth.reduced_because.empty())
-    say("copy bandwidth measured with buffers of " + mib(t.copy_bandwidth.bytes) + ": " + t.copy_bandwidth.reduced_because);
+    say("copy bandwidth measured with buffers of " + mib(t.copy_bandwidth.bytes) + ": " +
+        t.copy_bandwidth.reduced_because);
 
   say("timing " + (number != 0 ? "table " + std::to_string(number) + " (" + t.scene + ")" : "capture " + t.scene) +
       ": " + std::to_string(2 * o.generators.size()) + " cases");

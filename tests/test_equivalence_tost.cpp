@@ -1,4 +1,4 @@
-// harness/core/equivalence_test.hpp and holm_correction.hpp on hand-made replicates and p-values
+// harness/core/equivalence_tost.hpp and holm_correction.hpp on hand-made replicates and p-values
 // whose answers can be counted by hand.
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "harness/core/equivalence_test.hpp"
+#include "harness/core/equivalence_tost.hpp"
 #include "harness/core/holm_correction.hpp"
 
 namespace vsgl {
