@@ -128,12 +128,6 @@ std::vector<double> range_values(double a, double b, const std::string& step, co
 
 const char* sweep_parameter_name(SweepParameter p) { return info_of(p).name; }
 
-std::vector<std::string> sweep_parameter_names() {
-  std::vector<std::string> out;
-  for (const auto& i : kParameters) out.emplace_back(i.name);
-  return out;
-}
-
 std::optional<SweepParameter> sweep_parameter_from_name(std::string_view name) {
   for (const auto& i : kParameters)
     if (name == i.name) return i.parameter;

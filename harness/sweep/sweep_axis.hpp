@@ -24,7 +24,6 @@ enum class SweepParameter {
 
 // "vsgls", "camera-vsgls", ..., "pdf-sharpness": the names of --axis.
 const char* sweep_parameter_name(SweepParameter parameter);
-std::vector<std::string> sweep_parameter_names();
 // The parameter an axis name names (a sweep document's axis); none for an unknown name.
 std::optional<SweepParameter> sweep_parameter_from_name(std::string_view name);
 

@@ -113,16 +113,4 @@ void download(Device& device, const Buffer& src, void* data, std::size_t bytes, 
   std::memcpy(data, readback.mapped(), bytes);
 }
 
-void fill_zero(Device& device, const Buffer& dst) {
-  device.submit_and_wait(
-      [&](VkCommandBuffer cmd) {
-        barrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT,
-                VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
-        vkCmdFillBuffer(cmd, dst.get(), 0, VK_WHOLE_SIZE, 0);
-        barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
-                VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT);
-      },
-      "fill " + dst.name());
-}
-
 }  // namespace vsgl

@@ -49,8 +49,6 @@ class Buffer {
 void upload(Device& device, const Buffer& dst, const void* data, std::size_t bytes, VkDeviceSize offset = 0);
 // Copies a device buffer's range back to the host, after making all earlier writes visible.
 void download(Device& device, const Buffer& src, void* data, std::size_t bytes, VkDeviceSize offset = 0);
-// Zero-fills a buffer on the device.
-void fill_zero(Device& device, const Buffer& dst);
 
 template <class T>
 std::vector<T> download_vector(Device& device, const Buffer& src, std::size_t count, VkDeviceSize offset = 0) {

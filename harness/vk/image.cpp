@@ -117,12 +117,6 @@ Sampler::Sampler(Device& device, const VkSamplerCreateInfo& info, const std::str
   device.set_name(sampler, VK_OBJECT_TYPE_SAMPLER, name);
 }
 
-VkFormatFeatureFlags optimal_format_features(const Device& device, VkFormat format) {
-  VkFormatProperties props{};
-  vkGetPhysicalDeviceFormatProperties(device.physical(), format, &props);
-  return props.optimalTilingFeatures;
-}
-
 void change_image_layouts(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, uint32_t layers,
                           const std::vector<ImageLevelLayout>& changes, VkPipelineStageFlags src_stages,
                           VkAccessFlags src_access, VkPipelineStageFlags dst_stages, VkAccessFlags dst_access) {

@@ -102,7 +102,4 @@ class Sampler {
   UniqueHandle<VkSampler> sampler_;
 };
 
-// Which features `format` has with optimal tiling on the device.
-VkFormatFeatureFlags optimal_format_features(const Device& device, VkFormat format);
-
 }  // namespace vsgl
