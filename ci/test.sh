@@ -14,7 +14,8 @@ bash ci/check-format.sh
 start=$(date +%s)
 cmake --preset ci
 cmake --build --preset ci
-# The libFuzzer targets (clang), outside the default build; the suite's fuzz_smoke runs them.
+# The libFuzzer targets (clang), outside the default build; building them asks the suite's
+# fuzz_smoke to run them (it fails, never skips, without them: tests/CMakeLists.txt).
 cmake --build --preset ci --target vsgl_fuzz_targets
 built=$(date +%s)
 # Tests pick lavapipe (VSGL_TEST_DEVICE overrides) even when a GPU is present.
