@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -163,6 +164,39 @@ TEST(ScenePresets, ATableUsesItsStandInWhenThePaperModelIsMissing) {
   EXPECT_FALSE(t1.paper);
   EXPECT_NE(t1.note.find("sponza"), std::string::npos) << t1.note;
   EXPECT_EQ(table_scene(2, SceneLibrary{}).scene, "conference");
+}
+
+// GitHub's anchor of a markdown heading: lower case, punctuation dropped, spaces to '-'.
+std::string heading_anchor(const std::string& heading) {
+  std::string out;
+  for (const char c : heading) {
+    if (c == ' ') out += '-';
+    else if (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_')
+      out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  }
+  return out;
+}
+
+// The stand-in warning tells a new user where the models are looked for and names the docs
+// section that says where to get them; that section must exist under that anchor.
+TEST(ScenePresets, TheStandInWarningNamesWhereModelsAreLookedForAndTheDocsSection) {
+  test::TempDir tmp("standin_warning");
+  const SceneLibrary nowhere{built_in_scene_presets(), AssetSearch{{{tmp.path() / "empty", "--assets"}}}};
+  for (const int table : {1, 2}) {
+    const std::string note = table_scene(table, nowhere).note;
+    for (const char* part : {"--assets DIR", "VSGL_ASSETS", "assets/", kPaperScenesSection, "stand-in"})
+      EXPECT_NE(note.find(part), std::string::npos) << part << " in: " << note;
+  }
+  const std::string section(kPaperScenesSection);
+  const std::size_t hash = section.find('#');
+  ASSERT_NE(hash, std::string::npos);
+  std::ifstream doc(test::kSource / section.substr(0, hash));
+  ASSERT_TRUE(doc) << section.substr(0, hash);
+  bool found = false;
+  for (std::string line; std::getline(doc, line);)
+    if (line.rfind("#", 0) == 0)
+      found = found || heading_anchor(line.substr(line.find_first_not_of("# "))) == section.substr(hash + 1);
+  EXPECT_TRUE(found) << "no heading of " << section.substr(0, hash) << " has the anchor " << section.substr(hash + 1);
 }
 
 class ScenePresetsTest : public test::GpuTest {};

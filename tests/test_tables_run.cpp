@@ -4,6 +4,7 @@
 // Also the schema validator itself and the line counter on hand-made inputs.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -18,7 +19,9 @@
 #include "harness/core/json_schema_subset.hpp"
 #include "harness/core/source_lines.hpp"
 #include "harness/report/tables_run.hpp"
+#include "harness/scene/asset_search.hpp"
 #include "harness/scene/capture_provisioning.hpp"
+#include "harness/scene/scene_preset.hpp"
 
 namespace vsgl {
 namespace {
@@ -51,12 +54,23 @@ class TablesRunTest : public test::GpuTest {};
 TEST_F(TablesRunTest, TinyRunProducesCompleteFiniteTablesThatMatchTheSchema) {
   const TempDir temp("tables_complete");
   const fs::path& root = temp.path();
-  const TablesOptions o = tiny_options(root);
+  TablesOptions o = tiny_options(root);
+  o.scenes = SceneLibrary{built_in_scene_presets(), AssetSearch{{{root / "no-models", "--assets"}}}};
   std::vector<std::string> messages;
   const TablesOutcome out = run_tables(device(), o, [&](const TablesEvent& e) {
     if (e.progress == nullptr) messages.push_back(e.message);
   });
   ASSERT_EQ(out.documents.size(), 2u);
+  // Without the paper's models it warns first, once per table, before recording or timing anything.
+  ASSERT_GE(messages.size(), 3u);
+  for (const int table : {1, 2}) {
+    const std::string& m = messages[static_cast<std::size_t>(table - 1)];
+    EXPECT_EQ(m.rfind("warning: table " + std::to_string(table) + ": the paper's scene", 0), 0u) << m;
+    EXPECT_NE(m.find(kPaperScenesSection), std::string::npos) << m;
+  }
+  EXPECT_EQ(std::count_if(messages.begin(), messages.end(),
+                          [](const std::string& m) { return m.find("the paper's scene") != std::string::npos; }),
+            2);
   EXPECT_TRUE(fs::exists(root / "captures/atrium/capture.json"));  // recorded because missing
   EXPECT_TRUE(fs::exists(root / "captures/conference/capture.json"));
   const nlohmann::json schema = read_json(kTableSchema);

@@ -145,8 +145,9 @@ TableScene table_scene(int table, const SceneLibrary& library) {
     } catch (const InputError&) {
       return TableScene{stand_in, false,
                         "table " + std::to_string(table) + ": the paper's scene " + name +
-                            " is not here (its model was not found; see `vsgl-bench record --scene " + name +
-                            "`), so the procedural stand-in " + stand_in + " is used"};
+                            " is not here (its model is looked for under each --assets DIR, then VSGL_ASSETS, then "
+                            "assets/ in the current directory; where to get it: " +
+                            kPaperScenesSection + "), so the procedural stand-in " + stand_in + " is timed"};
     }
     return TableScene{name, true, {}};
   }
@@ -176,7 +177,13 @@ TablesOutcome run_tables(Device& device, const TablesOptions& o, const std::func
   // without the Table 1 -> 2 change until the other paper table is measured; then the new one is
   // written and the earlier one rewritten with it, so a complete run ends with the same files as
   // when everything was written at the end.
-  const std::vector<TableInput> inputs = table_inputs(o);
+  std::vector<TableInput> inputs = table_inputs(o);
+  // Said once, before minutes of recording and timing: what is timed is not the paper's scene.
+  for (TableInput& input : inputs) {
+    if (input.scene.note.empty()) continue;
+    if (on_event) on_event(TablesEvent{"warning: " + input.scene.note, nullptr, input.paper_table});
+    input.scene.note.clear();
+  }
   std::vector<TableMeasurement> measured;
   measured.reserve(inputs.size());
   std::vector<const MeasuredTable*> written_with;  // the `other` of each table's files on disk

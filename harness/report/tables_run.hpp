@@ -61,9 +61,14 @@ struct TablesOptions {
   std::vector<std::string> debug_slow;
 };
 
+// The docs section that says where the paper's scene models are looked for and where to get them;
+// the stand-in note names it (tests/test_scene_presets.cpp checks that the heading exists).
+inline constexpr const char* kPaperScenesSection = "docs/scenes.md#the-papers-scenes-presets";
+
 // The scene of a paper table: the preset of `library` whose paper_table is `table`, when its model
-// is found; else the procedural stand-in, with a note saying why. Throws UsageError for a table
-// other than 1, 2, and InputError for a broken preset.
+// is found; else the procedural stand-in, with a note saying why, where the model is looked for and
+// where to get it (kPaperScenesSection). Throws UsageError for a table other than 1, 2, and
+// InputError for a broken preset. run_tables() prints the notes as warnings before anything is timed.
 struct TableScene {
   std::string scene;
   bool paper = false;
