@@ -188,6 +188,59 @@ TEST(DashboardPage, AnIncompleteSweepIsMarkedAndStillDrawn) {
   EXPECT_NE(c.find("cost \u221d N^"), std::string::npos) << "fitted over the two points";
 }
 
+// A table document of a capture that is not one of the paper's (`tables --capture DIR` on a user's
+// glTF scene writes OUT/<scene>.json, "table": null), made from a committed table.
+nlohmann::ordered_json user_scene_table(const std::string& scene) {
+  nlohmann::ordered_json doc = nlohmann::ordered_json::parse(read_text(kResults / "lavapipe/table1.json"));
+  doc["table"] = nullptr;
+  doc["scene"] = nlohmann::ordered_json{{"name", scene},
+                                        {"kind", "user"},
+                                        {"model_file", "room/room.gltf"},
+                                        {"content_hash", "fnv1a64:0123456789abcdef"},
+                                        {"triangles", 1234}};
+  return doc;
+}
+
+// Every table document under the folder is drawn, known by its content whatever its file is named:
+// a user's scene gets its own section (its runs' phases and totals, no paper beside them), other
+// JSON is left alone, and `dashboard` on a folder of such a table alone succeeds.
+TEST(DashboardPage, AUserSceneTableIsDrawnInASectionOfItsOwn) {
+  const test::TempDir dir("dashboard_user_scene");
+  make_results(dir.path(), {});
+  fs::create_directories(dir.path() / "mine");
+  std::ofstream(dir.path() / "mine/my_room.json") << user_scene_table("my_room").dump(1);
+  std::ofstream(dir.path() / "mine/notes.json") << "{not JSON";  // not a table document: skipped
+  std::ofstream(dir.path() / "mine/list.json") << "[1, 2, 3]";   // neither
+  const auto runs = find_table_runs(dir.path());
+  ASSERT_EQ(runs.size(), find_table_runs(kResults).size() + 1);
+  const BenchRun& user = runs.back();  // after the paper's tables
+  EXPECT_EQ(user.path, "mine/my_room.json");
+  ASSERT_TRUE(user.tables.contains(0));
+  EXPECT_NE(user.find("my_room/fis_modified/total"), nullptr);
+  const std::string html = dashboard_html(runs, load_paper_tables(kResults / "paper/paper_tables.json"), "results",
+                                          cli::dashboard_generators());
+  EXPECT_NE(html.find("id=\"table1\""), std::string::npos);  // the paper's tables stay
+  const std::string section = between(html, "id=\"scene-my-room\"", "</section>");
+  ASSERT_FALSE(section.empty()) << "no section of the user's scene";
+  EXPECT_NE(section.find("my_room, user"), std::string::npos) << section.substr(0, 400);
+  EXPECT_EQ(occurrences(section, "class=\"chart bars run\""), 1u);
+  EXPECT_EQ(occurrences(section, "class=\"chart bars paper\""), 0u) << "no paper numbers beside a user's scene";
+  EXPECT_EQ(occurrences(section, "class=\"chart timeseries\""), 4u);      // a total per generator
+  EXPECT_NE(html.find("<td>mine/my_room.json</td>"), std::string::npos);  // in the list of runs
+
+  // `compare` and `export` key runs by paper table: they refuse it, saying who reads it.
+  const std::string refused = test::input_error([&] { load_bench_run(dir.path() / "mine/my_room.json"); });
+  EXPECT_NE(refused.find("dashboard draws it"), std::string::npos) << refused;
+
+  // The command, on the folder `tables --capture DIR --out OUT` would leave.
+  const test::TempDir only("dashboard_user_scene_only");
+  std::ofstream(only.path() / "my_room.json") << user_scene_table("my_room").dump(1);
+  const fs::path site = only.path() / "site";
+  const test::CliResult r = test::run_cli("dashboard " + only.path().string() + " --out " + site.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(read_text(site / "index.html").find("id=\"scene-my-room\""), std::string::npos);
+}
+
 TEST(DashboardPage, ScalingSectionSaysInOneLineThatThereIsNoSweep) {
   const std::string html =
       dashboard_html(find_table_runs(kResults), load_paper_tables(kResults / "paper/paper_tables.json"), "results",

@@ -13,6 +13,7 @@
 
 #include "gpu_test.hpp"
 #include "test_support.hpp"
+#include "harness/compare/dashboard_page.hpp"
 #include "harness/compare/regression_run.hpp"
 #include "harness/core/error.hpp"
 #include "harness/generators/generator_registry.hpp"
@@ -247,6 +248,12 @@ TEST_F(TablesRunTest, UserCapturesGetTheirOwnTables) {
   EXPECT_NE(out.markdown[0].find("## Scene tiny"), std::string::npos);
   EXPECT_NE(md.find("lines differ"), std::string::npos) << md;  // the FIS variants' diff and its rule
   EXPECT_NE(md.find("Counted: "), std::string::npos) << md;
+  // The dashboard reads the folder such a run leaves (compare and export refuse the null table).
+  const std::vector<BenchRun> drawn = find_table_runs(o.out_dir);
+  ASSERT_EQ(drawn.size(), 1u);
+  EXPECT_EQ(drawn[0].path, "tiny.json");
+  EXPECT_NE(drawn[0].find("tiny/fis_modified/total"), nullptr);
+  EXPECT_THROW(load_bench_run(o.out_dir / "tiny.json"), InputError);
 
   o.captures = {root / "tiny", root / "tiny"};
   try {

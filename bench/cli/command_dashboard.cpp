@@ -1,6 +1,6 @@
 // `vsgl-bench dashboard RESULTS_DIR --out SITE` (DESIGN.md §10): SITE/index.html, one self-contained
 // page (inline SVG charts, no script, nothing fetched) from every table JSON under RESULTS_DIR,
-// beside the paper's numbers, and every sweep JSON's scaling (harness/compare/dashboard_page.hpp,
+// a paper table's beside the paper's numbers, and every sweep JSON's scaling (harness/compare/dashboard_page.hpp,
 // dashboard_scaling.hpp).
 #include <cstdio>
 #include <filesystem>
@@ -26,9 +26,10 @@ Command add_dashboard_command(CLI::App& parent) {
   CLI::App* app = parent.add_subcommand(
       "dashboard",
       "OUT/index.html: one self-contained page of inline SVG charts (no script, nothing fetched) of every table "
-      "JSON under RESULTS_DIR: phases per generator per run beside the paper, totals across runs; and of every "
-      "sweep JSON (sweep.json of `sweep`): per axis the totals on a log-log chart and the growth fits with "
-      "their verdicts");
+      "JSON under RESULTS_DIR, known by its content (the paper's tableN.json and a capture's OUT/<scene>.json of "
+      "`tables --capture`): phases per generator per run, beside the paper for a paper table, totals across "
+      "runs; and of every sweep JSON (sweep.json of `sweep`): per axis the totals on a log-log chart and the "
+      "growth fits with their verdicts");
   struct Options {
     std::string results;
     std::string out;
@@ -36,7 +37,7 @@ Command add_dashboard_command(CLI::App& parent) {
   };
   auto o = std::make_shared<Options>();
   app->add_option("RESULTS_DIR", o->results,
-                  "directory searched for table JSON (tableN.json) and sweep JSON (sweep.json)")
+                  "directory searched for table JSON (any *.json that is one) and sweep JSON (sweep.json)")
       ->required();
   app->add_option("--out", o->out, "output directory")->required()->type_name("DIR");
   add_optional(*app, "--paper", o->paper, "the paper's tables (default: the copy built into vsgl-bench)")
@@ -46,7 +47,8 @@ Command add_dashboard_command(CLI::App& parent) {
             const std::vector<BenchRun> runs = find_table_runs(path_from_utf8(o->results));
             const std::vector<SweepRun> sweeps = find_sweep_runs(path_from_utf8(o->results));
             if (runs.empty() && sweeps.empty())
-              throw InputError(o->results + ": no table JSON (tableN.json) and no sweep JSON (sweep.json) found");
+              throw InputError(o->results +
+                               ": no table JSON (the output of `tables`) and no sweep JSON (sweep.json) found");
             const nlohmann::json paper = paper_tables_or_built_in(
                 o->paper ? std::optional<std::filesystem::path>(path_from_utf8(*o->paper)) : std::nullopt);
             std::filesystem::create_directories(path_from_utf8(o->out));

@@ -1,7 +1,9 @@
 #include "harness/compare/dashboard_page.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
+#include <fstream>
 #include <tuple>
 #include <map>
 #include <set>
@@ -12,6 +14,7 @@
 #include "harness/compare/dashboard_svg.hpp"
 #include "harness/compare/svg_markup.hpp"
 #include "harness/core/error.hpp"
+#include "harness/core/json_reader.hpp"
 #include "harness/core/path_text.hpp"
 
 namespace vsgl {
@@ -45,6 +48,38 @@ std::string day(const std::string& date) { return date.substr(0, std::min<std::s
 
 std::string short_commit(const std::string& commit) {
   return commit == "unknown" ? "(no commit)" : commit.substr(0, std::min<std::size_t>(commit.size(), 7));
+}
+
+// A chart section: a paper table, or (table 0) the table of one capture that is not the paper's,
+// known by its scene's name.
+struct Section {
+  int table = 0;
+  std::string scene;  // table 0 only
+
+  bool operator==(const Section&) const = default;
+};
+
+std::string scene_name_of(const BenchRun& r, int table) {
+  const auto t = r.tables.find(table);
+  return t != r.tables.end() && t->second.scene ? t->second.scene->name : "";
+}
+
+Section section_of(const BenchRun& r, int table) { return Section{table, table == 0 ? scene_name_of(r, 0) : ""}; }
+
+bool in_section(const BenchRun& r, const Section& section) {
+  return r.tables.contains(section.table) && section_of(r, section.table) == section;
+}
+
+// The stable names' first part (regression_run.hpp): "table1/", or "<scene>/" for table 0.
+std::string series_prefix(const Section& section) {
+  return section.table != 0 ? "table" + std::to_string(section.table) + "/" : section.scene + "/";
+}
+
+std::string section_id(const Section& section) {
+  if (section.table != 0) return "table" + std::to_string(section.table);
+  std::string id = "scene-";
+  for (const char c : section.scene) id += std::isalnum(static_cast<unsigned char>(c)) ? c : '-';
+  return id;
 }
 
 // A run's scene of a table: each chart and series says which scene it timed.
@@ -136,7 +171,7 @@ std::string total_series(const std::vector<const BenchRun*>& runs, int table, co
   std::map<std::string, Series> by_key;
   std::vector<std::string> order;
   for (std::size_t i = 0; i < runs.size(); ++i) {
-    const RunSeries* s = runs[i]->find("table" + std::to_string(table) + "/" + generator + "/total");
+    const RunSeries* s = runs[i]->find(series_prefix(section_of(*runs[i], table)) + generator + "/total");
     if (s == nullptr) continue;
     const std::string key = series_key(*runs[i], table);
     auto [it, fresh] = by_key.try_emplace(key);
@@ -161,15 +196,29 @@ std::vector<BenchRun> find_table_runs(const std::filesystem::path& results_dir) 
   if (!std::filesystem::is_directory(results_dir)) throw InputError(path_text(results_dir) + ": not a directory");
   std::vector<BenchRun> runs;
   for (const auto& e : std::filesystem::recursive_directory_iterator(results_dir)) {
-    const std::string name = e.path().filename().string();
-    if (!e.is_regular_file() || !is_table_file_name(name)) continue;
-    BenchRun r = load_bench_run(e.path());
-    r.path = std::filesystem::relative(e.path(), results_dir).generic_string();  // '/' on every host
+    const std::filesystem::path& file = e.path();
+    if (!e.is_regular_file() || file.extension() != ".json") continue;
+    const std::string relative = std::filesystem::relative(file, results_dir).generic_string();  // '/' on every host
+    // Known by content, not by name: a user scene's table is OUT/<scene>.json. A file named like a
+    // paper table's must read; any other JSON that is no table document is not the dashboard's.
+    nlohmann::ordered_json doc;
+    if (is_table_file_name(file.filename().string())) {
+      doc = read_json_file(file, "the run");
+    } else {
+      std::ifstream in(file, std::ios::binary);
+      doc = nlohmann::ordered_json::parse(in, nullptr, false);
+      if (doc.is_discarded() || !is_table_document(doc)) continue;
+    }
+    BenchRun r = parse_bench_run(doc, path_text(file), CaptureTables::kRead);
+    r.path = relative;
     if (r.format == "table") runs.push_back(std::move(r));
   }
+  // The paper's tables first (1, 2), then the other captures' by scene; each by date, commit, path.
   std::sort(runs.begin(), runs.end(), [](const BenchRun& a, const BenchRun& b) {
     const int ta = a.tables.begin()->first, tb = b.tables.begin()->first;
-    return std::tie(ta, a.date, a.git_commit, a.path) < std::tie(tb, b.date, b.git_commit, b.path);
+    const bool ua = ta == 0, ub = tb == 0;
+    const std::string sa = scene_name_of(a, ta), sb = scene_name_of(b, tb);
+    return std::tie(ua, ta, sa, a.date, a.git_commit, a.path) < std::tie(ub, tb, sb, b.date, b.git_commit, b.path);
   });
   return runs;
 }
@@ -206,23 +255,30 @@ std::string dashboard_html(const std::vector<BenchRun>& runs, const nlohmann::js
      << "</code>; medians in ms. Each chart has its own scale: the paper's GTX 970 numbers are beside, not on, "
         "the measured ones. Hover a bar segment or a point for its numbers.</p>\n";
 
-  std::set<int> tables;
+  // The sections in the runs' order: the paper's tables, then each other capture's scene.
+  std::vector<Section> sections;
   for (const auto& r : runs)
-    for (const auto& [n, t] : r.tables) tables.insert(n);
-  for (int table : tables) {
+    for (const auto& [n, t] : r.tables)
+      if (const Section sec = section_of(r, n); std::find(sections.begin(), sections.end(), sec) == sections.end())
+        sections.push_back(sec);
+  for (const Section& section : sections) {
+    const int table = section.table;
     std::vector<const BenchRun*> table_runs;
     for (const auto& r : runs)
-      if (r.tables.contains(table)) table_runs.push_back(&r);
+      if (in_section(r, section)) table_runs.push_back(&r);
     std::vector<std::string> scenes;
     for (const BenchRun* r : table_runs)
       if (const std::string sc = scene_of(*r, table); std::find(scenes.begin(), scenes.end(), sc) == scenes.end())
         scenes.push_back(sc);
     std::string scene_list;
     for (const auto& sc : scenes) scene_list += (scene_list.empty() ? "" : "; ") + sc;
-    os << "<section class=\"table\" id=\"table" << table << "\">\n<h2>Table " << table << " (" << xml_escape(scene_list)
-       << ")</h2>\n";
+    os << "<section class=\"table\" id=\"" << section_id(section) << "\">\n<h2>";
+    if (table != 0) os << "Table " << table << " (" << xml_escape(scene_list) << ")";
+    else os << "Scene " << xml_escape(scene_list) << " (not a paper table: no paper numbers beside it)";
+    os << "</h2>\n";
     os << "<h3>Phases per generator: camera view (dark) then light view (light), median ms</h3>\n<div class=\"charts\">\n";
-    if (paper.contains("tables") && paper["tables"].contains(std::to_string(table))) os << paper_bars(paper, table, generators) << "\n";
+    if (table != 0 && paper.contains("tables") && paper["tables"].contains(std::to_string(table)))
+      os << paper_bars(paper, table, generators) << "\n";
     for (const BenchRun* r : table_runs) os << run_bars(*r, table, generators) << "\n";
     os << "</div>\n<h3>Totals across runs (date, commit), median with q1..q3, log axis</h3>\n<div class=\"charts\">\n";
     std::vector<std::string> timed;
@@ -238,7 +294,7 @@ std::string dashboard_html(const std::vector<BenchRun>& runs, const nlohmann::js
 
   os << "<h2>Runs</h2>\n";
   if (runs.empty())
-    os << "<p>No table JSON (<code>tableN.json</code>) under <code>" << xml_escape(source) << "</code>.</p>\n";
+    os << "<p>No table JSON (the output of <code>tables</code>) under <code>" << xml_escape(source) << "</code>.</p>\n";
   os << "<table class=\"runs\"><tr><th>file</th><th>device</th><th>scene</th><th>started "
         "(UTC)</th><th>commit</th><th>notes</th></tr>\n";
   for (const auto& r : runs) {

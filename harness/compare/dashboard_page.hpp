@@ -4,9 +4,10 @@
 //  - per paper table, a stacked bar chart of the phases (camera view, then light view) per
 //    generator for each run, beside the same chart of the paper's GTX 970 numbers
 //    (results/paper/paper_tables.json); each chart has its own scale, as devices differ by
-//    orders of magnitude;
-//  - per paper table and generator, the total across runs in time order (date, then commit), one
-//    line per device, median with a q1..q3 whisker, on a log axis;
+//    orders of magnitude; after them, per scene of a capture that is no paper table's
+//    (`tables --capture DIR`: "table": null), the same charts without the paper's;
+//  - per table (or scene) and generator, the total across runs in time order (date, then commit),
+//    one line per device, median with a q1..q3 whisker, on a log axis;
 //  - the scaling section: every sweep JSON under RESULTS_DIR, a log-log chart of the totals and a
 //    table of the growth fits per axis (dashboard_scaling.hpp);
 //  - the list of runs (file, device, date, commit, flags).
@@ -21,10 +22,12 @@
 
 namespace vsgl {
 
-// Every table JSON under `results_dir` (recursively; files that are neither table JSON nor
-// anything else vsgl-bench reads as a run are skipped, sweep.json among them), sorted by table,
-// date, commit, path; none is an empty list (a results directory may hold sweeps alone). Throws
-// InputError for a table JSON that cannot be read (regression_run.hpp).
+// Every table JSON under `results_dir` (recursively), known by its content (is_table_document),
+// whatever its name: the paper's tables (tableN.json) and a capture's (OUT/<scene>.json, read as
+// table 0, regression_run.hpp CaptureTables::kRead). Other files, JSON or not (sweep.json, quality
+// JSON, schemas), are skipped. Sorted by table (the paper's first, then the others by scene), date,
+// commit, path; none is an empty list (a results directory may hold sweeps alone). Throws
+// InputError for a table JSON that cannot be read, and for a tableN.json that is not JSON.
 std::vector<BenchRun> find_table_runs(const std::filesystem::path& results_dir);
 
 // What the page shows of a generator, from the descriptor table (generators/generator_registry.hpp;

@@ -46,16 +46,18 @@ const T& required(const OrderedJsonReader& r, const std::optional<T>& v, const s
   return *v;
 }
 
-BenchRun parse_table_json(const json& doc, const OrderedJsonReader& r) {
+BenchRun parse_table_json(const json& doc, const OrderedJsonReader& r, CaptureTables capture_tables) {
   const TableModel m = table_model_from_json(doc, r.where());
   BenchRun run;
   run.format = "table";
-  if (!m.table)
+  if (!m.table && capture_tables == CaptureTables::kRefuse)
     r.fail("/table", "is null: this is the table of a capture that is not one of the paper's (scene '" +
                          (m.scene ? printable_text(m.scene->name) : std::string("?")) +
-                         "'); compare, export and dashboard key runs by paper table (1, 2) and do not read it yet");
-  if (*m.table != 1 && *m.table != 2) r.fail("/table", "is " + std::to_string(*m.table) + ", not 1 or 2");
-  const int table = *m.table;
+                         "'); compare and export key runs by paper table (1, 2) and do not read it (dashboard "
+                         "draws it)");
+  if (!m.table && !m.scene) r.fail("/scene", "missing field: a table of no paper table is known by its scene");
+  if (m.table && *m.table != 1 && *m.table != 2) r.fail("/table", "is " + std::to_string(*m.table) + ", not 1 or 2");
+  const int table = m.table ? *m.table : 0;
   if (!m.device.fields.is_object()) r.fail("/device", "missing field");
   run.device = required(r, m.device.name, "/device/name");
   run.device_type = m.device.type;
@@ -81,7 +83,7 @@ BenchRun parse_table_json(const json& doc, const OrderedJsonReader& r) {
   t.scene = m.timed_scene();
   run.tables[table] = t;
 
-  const std::string prefix = "table" + std::to_string(table) + "/";
+  const std::string prefix = table != 0 ? "table" + std::to_string(table) + "/" : m.scene->name + "/";
   for (const GeneratorTiming& g : m.generators) {
     for (const auto& [view, v] : g.views) {
       for (const PhaseTiming& p : v.phases)
@@ -185,12 +187,17 @@ const RunSeries* BenchRun::find(const std::string& name) const {
   return nullptr;
 }
 
-BenchRun parse_bench_run(const nlohmann::ordered_json& doc, const std::string& what) {
+bool is_table_document(const nlohmann::ordered_json& doc) {
+  return doc.is_object() && doc.contains("schema_version") && doc.contains("table") && doc.contains("generators") &&
+         !doc.contains("kind");
+}
+
+BenchRun parse_bench_run(const nlohmann::ordered_json& doc, const std::string& what, CaptureTables capture_tables) {
   const OrderedJsonReader r(what, JsonPathStyle::kPointer);
   if (!doc.is_object()) r.fail("", "is not a JSON object (neither a table JSON nor Google Benchmark JSON)");
   BenchRun run;
   if (doc.contains("benchmarks") && doc.contains("context")) run = parse_gbench_json(doc, r);
-  else if (doc.contains("schema_version") && doc.contains("generators")) run = parse_table_json(doc, r);
+  else if (doc.contains("schema_version") && doc.contains("generators")) run = parse_table_json(doc, r, capture_tables);
   else
     r.fail("", "neither a vsgl-bench table JSON (schema_version, generators) nor Google Benchmark JSON (context, "
                "benchmarks)");
@@ -198,8 +205,8 @@ BenchRun parse_bench_run(const nlohmann::ordered_json& doc, const std::string& w
   return run;
 }
 
-BenchRun load_bench_run(const std::filesystem::path& path) {
-  return parse_bench_run(read_json_file(path, "the run"), path_text(path));
+BenchRun load_bench_run(const std::filesystem::path& path, CaptureTables capture_tables) {
+  return parse_bench_run(read_json_file(path, "the run"), path_text(path), capture_tables);
 }
 
 BenchRun merge_bench_runs(const std::vector<BenchRun>& runs) {

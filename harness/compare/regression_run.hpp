@@ -29,7 +29,7 @@ namespace vsgl {
 
 struct RunSeries {
   std::string name;       // stable name, see above
-  int table = 0;          // 1 or 2
+  int table = 0;          // 1 or 2; 0: a capture that is not a paper table's (CaptureTables::kRead)
   std::string generator;
   std::string view;       // "camera_view" | "light_view" | "" for a generator total
   std::string phase;      // a phase name, or "total"
@@ -44,7 +44,7 @@ struct RunSeries {
 
 // What has to be equal for the timings of one paper table in two runs to be comparable.
 struct RunTable {
-  int table = 0;
+  int table = 0;                  // 0: a capture that is not a paper table's, known by its scene
   nlohmann::json capture_hashes;  // {"gbuffer": {...}, "rsm": {...}}
   nlohmann::json workload;        // the config minus the timing protocol and the descriptions
   // Which scene was timed: a paper scene and its stand-in are different inputs of one table, never
@@ -68,14 +68,24 @@ struct BenchRun {
   const RunSeries* find(const std::string& name) const;
 };
 
+// The table JSON of a capture that is not one of the paper's ("table": null: OUT/<scene>.json of
+// `tables --capture DIR`). `compare` and `export` key runs by paper table and refuse it; the
+// dashboard reads it as table 0, its series named "<scene>/generator/view/phase".
+enum class CaptureTables { kRefuse, kRead };
+
 // Reads a table JSON or a Google Benchmark JSON. Throws InputError naming the file and the
 // problem: unreadable, not JSON (also a truncated file), neither format, a missing or mistyped
 // field (with its JSON pointer), a non-positive or non-finite time, a benchmark that reported an
-// error.
-BenchRun load_bench_run(const std::filesystem::path& path);
+// error, a capture's table under CaptureTables::kRefuse.
+BenchRun load_bench_run(const std::filesystem::path& path, CaptureTables capture_tables = CaptureTables::kRefuse);
 
 // The same from a parsed document; `what` names it in messages.
-BenchRun parse_bench_run(const nlohmann::ordered_json& doc, const std::string& what);
+BenchRun parse_bench_run(const nlohmann::ordered_json& doc, const std::string& what,
+                         CaptureTables capture_tables = CaptureTables::kRefuse);
+
+// Whether a parsed document is a table JSON (results/schema/table.schema.json), by its content
+// (schema_version, table, generators, and no sweep's kind), whatever its file is named.
+bool is_table_document(const nlohmann::ordered_json& doc);
 
 // Several runs in one (e.g. table1.json + table2.json of one `tables` run). Throws InputError
 // when two of them hold the same table or a series of the same name.
