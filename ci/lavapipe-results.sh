@@ -19,12 +19,15 @@
 # the sweeps named.
 # Usage: bash ci/lavapipe-results.sh [--stand-ins] [STEP...]   steps: record verify tables quality
 #        reference-ladder shade compare sweep dashboard (default: all, in that order). VSGL_BENCH=path/to/vsgl-bench to pick
-#        a build; --assets DIR is passed on to record and sweep (repeatable): the paper's scenes' models
+#        a build; the compare step's slowed run needs the test build of vsgl-bench beside it
+#        (tests/vsgl-bench-test-build of the same build folder, VSGL_BENCH_TEST_BUILD to pick it:
+#        the shipped program has no --debug-slow, docs/testing.md); --assets DIR is passed on to record and sweep (repeatable): the paper's scenes' models
 #        are looked for there and in VSGL_ASSETS, never beside the checkout, so one of the two is
 #        needed unless --stand-ins.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bench=${VSGL_BENCH:-build/release/bench/vsgl-bench}
+test_build_bench=${VSGL_BENCH_TEST_BUILD:-$(dirname "$bench")/../tests/vsgl-bench-test-build}
 out=results/lavapipe
 caps=captures/paper
 scenes=(sponza conference-room)
@@ -98,12 +101,13 @@ for s in "${steps[@]}"; do
         step "shade $scene" "$bench" shade --capture "$caps/$scene" --stride 4 --validate --out "$out"
       done ;;
     compare)
+      [[ -x "$test_build_bench" ]] || { echo "ci/lavapipe-results.sh: no $test_build_bench for the slowed run (build it: cmake --build --preset release --target vsgl-bench-test-build)" >&2; exit 2; }
       tmp=$(mktemp -d)
       for run in A B; do
         step "compare run $run" "$bench" tables "${table_captures[@]}" --generators fis_tok15,fis_modified \
           --out "$tmp/$run" --json-only --no-progress
       done
-      step "compare run slowed" "$bench" tables "${table_captures[@]}" --generators fis_tok15,fis_modified \
+      step "compare run slowed" "$test_build_bench" tables "${table_captures[@]}" --generators fis_tok15,fis_modified \
         --debug-slow fis_modified --out "$tmp/S" --json-only --no-progress
       step "compare same" "$bench" compare "$tmp/A" "$tmp/B" --out "$out/compare_same_commit.md"
       # The slowed run must come out SLOWER: exit 1 from --fail-on is the expected answer here.

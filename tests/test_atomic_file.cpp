@@ -1,6 +1,7 @@
 // No half-written output after a kill (DESIGN.md §10, §12). Real `vsgl-bench tables` and
-// `record` runs are stopped at known points of writing a known output file by the atomic
-// writer's TEST-ONLY pause hook (harness/core/test_pause.hpp) and then killed by this test (SIGKILL;
+// `record` runs (of the test build of vsgl-bench, the shipped program with the test hooks:
+// tests/hooks/) are stopped at known points of writing a known output file by the atomic
+// writer's pause hook (tests/hooks/pause_at_write.hpp) and then killed by this test (SIGKILL;
 // TerminateProcess on Windows: tests/child_process.hpp).
 // Afterwards every output path must hold the complete old file or the complete new one, the
 // file being written at "partial" or "complete" must still be the old one (and its temporary
@@ -50,15 +51,15 @@ struct Child {
   fs::path log;
 };
 
-// Starts vsgl-bench with `args`, stdout and stderr to `log`, and the pause hook set when
-// `pause_at` is not empty.
+// Starts the test build of vsgl-bench with `args`, stdout and stderr to `log`, and the pause hook
+// set when `pause_at` is not empty.
 Child start(const std::vector<std::string>& args, const fs::path& log, const std::string& pause_at,
             const fs::path& notify) {
   const test::EnvironmentChanges hook =
       pause_at.empty()
           ? test::EnvironmentChanges{{"VSGL_TEST_PAUSE_AT", ""}}
           : test::EnvironmentChanges{{"VSGL_TEST_PAUSE_AT", pause_at}, {"VSGL_TEST_PAUSE_NOTIFY", notify.string()}};
-  return Child{test::ChildProcess::start(VSGL_BENCH_EXE, args, log, hook), log};
+  return Child{test::ChildProcess::start(VSGL_BENCH_TEST_BUILD_EXE, args, log, hook), log};
 }
 
 int run_to_end(const std::vector<std::string>& args, const fs::path& log) {

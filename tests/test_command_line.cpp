@@ -19,8 +19,10 @@
 namespace vsgl {
 namespace {
 
+using test::kNoVulkanDriver;
 using test::run_cli;
 using test::run_cli_without_vulkan;
+using test::run_program;
 
 bool mentions(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
@@ -169,7 +171,7 @@ TEST(CliUsage, DocumentedOptionsAreAccepted) {
            "tables --tables 1 --captures caps --gbuffer 96x64 --rsm 32 --generators fis_tok15,kmeans_2d --out o "
            "--warmup 2 --repetitions 3 --noise-target 0.05 --time-cap 0 --max-repetitions 5 --quick --cold "
            "--copy-mib 1 --camera-vsgls 64 --light-vsgls 32 --K 1 --iterations 12 --kmeans-iterations 4 "
-           "--pyramid buffer --mipmapping blit --json-only --clocks-locked --no-progress --debug-slow fis_tok15",
+           "--pyramid buffer --mipmapping blit --json-only --clocks-locked --no-progress",
            "tables --capture a --capture b --out=o",
            "sweep --scene tiny --axis vsgls=256:16384:x2 --axis K=1:4:+1 --gbuffer 96x64 --rsm 32 --captures caps "
            "--out o --generators fis_modified --quick --time-budget 60 --camera-vsgls 64 --warmup 2 --repetitions 3 "
@@ -184,6 +186,19 @@ TEST(CliUsage, DocumentedOptionsAreAccepted) {
   const auto sequence = run_cli_without_vulkan("quality --capture x --sequence /nonexistent/vsgl_sequence");
   EXPECT_EQ(sequence.exit_code, 3) << sequence.output;
   EXPECT_TRUE(mentions(sequence.output, "/nonexistent/vsgl_sequence")) << sequence.output;
+}
+
+// --debug-slow is a hook of the tests (tests/hooks/): the test build of vsgl-bench takes it, the
+// shipped program refuses it as an unknown option and does not list it.
+TEST(CliUsage, DebugSlowIsAnOptionOfTheTestBuildOnly) {
+  const std::string args = "tables --tables 1 --generators fis_tok15 --debug-slow fis_tok15";
+  const auto shipped = run_cli_without_vulkan(args);
+  EXPECT_EQ(shipped.exit_code, 2) << shipped.output;
+  EXPECT_TRUE(mentions(shipped.output, "--debug-slow")) << shipped.output;
+  EXPECT_FALSE(mentions(run_cli("tables --help").output, "debug-slow")) << "the shipped help lists a test hook";
+  const auto test_build = run_program(VSGL_BENCH_TEST_BUILD_EXE, args, kNoVulkanDriver);
+  EXPECT_EQ(test_build.exit_code, 4) << "parsed, then no driver:\n" << test_build.output;
+  EXPECT_TRUE(mentions(run_program(VSGL_BENCH_TEST_BUILD_EXE, "tables --help").output, "--debug-slow"));
 }
 
 TEST(CliUsage, AMissingInputFileIsBadInputBeforeVulkan) {

@@ -1,5 +1,5 @@
-// `compare` flags exactly the generator that `tables --debug-slow` slowed (TEST-ONLY workload,
-// harness/generators/testing/debug_slowdown.hpp), in two parts so that noise cannot fail it:
+// `compare` flags exactly the generator that `tables --debug-slow` slowed (the test build's
+// workload, tests/hooks/debug_slowdown.hpp), in two parts so that noise cannot fail it:
 //
 // - The verdict logic on synthetic samples (no device, no clock): base and new runs with the
 //   same noise, one generator's last phase slowed; exactly its rows (that phase, its view totals,
@@ -24,8 +24,8 @@
 
 #include "gpu_test.hpp"
 #include "harness/compare/regression_compare.hpp"
-#include "harness/generators/testing/debug_slowdown.hpp"
 #include "harness/report/tables_run.hpp"
+#include "hooks/debug_slowdown.hpp"
 #include "test_support.hpp"
 
 namespace vsgl {
@@ -144,10 +144,10 @@ TEST_F(CompareDebugSlowTest, SlowedGeneratorAndOnlyItIsSlower) {
   o.out_dir = root / "base";
   const TablesOutcome base = run_tables(device(), o);
   o.out_dir = root / "slow";
-  o.debug_slow = {"fis_modified"};
-  o.wrap_generator = debug_slowdown_of(o.debug_slow, 16);
+  o.altered_generators = {"fis_modified"};
+  o.wrap_generator = debug_slowdown_of(o.altered_generators, 16);
   const TablesOutcome slow = run_tables(device(), o);
-  EXPECT_EQ(slow.documents[0]["run"]["debug_slow"][0], "fis_modified");  // the run says so
+  EXPECT_EQ(slow.documents[0]["run"]["altered_generators"][0], "fis_modified");  // the run says so
 
   // Deterministic: the slowed recording holds one more dispatch per view, the others none.
   ASSERT_EQ(base.documents.size(), 2u);
@@ -160,7 +160,7 @@ TEST_F(CompareDebugSlowTest, SlowedGeneratorAndOnlyItIsSlower) {
 
   const BenchRun base_run = load_bench_run_path(root / "base");
   const BenchRun slow_run = load_bench_run_path(root / "slow");
-  EXPECT_EQ(slow_run.debug_slow, std::vector<std::string>{"fis_modified"});
+  EXPECT_EQ(slow_run.altered_generators, std::vector<std::string>{"fis_modified"});
   CompareOptions options;
   options.verdict.min_change = 1.0;  // the slowed rows at least double
   const RunComparison c = compare_runs(base_run, slow_run, options);  // same captures and config: no refusal

@@ -6,12 +6,12 @@
 #include <optional>
 
 #include "bench/cli/commands.hpp"
+#include "bench/cli/tables_extension.hpp"
 #include "bench/cli/option_types.hpp"
 #include "bench/cli/generator_options.hpp"
 #include "bench/cli/timed_generators.hpp"
 #include "bench/cli/timing_flags.hpp"
 #include "harness/core/path_text.hpp"
-#include "harness/generators/testing/debug_slowdown.hpp"
 #include "bench/cli/gpu_session.hpp"
 #include "harness/core/error.hpp"
 #include "harness/core/platform_path.hpp"
@@ -40,14 +40,12 @@ struct TablesCommandOptions {
   uint32_t copy_mib = 256;
   bool json_only = false;
   bool clocks_locked = false;
-  std::vector<std::string> debug_slow;
   std::optional<std::string> paper, schema;
   bool no_progress = false;
   DeviceOptions device;
 };
 
-
-int run_tables_command(const TablesCommandOptions& c) {
+int run_tables_command(const TablesCommandOptions& c, const TablesExtension& extension) {
   TablesOptions o;
   const bool quick = c.quick;
   o.captures_dir = path_from_utf8(c.captures);
@@ -61,8 +59,6 @@ int run_tables_command(const TablesCommandOptions& c) {
   o.copy_bandwidth.bytes = uint64_t{c.copy_mib} << 20;
   o.json_only = c.json_only;
   o.clocks_locked = c.clocks_locked;
-  o.debug_slow = c.debug_slow;  // TEST-ONLY (harness/generators/testing/debug_slowdown.hpp)
-  if (!o.debug_slow.empty()) o.wrap_generator = debug_slowdown_of(o.debug_slow);
   if (c.paper) o.paper_tables = path_from_utf8(*c.paper);
   if (c.schema) o.schema = path_from_utf8(*c.schema);
   const bool progress_flag = !c.no_progress;
@@ -81,6 +77,7 @@ int run_tables_command(const TablesCommandOptions& c) {
   o.quick = quick;
   apply_timing_flags(c, o.timing);
   o.out_dir = out ? path_from_utf8(*out) : std::filesystem::path("results") / device_slug(info.name);
+  if (extension.apply) extension.apply(o);
 
   std::fprintf(stderr,
                "timing: warm-up %u, >= %u repetitions, stop at IQR/median <= %.3g or %.0f s or %u repetitions%s\n"
@@ -118,7 +115,7 @@ int run_tables_command(const TablesCommandOptions& c) {
 
 }  // namespace
 
-Command add_tables_command(CLI::App& parent) {
+Command add_tables_command(CLI::App& parent, const TablesExtension& extension) {
   CLI::App* app = parent.add_subcommand(
       "tables",
       "the paper's Tables 1 and 2 (+ the Table 3 analog) on this device: every generator on both views (camera N = " +
@@ -186,11 +183,9 @@ Command add_tables_command(CLI::App& parent) {
       ->check(input_file("--schema"))
       ->default_str("built-in results/schema/table.schema.json");
   app->add_flag("--no-progress", o->no_progress, "no progress line (it is off anyway when stderr is not a terminal)");
-  add_list_option(*app, "--debug-slow", o->debug_slow,
-                  "TEST-ONLY: extra work in these generators' last phase (to test `compare`; marked in the JSON)",
-                  CLI::Validator([](std::string&) { return std::string(); }, "NAME"));
   add_device_options(*app, o->device);
-  return {app, [o] { return run_tables_command(*o); }};
+  if (extension.add_options) extension.add_options(*app);
+  return {app, [o, extension] { return run_tables_command(*o, extension); }};
 }
 
 }  // namespace vsgl::cli

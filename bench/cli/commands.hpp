@@ -6,6 +6,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "bench/cli/tables_extension.hpp"
+
 namespace vsgl::cli {
 
 struct Command {
@@ -15,7 +17,7 @@ struct Command {
 
 Command add_devices_command(CLI::App& parent);
 Command add_record_command(CLI::App& parent);
-Command add_tables_command(CLI::App& parent);
+Command add_tables_command(CLI::App& parent, const TablesExtension& extension = {});
 Command add_sweep_command(CLI::App& parent);
 Command add_verify_command(CLI::App& parent);
 Command add_shade_command(CLI::App& parent);

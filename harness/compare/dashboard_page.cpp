@@ -91,7 +91,13 @@ std::string scene_of(const BenchRun& r, int table) {
 std::string run_title(const BenchRun& r, int table) {
   std::string s = r.device + ", " + day(r.date) + ", " + scene_of(r, table);
   if (r.quick) s += " (quick)";
-  if (!r.debug_slow.empty()) s += " (TEST-ONLY debug-slow)";
+  if (!r.altered_generators.empty()) s += " (altered timings: not a measurement)";
+  return s;
+}
+
+std::string altered_text(const BenchRun& r) {
+  std::string s = "altered timings (not a measurement):";
+  for (const auto& g : r.altered_generators) s += " " + g;
   return s;
 }
 
@@ -299,7 +305,7 @@ std::string dashboard_html(const std::vector<BenchRun>& runs, const nlohmann::js
         "(UTC)</th><th>commit</th><th>notes</th></tr>\n";
   for (const auto& r : runs) {
     std::string notes = r.quick ? "--quick" : "";
-    if (!r.debug_slow.empty()) notes += " TEST-ONLY --debug-slow";
+    if (!r.altered_generators.empty()) notes += " " + altered_text(r);
     os << "<tr><td>" << xml_escape(r.path) << "</td><td>" << xml_escape(r.device) << "</td><td>"
        << xml_escape(scene_of(r, r.tables.begin()->first)) << "</td><td>" << xml_escape(r.date) << "</td><td>"
        << xml_escape(r.git_commit) << (r.git_dirty ? " (dirty)" : "") << "</td><td>" << xml_escape(notes)

@@ -32,7 +32,8 @@ ojson gab(const BenchRun& run) {
   for (const RunSeries& s : run.series) {
     const std::string extra = "q1 " + number_text(s.q1_ms) + " ms .. q3 " + number_text(s.q3_ms) + " ms, " +
                               std::to_string(s.samples_ms.size()) + " samples; " + run.device + "; commit " +
-                              run.git_commit + (run.debug_slow.empty() ? "" : "; TEST-ONLY --debug-slow run");
+                              run.git_commit +
+                              (run.altered_generators.empty() ? "" : "; altered timings, not a measurement");
     out.push_back(ojson{{"name", export_name(run, s)},
                         {"unit", "ms"},
                         {"value", s.median_ms},

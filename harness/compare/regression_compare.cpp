@@ -36,9 +36,9 @@ std::string run_label(const BenchRun& r) {
   std::string s = "`" + r.path + "` — " + r.device + (r.device_type.empty() ? "" : " (" + r.device_type + ")") +
                   ", commit " + r.git_commit + (r.git_dirty ? " (dirty)" : "") + ", " + r.date + ", " + r.format + " JSON";
   if (r.quick) s += ", --quick";
-  if (!r.debug_slow.empty()) {
-    s += ", TEST-ONLY --debug-slow ";
-    for (std::size_t i = 0; i < r.debug_slow.size(); ++i) s += (i ? "," : "") + r.debug_slow[i];
+  if (!r.altered_generators.empty()) {
+    s += ", altered timings (not a measurement): ";
+    for (std::size_t i = 0; i < r.altered_generators.size(); ++i) s += (i ? "," : "") + r.altered_generators[i];
   }
   return s;
 }

@@ -67,7 +67,7 @@ BenchRun parse_table_json(const json& doc, const OrderedJsonReader& r, CaptureTa
   if (!m.run.fields.is_object()) r.fail("/run", "missing field");
   run.date = required(r, m.run.started_utc, "/run/started_utc");
   run.quick = m.run.quick;
-  run.debug_slow = m.run.debug_slow;
+  run.altered_generators = m.run.altered_generators;
 
   RunTable t;
   t.table = table;
@@ -227,8 +227,10 @@ BenchRun merge_bench_runs(const std::vector<BenchRun>& runs) {
     }
     merged.date = std::min(merged.date, r.date);
     merged.quick = merged.quick || r.quick;
-    for (const auto& g : r.debug_slow)
-      if (std::find(merged.debug_slow.begin(), merged.debug_slow.end(), g) == merged.debug_slow.end()) merged.debug_slow.push_back(g);
+    for (const auto& g : r.altered_generators)
+      if (std::find(merged.altered_generators.begin(), merged.altered_generators.end(), g) ==
+          merged.altered_generators.end())
+        merged.altered_generators.push_back(g);
   }
   return merged;
 }

@@ -61,7 +61,9 @@ struct BenchRun {
   bool git_dirty = false;
   std::string date;          // ISO 8601 UTC start of the run
   bool quick = false;        // a --quick run (table JSON)
-  std::vector<std::string> debug_slow;  // TEST-ONLY slowed generators (generators/testing/debug_slowdown.hpp)
+  // Generators whose timings were altered on purpose (run.altered_generators, tables_run.hpp
+  // TablesOptions): every report of the run says so.
+  std::vector<std::string> altered_generators;
   std::map<int, RunTable> tables;
   std::vector<RunSeries> series;  // in the file's order
 

@@ -5,11 +5,11 @@
 #include <string>
 #include <system_error>
 
+#include "harness/core/atomic_write_observer.hpp"
 #include "harness/core/error.hpp"
 #include "harness/core/path_text.hpp"
 #include "harness/core/platform_file.hpp"
 #include "harness/core/platform_process.hpp"
-#include "harness/core/test_pause.hpp"
 
 namespace vsgl {
 namespace {
@@ -54,14 +54,15 @@ void remove_stale_temporaries(const std::filesystem::path& path) {
 
 // Writes and flushes the temporary file; on any failure the caller removes it.
 void write_temporary(const std::filesystem::path& target, const std::filesystem::path& temporary,
-                     std::span<const char> bytes) {
+                     std::span<const char> bytes, AtomicWriteObserver* observer) {
   NewFile file;
   if (auto ec = file.create(temporary)) fail(target, "creating temporary " + path_text(temporary), ec);
-  // TEST-ONLY (harness/core/test_pause.hpp): stop with half of the bytes written.
-  const std::size_t first = test_pause_wanted("partial", target) ? bytes.size() / 2 : bytes.size();
+  // An observer may stop the write with half of the bytes in the temporary (atomic_write_observer.hpp).
+  const bool halves = observer != nullptr && observer->wants_partial(target);
+  const std::size_t first = halves ? bytes.size() / 2 : bytes.size();
   if (auto ec = file.write(bytes.first(first))) fail(target, "writing temporary " + path_text(temporary), ec);
-  if (first < bytes.size()) {
-    test_pause_point("partial", target);
+  if (halves) {
+    observer->reached(AtomicWriteStage::kPartial, target);
     if (auto ec = file.write(bytes.subspan(first))) fail(target, "writing temporary " + path_text(temporary), ec);
   }
   if (auto ec = file.flush_to_disk()) fail(target, "flushing temporary " + path_text(temporary), ec);
@@ -71,12 +72,13 @@ void write_temporary(const std::filesystem::path& target, const std::filesystem:
 }  // namespace
 
 void write_file_atomic(const std::filesystem::path& path, std::span<const char> bytes) {
-  test_pause_count_write(path);  // TEST-ONLY (harness/core/test_pause.hpp)
+  AtomicWriteObserver* const observer = atomic_write_observer();  // none in the shipped programs
+  if (observer != nullptr) observer->write_begins(path);
   remove_stale_temporaries(path);
   const std::filesystem::path temporary = temporary_path_for(path);
   try {
-    write_temporary(path, temporary, bytes);
-    test_pause_point("complete", path);  // TEST-ONLY (harness/core/test_pause.hpp)
+    write_temporary(path, temporary, bytes, observer);
+    if (observer != nullptr) observer->reached(AtomicWriteStage::kComplete, path);
     if (auto ec = replace_file(temporary, path)) {
       fail(path, "renaming temporary " + path_text(temporary) + " onto it", ec);
     }
@@ -85,7 +87,7 @@ void write_file_atomic(const std::filesystem::path& path, std::span<const char> 
     std::filesystem::remove(temporary, ignored);
     throw;
   }
-  test_pause_point("renamed", path);  // TEST-ONLY (harness/core/test_pause.hpp)
+  if (observer != nullptr) observer->reached(AtomicWriteStage::kRenamed, path);
   sync_directory(path.parent_path());
 }
 

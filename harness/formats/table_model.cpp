@@ -470,11 +470,12 @@ TableModel table_model_from_json(const nlohmann::ordered_json& doc, const std::s
     m.run.fields = *run;
     m.run.started_utc = r.optional_string(*run, "/run", "started_utc");
     m.run.quick = r.flag(*run, "/run", "quick", false);
-    if (const auto slow = run->find("debug_slow"); slow != run->end()) {
-      if (!slow->is_array()) r.fail("/run/debug_slow", "is not an array");
-      for (std::size_t i = 0; i < slow->size(); ++i) {
-        if (!(*slow)[i].is_string()) r.fail("/run/debug_slow/" + std::to_string(i), "is not a generator name");
-        m.run.debug_slow.push_back((*slow)[i].get<std::string>());
+    if (const auto altered = run->find("altered_generators"); altered != run->end()) {
+      if (!altered->is_array()) r.fail("/run/altered_generators", "is not an array");
+      for (std::size_t i = 0; i < altered->size(); ++i) {
+        if (!(*altered)[i].is_string())
+          r.fail("/run/altered_generators/" + std::to_string(i), "is not a generator name");
+        m.run.altered_generators.push_back((*altered)[i].get<std::string>());
       }
     }
   } else {

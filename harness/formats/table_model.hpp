@@ -205,7 +205,7 @@ struct RunSummary {
   nlohmann::ordered_json fields = nlohmann::ordered_json::object();
   std::optional<std::string> started_utc;
   bool quick = false;
-  std::vector<std::string> debug_slow;  // TEST-ONLY slowed generators
+  std::vector<std::string> altered_generators;  // timings altered on purpose: not a measurement
 };
 
 struct TableModel {

@@ -44,9 +44,10 @@ void check_options(const TablesOptions& o) {
     if (std::find(known.begin(), known.end(), g) == known.end()) generator_sources(g);  // throws naming the known ones
     if (!gens.insert(g).second) throw UsageError("generator " + g + " is asked for twice");
   }
-  for (const auto& g : o.debug_slow)
-    if (!gens.contains(g)) throw UsageError("--debug-slow " + g + ": not one of the generators timed");
-  if (!o.debug_slow.empty() && !o.wrap_generator) throw std::logic_error("debug_slow names generators but no wrapper slows them");
+  for (const auto& g : o.altered_generators)
+    if (!gens.contains(g)) throw UsageError("altered generator " + g + ": not one of the generators timed");
+  if (!o.altered_generators.empty() && !o.wrap_generator)
+    throw std::logic_error("altered_generators names generators but no wrapper alters them");
   if (o.camera_vsgls == 0 || o.light_vsgls == 0) throw InputError("N = 0: at least one VSGL is needed");
   o.timing.check();
   o.copy_bandwidth.check();

@@ -54,11 +54,13 @@ struct TablesOptions {
   bool quick = false;           // recorded in the JSON: a CI preset, not the DESIGN.md §9 protocol
   bool validation = false;      // recorded in the JSON
   bool clocks_locked = false;   // the user claims locked clocks (recorded, not checked)
-  // Applied to every generator once it is built, before it is recorded (empty: none). The TEST-ONLY
-  // `--debug-slow` (generators/testing/debug_slowdown.hpp) slows the generators it names so that
-  // `compare` can be tested; they are listed in `debug_slow` and recorded as run.debug_slow.
+  // Applied to every generator once it is built, before it is recorded (empty: none). A wrapper
+  // that alters what is timed (the test build's `--debug-slow`, tests/hooks/debug_slowdown.hpp,
+  // slows generators so that `compare` can be tested) names those generators in
+  // `altered_generators`: the run records them (run.altered_generators) and every report of it
+  // says that their timings are not a measurement.
   GeneratorWrapper wrap_generator;
-  std::vector<std::string> debug_slow;
+  std::vector<std::string> altered_generators;
 };
 
 // The docs section that says where the paper's scene models are looked for and where to get them;

@@ -1,5 +1,5 @@
 // Push constants and work-group sizes of the test kernels (kernels/test_*.comp; hosts: tests/,
-// harness/generators/testing/debug_slowdown.cpp). See interop.h for how C++ and GLSL share them.
+// tests/hooks/debug_slowdown.cpp). See interop.h for how C++ and GLSL share them.
 #ifndef VSGL_INTERFACE_TESTING_H
 #define VSGL_INTERFACE_TESTING_H
 #include "interop.h"

@@ -1,4 +1,4 @@
-#include "harness/generators/testing/debug_slowdown.hpp"
+#include "debug_slowdown.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -42,7 +42,8 @@ class DebugSlowGenerator final : public VsglGenerator {
       }
       boundary(cmd);
     });
-    if (calls != last + 1) throw std::logic_error(inner_->name() + ": unexpected phase boundary count under --debug-slow");
+    if (calls != last + 1)
+      throw std::logic_error(inner_->name() + ": unexpected phase boundary count under --debug-slow");
   }
 
  private:

@@ -1,9 +1,11 @@
 #pragma once
-// TEST-ONLY: `vsgl-bench tables --debug-slow GENERATOR` (DESIGN.md §10). Wraps a generator so that its
-// last phase also runs a fixed amount of extra work (one dispatch of kernels/test_workload.comp
+// TEST BUILD ONLY (tests/hooks/, never linked into the shipped programs): `tables --debug-slow
+// GENERATOR` of the test build of vsgl-bench (DESIGN.md §10). Wraps a generator so that its last
+// phase also runs a fixed amount of extra work (one dispatch of kernels/test_workload.comp
 // recorded just before the generator's final phase boundary), so that `vsgl-bench compare` can be
-// shown to flag exactly that generator as SLOWER. The run records it (run.debug_slow in the
-// table JSON) and the compare report prints it; never use it for numbers that mean anything.
+// shown to flag exactly that generator as SLOWER. Through TablesOptions::wrap_generator and
+// altered_generators, the run records it (run.altered_generators in the table JSON) and every
+// report of it says so; never use it for numbers that mean anything.
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -32,8 +34,8 @@ struct DebugSlowWork {
 std::unique_ptr<VsglGenerator> with_debug_slowdown(Device& device, std::unique_ptr<VsglGenerator> inner,
                                                    DebugSlowWork work);
 
-// A wrapper for TablesOptions::wrap_generator: slows the generators named in `names` by
-// DebugSlowWork::for_device() with its iterations times `factor`, and leaves the others as they are.
+// A wrapper for TablesOptions::wrap_generator (with the same names as altered_generators): slows the generators named
+// in `names` by DebugSlowWork::for_device() with its iterations times `factor`, and leaves the others as they are.
 GeneratorWrapper debug_slowdown_of(std::vector<std::string> names, uint32_t factor = 1);
 
 }  // namespace vsgl
