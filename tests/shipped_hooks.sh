@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # CTest shipped_programs_hold_no_test_hooks: the shipped programs and the libraries they are made
 # of hold none of the test hooks (tests/hooks/, docs/testing.md "Test hooks"): no pause-at-write
-# environment variable, no --debug-slow option, no symbol of either. The test build of vsgl-bench,
+# environment variable, no --debug-slow option, no symbol of either, no test kernel
+# (kernels/test_*.comp). The test build of vsgl-bench,
 # which links the hooks, is the control: each needle must be found in it, so a needle that the
 # hooks no longer leave (a renamed variable, a stripped symbol) fails here instead of passing
 # unseen.
@@ -13,7 +14,8 @@ if [[ $# -lt 2 ]]; then
 fi
 control=$1
 shift
-needles=(VSGL_TEST_PAUSE_AT VSGL_TEST_PAUSE_NOTIFY debug-slow debug_slowdown DebugSlow pause_at_write)
+needles=(VSGL_TEST_PAUSE_AT VSGL_TEST_PAUSE_NOTIFY debug-slow debug_slowdown DebugSlow pause_at_write
+  test_workload.comp test_division.comp test_vsgl_math.comp)
 failures=0
 for needle in "${needles[@]}"; do
   if ! grep -aqF -- "$needle" "$control"; then

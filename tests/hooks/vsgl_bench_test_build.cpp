@@ -15,9 +15,11 @@
 #include "bench/cli/vsgl_bench_command_line.hpp"
 #include "debug_slowdown.hpp"
 #include "pause_at_write.hpp"
+#include "test_kernels.hpp"
 
 int main(int argc, char** argv) {
   vsgl::test::install_pause_at_write_from_environment();
+  vsgl::test::add_test_kernels();  // the --debug-slow workload is kernels/test_workload.comp
   auto slowed = std::make_shared<std::vector<std::string>>();
   vsgl::cli::TablesExtension debug_slow;
   debug_slow.add_options = [slowed](CLI::App& tables) {
