@@ -1,7 +1,10 @@
 // libFuzzer target: the run/table JSON loader behind `compare`, `export` and `dashboard`
 // (harness/compare/regression_run.cpp load_bench_run: a table JSON or vsgl-gbench JSON), and what those
 // commands then do with a run that loaded: both export formats, a comparison of the run with
-// itself and its markdown report, and (table JSON) the dashboard page. Bad input must end in InputError;
+// itself and its markdown report, and (table JSON) the dashboard page. Then the dashboard's own
+// reading of a folder holding the input under a paper table's name and a user scene's
+// (find_table_runs: table documents known by content, a capture's "table": null read as its
+// scene's section) and the page drawn from what it found. Bad input must end in InputError;
 // anything else is a bug.
 #include <cstdint>
 #include <string_view>
@@ -42,5 +45,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     if (run.format == "table") (void)vsgl::dashboard_html({run}, paper(), "fuzz", {});  // it reads table JSON only
   } catch (const vsgl::InputError&) {
   }
+  scratch().write("my_scene.json", input);
+  try {
+    (void)vsgl::dashboard_html(vsgl::find_table_runs(file.parent_path()), paper(), "fuzz", {});
+  } catch (const vsgl::InputError&) {}
   return 0;
 }
