@@ -85,14 +85,29 @@ const nlohmann::ordered_json& overhead_claim(const nlohmann::ordered_json& claim
 }
 
 TEST(OverheadClaim, RuleOnTheInterval) {
-  EXPECT_EQ(judge_overhead(-3, 9.9, 10, true).holds, std::optional<bool>(true));
-  EXPECT_EQ(judge_overhead(-10, 10, 10, true).holds, std::optional<bool>(true));  // the bound is inclusive
-  EXPECT_EQ(judge_overhead(10.1, 40, 10, true).holds, std::optional<bool>(false));
-  EXPECT_EQ(judge_overhead(-40, -10.1, 10, true).holds, std::optional<bool>(false));
-  const OverheadVerdict straddle = judge_overhead(5, 15, 10, true);
-  EXPECT_FALSE(straddle.holds.has_value());
-  EXPECT_EQ(straddle.note, kInconclusiveNote);
-  EXPECT_FALSE(judge_overhead(-1, 1, 10, false).holds.has_value());  // short of its confidence
+  const auto outcome = [](double low, double high, bool nominal = true) {
+    return judge_overhead(low, high, 10, nominal).outcome;
+  };
+  EXPECT_EQ(outcome(-3, 9.9), Outcome::kHolds);
+  EXPECT_EQ(outcome(10.1, 40), Outcome::kDoesNotHold);
+  EXPECT_EQ(outcome(-40, -10.1), Outcome::kDoesNotHold);
+  // The edge convention (core/claim_verdict.hpp): an interval touching +-bound is on neither side.
+  EXPECT_EQ(outcome(-10, 10), Outcome::kInconclusive);
+  EXPECT_EQ(outcome(-3, 10), Outcome::kInconclusive);    // touches +bound from inside
+  EXPECT_EQ(outcome(-10, 3), Outcome::kInconclusive);    // touches -bound from inside
+  EXPECT_EQ(outcome(10, 40), Outcome::kInconclusive);    // touches +bound from outside
+  EXPECT_EQ(outcome(-40, -10), Outcome::kInconclusive);  // touches -bound from outside
+  const ClaimVerdict straddle = judge_overhead(5, 15, 10, true);
+  EXPECT_TRUE(straddle.inconclusive());
+  EXPECT_EQ(straddle.reason, kInconclusiveNote);
+  ASSERT_TRUE(straddle.interval.has_value());
+  EXPECT_EQ(straddle.interval->low, 5);
+  EXPECT_EQ(straddle.interval->high, 15);
+  EXPECT_EQ(straddle.rule, "interval within (-10, 10)");
+  const ClaimVerdict short_of_confidence = judge_overhead(-1, 1, 10, false);
+  EXPECT_TRUE(short_of_confidence.inconclusive());
+  EXPECT_EQ(short_of_confidence.reason.rfind(kInconclusivePrefix, 0), 0u);
+  EXPECT_EQ(outcome(20, 30, false), Outcome::kInconclusive);
   EXPECT_THROW(judge_overhead(2, 1, 10, true), std::invalid_argument);
   EXPECT_THROW(judge_overhead(1, 2, 0, true), std::invalid_argument);
 }
