@@ -96,6 +96,7 @@ JudgedComparison judge(const Comparison& c) {
   j.measured["interval"] = ojson::array({iv.low, iv.high});
   j.verdict = c.below ? judge_below({iv.low, iv.high}, c.bound) : judge_above({iv.low, iv.high}, c.bound);
   if (c.reference_own_error) {
+    j.verdict.rule += ", decided only where the reference's own error is below a tenth of the distance from it";
     // The distance of the measured value from the bound, in the metric's units (DESIGN.md §11a.1).
     const double distance = ratio ? std::abs(boot.mean_a - c.bound * boot.mean_b) : std::abs(estimate - c.bound);
     j.measured["reference_own_error"] = *c.reference_own_error;
