@@ -2,6 +2,7 @@
 // written in each document's layout with that document's keys, and read back to the same value.
 #include <gtest/gtest.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -75,34 +76,75 @@ TEST(TimingStatistics, BadValuesAreNamedByPointer) {
             std::string::npos);
 }
 
+ClaimVerdict verdict_of(Outcome outcome, const std::string& reason = "") {
+  ClaimVerdict v;
+  v.outcome = outcome;
+  v.rule = "the interval within 5 µs";
+  v.interval = Interval{1.0, 4.0};
+  v.reason = reason;
+  return v;
+}
+
 Claim measured_claim() {
   Claim c;
   c.id = "overhead_5us";
   c.text = "Modified FIS costs about 5 microseconds more.";
   c.criterion = "the interval within 5 µs";
-  c.measured = ojson{{"low_us", 1.0}, {"high_us", 4.0}};
-  c.holds = true;
+  c.measured = ojson{{"ci_low_us", 1.0}, {"ci_high_us", 4.0}};
+  c.verdict = verdict_of(Outcome::kHolds);
   c.informative = true;
   return c;
 }
 
-TEST(Claim, TableLayout) {
-  const Claim c = measured_claim();
+TEST(Claim, TableLayoutWritesAndReadsEachOutcomeAndNone) {
+  Claim c = measured_claim();
   const ojson j = to_json(c, ClaimLayout::kTable);
   EXPECT_EQ(keys(j),
             (std::vector<std::string>{"id", "claim", "criterion", "measured", "holds", "note", "informative_only"}));
   EXPECT_EQ(to_json(claim_from_json(kReader, j, "/claims/0", ClaimLayout::kTable), ClaimLayout::kTable).dump(),
             j.dump());
-  Claim open = c;
-  open.holds.reset();
-  open.note = kInconclusiveNote;
-  const ojson oj = to_json(open, ClaimLayout::kTable);
-  EXPECT_TRUE(oj["holds"].is_null());
-  EXPECT_FALSE(claim_from_json(kReader, oj, "/claims/0", ClaimLayout::kTable).holds);
-  EXPECT_EQ(claim_verdict(open), "inconclusive");
-  open.note = "needs fis_tok15 in this run";
-  EXPECT_EQ(claim_verdict(open), "not measured");
-  EXPECT_EQ(claim_verdict(c), "holds");
+  struct Case {
+    std::optional<ClaimVerdict> verdict;
+    std::string note;
+    ojson holds;
+    std::string words;
+  };
+  const std::vector<Case> cases{
+      {verdict_of(Outcome::kHolds), "", true, "holds"},
+      {verdict_of(Outcome::kDoesNotHold, "k-means moves less"), "", false, "does not hold"},
+      {verdict_of(Outcome::kInconclusive, kInconclusiveNote), "", nullptr, "inconclusive"},
+      {std::nullopt, "needs fis_tok15 in this run", nullptr, "not measured"},
+  };
+  for (const Case& k : cases) {
+    c.verdict = k.verdict;
+    c.note = k.note;
+    SCOPED_TRACE(k.words);
+    const ojson w = to_json(c, ClaimLayout::kTable);
+    EXPECT_EQ(w["holds"], k.holds);
+    EXPECT_EQ(w["note"], k.verdict ? k.verdict->reason : k.note);
+    EXPECT_EQ(claim_verdict(c), k.words);
+    const Claim back = claim_from_json(kReader, w, "/claims/0", ClaimLayout::kTable);
+    EXPECT_EQ(claim_verdict(back), k.words);
+    ASSERT_EQ(back.verdict.has_value(), k.verdict.has_value());
+    if (back.verdict) {
+      EXPECT_EQ(back.verdict->outcome, k.verdict->outcome);
+      EXPECT_EQ(back.verdict->reason, k.verdict->reason);
+      EXPECT_EQ(back.verdict->rule, c.criterion);  // the document's words for the rule
+      ASSERT_TRUE(back.verdict->interval.has_value());
+      EXPECT_EQ(back.verdict->interval->low, 1.0);
+      EXPECT_EQ(back.verdict->interval->high, 4.0);
+    }
+    EXPECT_EQ(to_json(back, ClaimLayout::kTable).dump(), w.dump());
+  }
+  // What the layout would read back as something else is refused, never written.
+  c.verdict = verdict_of(Outcome::kInconclusive, "the intervals overlap");
+  EXPECT_THROW(to_json(c, ClaimLayout::kTable), std::invalid_argument);
+  c.verdict = verdict_of(Outcome::kHolds);
+  c.note = "a note beside a verdict";
+  EXPECT_THROW(to_json(c, ClaimLayout::kTable), std::invalid_argument);
+  c.verdict.reset();
+  c.note.clear();
+  EXPECT_THROW(to_json(c, ClaimLayout::kTable), std::invalid_argument);
 }
 
 TEST(Claim, QualityLayoutWritesTheVerdictInWordsAndTheNumbersBeside) {
@@ -110,29 +152,66 @@ TEST(Claim, QualityLayoutWritesTheVerdictInWordsAndTheNumbersBeside) {
   c.text = "Flickering is reduced.";
   c.source = "paper §1";
   c.criterion = "weighted CV";
-  c.measured = ojson{{"fis_tok15", 0.2}, {"fis_modified", 0.1}};
-  c.holds = false;
+  c.measured = ojson{{"fis_tok15", 0.2}, {"fis_modified", 0.1}, {"interval", {1.5, 2.5}}};
+  c.verdict = verdict_of(Outcome::kDoesNotHold);
   const ojson j = to_json(c, ClaimLayout::kQuality);
   EXPECT_EQ(j["verdict"], "does not hold");
   EXPECT_EQ(j["fis_modified"], 0.1);
   EXPECT_FALSE(j.contains("measured"));
   const Claim back = claim_from_json(kReader, j, "/claims/3", ClaimLayout::kQuality);
-  EXPECT_EQ(back.holds, false);
+  ASSERT_TRUE(back.verdict.has_value());
+  EXPECT_EQ(back.verdict->outcome, Outcome::kDoesNotHold);
+  ASSERT_TRUE(back.verdict->interval.has_value());
+  EXPECT_EQ(back.verdict->interval->low, 1.5);
+  EXPECT_EQ(back.verdict->interval->high, 2.5);
   EXPECT_EQ(back.measured.dump(), c.measured.dump());
-  // No verdict either way: the verdict in words is the note.
-  c.holds.reset();
-  c.note = "no clear difference (within 1%)";
-  const ojson open = to_json(c, ClaimLayout::kQuality);
-  EXPECT_EQ(open["verdict"], "no clear difference (within 1%)");
-  EXPECT_EQ(claim_from_json(kReader, open, "/claims/3", ClaimLayout::kQuality).note, c.note);
+  // Each outcome and none: the verdict in words, the inconclusive reason, or the note.
+  struct Case {
+    std::optional<ClaimVerdict> verdict;
+    std::string note;
+    std::string stated, words;
+  };
+  const std::vector<Case> cases{
+      {verdict_of(Outcome::kHolds), "", "holds", "holds"},
+      {verdict_of(Outcome::kDoesNotHold), "", "does not hold", "does not hold"},
+      {verdict_of(Outcome::kInconclusive, "reference not converged at some step"), "",
+       "reference not converged at some step", "inconclusive"},
+      {verdict_of(Outcome::kInconclusive, "no clear difference (within 1%)"), "", "no clear difference (within 1%)",
+       "inconclusive"},
+      {std::nullopt, "not measured here", "not measured here", "not measured"},
+  };
+  for (const Case& k : cases) {
+    c.verdict = k.verdict;
+    c.note = k.note;
+    SCOPED_TRACE(k.stated);
+    const ojson w = to_json(c, ClaimLayout::kQuality);
+    EXPECT_EQ(w["verdict"], k.stated);
+    EXPECT_EQ(stated_verdict(c), k.stated);
+    const Claim read = claim_from_json(kReader, w, "/claims/3", ClaimLayout::kQuality);
+    EXPECT_EQ(claim_verdict(read), k.words);
+    EXPECT_EQ(stated_verdict(read), k.stated);
+    EXPECT_EQ(to_json(read, ClaimLayout::kQuality).dump(), w.dump());
+  }
   // What the quality document cannot hold is refused, never dropped.
+  c.verdict.reset();
+  c.note = "not measured here";
   Claim with_id = c;
   with_id.id = "x";
   EXPECT_THROW(to_json(with_id, ClaimLayout::kQuality), std::invalid_argument);
   Claim clash = c;
   clash.measured["verdict"] = 1;
   EXPECT_THROW(to_json(clash, ClaimLayout::kQuality), std::invalid_argument);
-  ojson missing = open;
+  Claim reasoned = c;
+  reasoned.note.clear();
+  reasoned.verdict = verdict_of(Outcome::kHolds, "a reason the layout has no place for");
+  EXPECT_THROW(to_json(reasoned, ClaimLayout::kQuality), std::invalid_argument);
+  Claim ambiguous = reasoned;
+  ambiguous.verdict = verdict_of(Outcome::kInconclusive, "not measured, as it reads");
+  EXPECT_THROW(to_json(ambiguous, ClaimLayout::kQuality), std::invalid_argument);
+  Claim unnamed = c;
+  unnamed.note = "a note that does not say it was not measured";
+  EXPECT_THROW(to_json(unnamed, ClaimLayout::kQuality), std::invalid_argument);
+  ojson missing = to_json(c, ClaimLayout::kQuality);
   missing.erase("source");
   EXPECT_NE(input_error([&] {
               claim_from_json(kReader, missing, "/claims/3", ClaimLayout::kQuality);

@@ -172,33 +172,49 @@ TEST(GrowthFit, TextHasTwoDecimals) {
 TEST(GrowthJudge, VerdictsAgainstTheExpectedBand) {
   const GrowthExpectation linear{1.0, 0.05, "filtered sampling is linear in N"};
   const GrowthJudgement ok = judge_growth(fit_with(0.95, 1.01, 0.98), linear, "N");
-  EXPECT_EQ(ok.verdict, GrowthVerdict::kConsistent);
+  EXPECT_EQ(ok.verdict.outcome, Outcome::kInconclusive);  // touches the band's low end
+  EXPECT_STREQ(growth_verdict_name(ok.verdict, linear.slope), "consistent");
   EXPECT_FALSE(ok.flagged());
   EXPECT_EQ(ok.text,
             "cost \u221d N^0.98 [0.95, 1.01] is consistent with the expected N^1.00 \u00b1 0.05 (filtered sampling is "
             "linear in N)");
 
   const GrowthJudgement fast = judge_growth(fit_with(1.2, 1.35, 1.28), linear, "N");
-  EXPECT_EQ(fast.verdict, GrowthVerdict::kFaster);
+  EXPECT_EQ(fast.verdict.outcome, Outcome::kDoesNotHold);
   EXPECT_TRUE(fast.flagged());
   EXPECT_NE(fast.text.find("grows faster than the expected N^1.00"), std::string::npos);
   EXPECT_NE(fast.text.find("the interval excludes it"), std::string::npos);
-  EXPECT_STREQ(growth_verdict_name(fast.verdict), "faster");
+  EXPECT_STREQ(growth_verdict_name(fast.verdict, linear.slope), "faster");
+  EXPECT_EQ(fast.verdict.rule, "interval within (0.95, 1.05)");
 
   const GrowthJudgement slow = judge_growth(fit_with(0.5, 0.7, 0.6), linear, "N");
-  EXPECT_EQ(slow.verdict, GrowthVerdict::kSlower);
+  EXPECT_EQ(slow.verdict.outcome, Outcome::kDoesNotHold);
   EXPECT_TRUE(slow.flagged());
-  EXPECT_STREQ(growth_verdict_name(slow.verdict), "slower");
+  EXPECT_STREQ(growth_verdict_name(slow.verdict, linear.slope), "slower");
+  const GrowthJudgement inside = judge_growth(fit_with(0.97, 1.03, 1.0), linear, "N");
+  EXPECT_EQ(inside.verdict.outcome, Outcome::kHolds);
+  EXPECT_FALSE(inside.flagged());
+  EXPECT_STREQ(growth_verdict_name(inside.verdict, linear.slope), "consistent");
 
-  // Touching the band is overlap; just past it is not.
-  EXPECT_EQ(judge_growth(fit_with(1.05, 1.2, 1.1), linear, "N").verdict, GrowthVerdict::kConsistent);
-  EXPECT_EQ(judge_growth(fit_with(1.0501, 1.2, 1.1), linear, "N").verdict, GrowthVerdict::kFaster);
-  EXPECT_EQ(judge_growth(fit_with(0.8, 0.9499, 0.9), linear, "N").verdict, GrowthVerdict::kSlower);
+  // The edge convention at both ends of the band (core/claim_verdict.hpp): touching an end from
+  // either side is inconclusive (consistent, not flagged); just past it is decided.
+  const auto outcome = [&](double low, double high, const GrowthExpectation& e) {
+    return judge_growth(fit_with(low, high, (low + high) / 2), e, "N").verdict.outcome;
+  };
+  EXPECT_EQ(outcome(1.05, 1.2, linear), Outcome::kInconclusive);   // touches the high end from outside
+  EXPECT_EQ(outcome(0.8, 0.95, linear), Outcome::kInconclusive);   // the low end from outside
+  EXPECT_EQ(outcome(0.97, 1.05, linear), Outcome::kInconclusive);  // the high end from inside
+  EXPECT_EQ(outcome(0.95, 1.03, linear), Outcome::kInconclusive);  // the low end from inside
+  EXPECT_EQ(outcome(1.0501, 1.2, linear), Outcome::kDoesNotHold);
+  EXPECT_EQ(outcome(0.8, 0.9499, linear), Outcome::kDoesNotHold);
+  EXPECT_EQ(outcome(0.9501, 1.0499, linear), Outcome::kHolds);
+  EXPECT_FALSE(judge_growth(fit_with(1.05, 1.2, 1.1), linear, "N").flagged());
+  EXPECT_TRUE(judge_growth(fit_with(1.0501, 1.2, 1.1), linear, "N").flagged());
 
-  // No tolerance: the interval must contain the expected slope itself.
+  // No tolerance: the interval must contain the expected slope itself, and never "holds".
   const GrowthExpectation exact{2.0, 0.0, ""};
-  EXPECT_EQ(judge_growth(fit_with(1.9, 2.1, 2.0), exact, "N").verdict, GrowthVerdict::kConsistent);
-  EXPECT_EQ(judge_growth(fit_with(2.01, 2.1, 2.05), exact, "N").verdict, GrowthVerdict::kFaster);
+  EXPECT_EQ(outcome(1.9, 2.1, exact), Outcome::kInconclusive);
+  EXPECT_EQ(outcome(2.01, 2.1, exact), Outcome::kDoesNotHold);
   EXPECT_EQ(judge_growth(fit_with(1.9, 2.1, 2.0), exact, "N").text,
             "cost \u221d N^2.00 [1.90, 2.10] is consistent with the expected N^2.00");
 }

@@ -1,6 +1,7 @@
 // harness/core/paired_comparison.hpp on synthetic per-frame values whose answers are known: the
 // exact binomial tails by hand, the sign test's counts, the paired bootstrap where the pairing
-// makes the interval exact, and the verdict rule at and around its bound.
+// makes the interval exact, and a verdict on the bootstrap's interval (the rule itself:
+// test_claim_verdict.cpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,6 +9,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "harness/core/claim_verdict.hpp"
 #include "harness/core/paired_comparison.hpp"
 
 namespace vsgl {
@@ -142,27 +144,6 @@ TEST(PairedComparison, WhatCannotBeComparedIsAnError) {
                std::invalid_argument);
   EXPECT_THROW(paired_bootstrap(std::vector<double>{1, 2}, std::vector<double>{1, 2}, {.confidence = 1.0}),
                std::invalid_argument);
-  EXPECT_THROW(verdict_within({0, 1}, 1, -1), std::invalid_argument);
-}
-
-TEST(PairedComparison, VerdictAgainstAFixedBound) {
-  // "A is lower than B by more than 0.1": the difference's interval against -0.1.
-  EXPECT_EQ(verdict_below({-0.5, -0.2}, -0.1), IntervalVerdict::kHolds);
-  EXPECT_EQ(verdict_below({-0.05, 0.3}, -0.1), IntervalVerdict::kDoesNotHold);
-  EXPECT_EQ(verdict_below({-0.3, 0.0}, -0.1), IntervalVerdict::kInconclusive);
-  EXPECT_EQ(verdict_below({-0.3, -0.1}, -0.1), IntervalVerdict::kInconclusive);  // touching is not beyond
-  EXPECT_EQ(verdict_above({1.2, 1.5}, 1.1), IntervalVerdict::kHolds);
-  EXPECT_EQ(verdict_above({0.8, 1.0}, 1.1), IntervalVerdict::kDoesNotHold);
-  EXPECT_EQ(verdict_above({1.0, 1.2}, 1.1), IntervalVerdict::kInconclusive);
-  // "A within ±5 % of B": the ratio's interval against [0.95, 1.05].
-  EXPECT_EQ(verdict_within({0.97, 1.04}, 0.95, 1.05), IntervalVerdict::kHolds);
-  EXPECT_EQ(verdict_within({1.06, 1.2}, 0.95, 1.05), IntervalVerdict::kDoesNotHold);
-  EXPECT_EQ(verdict_within({0.8, 0.9}, 0.95, 1.05), IntervalVerdict::kDoesNotHold);
-  EXPECT_EQ(verdict_within({0.9, 1.0}, 0.95, 1.05), IntervalVerdict::kInconclusive);
-  EXPECT_EQ(verdict_within({0.9, 1.1}, 0.95, 1.05), IntervalVerdict::kInconclusive);
-  EXPECT_EQ(verdict_text(IntervalVerdict::kHolds), "holds");
-  EXPECT_EQ(verdict_text(IntervalVerdict::kDoesNotHold), "does not hold");
-  EXPECT_EQ(verdict_text(IntervalVerdict::kInconclusive), "inconclusive");
 }
 
 TEST(PairedComparison, BootstrapVerdictEndToEnd) {
@@ -176,8 +157,9 @@ TEST(PairedComparison, BootstrapVerdictEndToEnd) {
   }
   const PairedBootstrap p = paired_bootstrap(a, b);
   ASSERT_TRUE(p.ratio_interval.has_value());
-  EXPECT_EQ(verdict_below(*p.ratio_interval, 0.9), IntervalVerdict::kHolds);
-  EXPECT_EQ(verdict_below(*p.ratio_interval, 0.7), IntervalVerdict::kDoesNotHold);
+  const Interval ratio{p.ratio_interval->low, p.ratio_interval->high};
+  EXPECT_EQ(judge_below(ratio, 0.9).outcome, Outcome::kHolds);
+  EXPECT_EQ(judge_below(ratio, 0.7).outcome, Outcome::kDoesNotHold);
   const SignTest t = sign_test(a, b);
   EXPECT_EQ(t.a_below, 32u);
   EXPECT_NEAR(t.p_a_below, std::ldexp(1.0, -32), 1e-24);

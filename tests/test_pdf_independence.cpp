@@ -92,8 +92,8 @@ TEST(PdfIndependence, HoldsWhenFisStaysFlatAndKmeansMovesWithGamma) {
   const PdfIndependence c = only(claims);
   EXPECT_EQ(c.reference_gamma, 1.0);
   ASSERT_EQ(c.spreads.size(), 8u);
-  ASSERT_TRUE(c.holds.has_value()) << c.note;
-  EXPECT_TRUE(*c.holds) << c.note;
+  ASSERT_TRUE(c.verdict.has_value()) << c.note;
+  EXPECT_EQ(c.verdict->outcome, Outcome::kHolds) << c.verdict->reason;
   EXPECT_EQ(c.alpha, 0.05);
   for (const PdfSpread& p : c.spreads) {
     ASSERT_EQ(p.changes.size(), 5u);
@@ -103,7 +103,7 @@ TEST(PdfIndependence, HoldsWhenFisStaysFlatAndKmeansMovesWithGamma) {
     // does and the TOST p-value is the smallest 2000 replicates give, 1/2001.
     ASSERT_EQ(p.equivalence.has_value(), p.fis);
     if (p.fis) {
-      EXPECT_EQ(p.equivalence->verdict, "equivalent");
+      EXPECT_EQ(p.equivalence->verdict.outcome, Outcome::kHolds);
       EXPECT_DOUBLE_EQ(p.equivalence->p_equivalent, 1.0 / 2001);
     }
     if (!p.fis) {
@@ -154,15 +154,17 @@ TEST(PdfIndependence, DoesNotHoldWhenAFisTotalLeavesTheBand) {
     return is_fis(g) ? 2.0 : 10.0 * (1 + 0.25 * y);
   });
   const PdfIndependence c = only(judge_pdf_independence(s, sweep_fits(s)));
-  ASSERT_TRUE(c.holds.has_value());
-  EXPECT_FALSE(*c.holds);
-  EXPECT_NE(c.note.find("fis_tok15 light_view is not within ±10%"), std::string::npos) << c.note;
+  ASSERT_TRUE(c.verdict.has_value());
+  EXPECT_EQ(c.verdict->outcome, Outcome::kDoesNotHold);
+  EXPECT_NE(c.verdict->reason.find("fis_tok15 light_view is not within ±10%"), std::string::npos) << c.verdict->reason;
   // That case alone is not equivalent (γ = 0 moves it -23 %, γ = 4 +69 %); the other FIS cases are.
   for (const PdfSpread& p : c.spreads) {
     if (!p.fis) continue;
     ASSERT_TRUE(p.equivalence.has_value());
     const bool moved = p.generator == "fis_tok15" && p.view == "light_view";
-    EXPECT_EQ(p.equivalence->verdict, moved ? "not equivalent" : "equivalent") << p.generator << " " << p.view;
+    EXPECT_EQ(p.equivalence->verdict.outcome, moved ? Outcome::kDoesNotHold : Outcome::kHolds)
+        << p.generator << " " << p.view;
+    EXPECT_EQ(equivalence_text(p.equivalence->verdict.outcome), moved ? "not equivalent" : "equivalent");
   }
 }
 
@@ -177,13 +179,14 @@ TEST(PdfIndependence, InconclusiveWhenFisNoiseSpansTheBand) {
         return std::vector<double>{ms * 0.8, ms * 1.2, ms * 0.9, ms * 1.1, ms, ms * 0.85, ms * 1.15};
       });
   const PdfIndependence c = only(judge_pdf_independence(s, sweep_fits(s)));
-  EXPECT_FALSE(c.holds.has_value()) << c.note;
-  EXPECT_EQ(c.note.rfind("inconclusive: ", 0), 0u) << c.note;
-  EXPECT_NE(c.note.find("not shown within ±10%"), std::string::npos) << c.note;
+  ASSERT_TRUE(c.verdict.has_value()) << c.note;
+  EXPECT_EQ(c.verdict->outcome, Outcome::kInconclusive);
+  EXPECT_EQ(c.verdict->reason.rfind("inconclusive: ", 0), 0u) << c.verdict->reason;
+  EXPECT_NE(c.verdict->reason.find("not shown within ±10%"), std::string::npos) << c.verdict->reason;
   for (const PdfSpread& p : c.spreads) {
     if (!p.fis) continue;
     ASSERT_TRUE(p.equivalence.has_value());
-    EXPECT_EQ(p.equivalence->verdict, "inconclusive");
+    EXPECT_EQ(p.equivalence->verdict.outcome, Outcome::kInconclusive);
     EXPECT_GT(p.equivalence->p_equivalent, p.equivalence->level_equivalent);
     EXPECT_GT(p.equivalence->p_outside, p.equivalence->level_outside);
   }
@@ -214,7 +217,7 @@ TEST(PdfIndependence, HolmCorrectsAcrossTheFisCases) {
   // One FIS case alone whose worst γ has TOST p = 0.02: equivalent at α = 0.05.
   std::vector<PdfSpread> one{fis_case("fis_tok15", "camera_view", {0.001, 0.02})};
   judge_fis_equivalence(one, 0.05);
-  EXPECT_EQ(one[0].equivalence->verdict, "equivalent");
+  EXPECT_EQ(one[0].equivalence->verdict.outcome, Outcome::kHolds);
   EXPECT_DOUBLE_EQ(one[0].equivalence->p_equivalent, 0.02);  // the largest over γ
   EXPECT_DOUBLE_EQ(one[0].equivalence->level_equivalent, 0.05);
   // Four such cases: Holm holds the smallest to 0.05 / 4 = 0.0125, which 0.02 misses, so none is
@@ -223,14 +226,15 @@ TEST(PdfIndependence, HolmCorrectsAcrossTheFisCases) {
       fis_case("fis_tok15", "camera_view", {0.001, 0.02}), fis_case("fis_tok15", "light_view", {0.02}),
       fis_case("fis_modified", "camera_view", {0.02, 0.02}), fis_case("fis_modified", "light_view", {0.02})};
   judge_fis_equivalence(four, 0.05);
-  for (const PdfSpread& p : four) EXPECT_EQ(p.equivalence->verdict, "inconclusive") << p.generator << p.view;
+  for (const PdfSpread& p : four)
+    EXPECT_EQ(p.equivalence->verdict.outcome, Outcome::kInconclusive) << p.generator << p.view;
   EXPECT_DOUBLE_EQ(four[0].equivalence->level_equivalent, 0.0125);
   // With one case at p = 0.001 the step-down goes one step further: 0.001 <= 0.0125, then 0.02 >
   // 0.05 / 3, and it stops.
   four[1] = fis_case("fis_tok15", "light_view", {0.001});
   judge_fis_equivalence(four, 0.05);
-  EXPECT_EQ(four[1].equivalence->verdict, "equivalent");
-  EXPECT_EQ(four[0].equivalence->verdict, "inconclusive");
+  EXPECT_EQ(four[1].equivalence->verdict.outcome, Outcome::kHolds);
+  EXPECT_EQ(four[0].equivalence->verdict.outcome, Outcome::kInconclusive);
   // A k-means spread is left alone.
   std::vector<PdfSpread> mixed{fis_case("fis_tok15", "camera_view", {0.001})};
   mixed.push_back(PdfSpread{"kmeans_2d", "camera_view", false, true, {}, 0, 0, 0, {}});
@@ -240,7 +244,7 @@ TEST(PdfIndependence, HolmCorrectsAcrossTheFisCases) {
   std::vector<PdfSpread> out{fis_case("fis_tok15", "camera_view", {1.0, 1.0})};
   out[0].changes[1].p_outside = 0.004;  // times 2 γ: 0.008 <= 0.05
   judge_fis_equivalence(out, 0.05);
-  EXPECT_EQ(out[0].equivalence->verdict, "not equivalent");
+  EXPECT_EQ(out[0].equivalence->verdict.outcome, Outcome::kDoesNotHold);
   EXPECT_DOUBLE_EQ(out[0].equivalence->p_outside, 0.008);
 }
 
@@ -249,24 +253,25 @@ TEST(PdfIndependence, DoesNotHoldWhenKmeansMovesLessThanFis) {
     return is_fis(g) ? 2.0 * (1 + 0.04 * y) : 10.0;
   });
   const PdfIndependence c = only(judge_pdf_independence(s, sweep_fits(s)));
-  ASSERT_TRUE(c.holds.has_value()) << c.note;
-  EXPECT_FALSE(*c.holds);
-  EXPECT_NE(c.note.find("k-means moves less"), std::string::npos) << c.note;
+  ASSERT_TRUE(c.verdict.has_value()) << c.note;
+  EXPECT_EQ(c.verdict->outcome, Outcome::kDoesNotHold);
+  EXPECT_NE(c.verdict->reason.find("k-means moves less"), std::string::npos) << c.verdict->reason;
 }
 
 TEST(PdfIndependence, InconclusiveWhenNothingMovesAndWithoutKmeans) {
   const MeasuredSweep flat = sweep_of(
       "pdf-sharpness=0,1,2", [](const std::string& g, const std::string&, double) { return is_fis(g) ? 2.0 : 10.0; });
   const PdfIndependence c = only(judge_pdf_independence(flat, sweep_fits(flat)));
-  EXPECT_FALSE(c.holds.has_value());
-  EXPECT_EQ(c.note.rfind("inconclusive: ", 0), 0u) << c.note;
-  EXPECT_NE(c.note.find("overlap"), std::string::npos) << c.note;
+  ASSERT_TRUE(c.verdict.has_value()) << c.note;
+  EXPECT_EQ(c.verdict->outcome, Outcome::kInconclusive);
+  EXPECT_EQ(c.verdict->reason.rfind("inconclusive: ", 0), 0u) << c.verdict->reason;
+  EXPECT_NE(c.verdict->reason.find("overlap"), std::string::npos) << c.verdict->reason;
 
   MeasuredSweep fis_only = flat;
   for (SweepPointResult& p : fis_only.points)
     std::erase_if(p.timing.cases, [](const CaseTiming& t) { return !is_fis(t.generator); });
   const PdfIndependence d = only(judge_pdf_independence(fis_only, sweep_fits(fis_only)));
-  EXPECT_FALSE(d.holds.has_value());
+  EXPECT_FALSE(d.verdict.has_value());  // not measured: no verdict
   EXPECT_NE(d.note.find("needs"), std::string::npos) << d.note;
   // Another axis: no judgement at all.
   const MeasuredSweep n = sweep_of("vsgls=64,128", [](const std::string&, const std::string&, double x) { return x; });

@@ -90,6 +90,14 @@ TEST(QualityClaims, PairedFramesDecideHoldsDoesNotHoldAndInconclusive) {
   EXPECT_EQ(verdict_of(doc, "camera_view: too-bright"), "does not hold");
   EXPECT_EQ(verdict_of(doc, "static flicker").rfind("inconclusive", 0), 0u) << verdict_of(doc, "static flicker");
   EXPECT_EQ(verdict_of(doc, "light_view: coverage excess"), "holds");
+  // Read back, each is the one verdict type with its outcome (the file has no other key for it).
+  const QualityModel back = quality_model_from_json(doc, "made up");
+  ASSERT_TRUE(back.claims.has_value());
+  std::vector<std::string> outcomes;
+  for (const Claim& c : *back.claims)
+    if (c.criterion.find("too-bright") != std::string::npos || c.criterion.rfind("static flicker", 0) == 0)
+      outcomes.push_back(claim_verdict(c));
+  EXPECT_EQ(outcomes, (std::vector<std::string>{"holds", "does not hold", "inconclusive"}));
   // The claim keeps what it was judged on: the means, the interval and the bound.
   for (const auto& c : doc.at("claims"))
     if (c.at("measure").get<std::string>().rfind("light_view: too-bright", 0) == 0) {

@@ -10,6 +10,7 @@
 
 #include "harness/core/error.hpp"
 #include "harness/core/json_reader.hpp"
+#include "harness/formats/quality_model.hpp"
 #include "harness/quality/quality_claims.hpp"
 #include "harness/quality/quality_report.hpp"
 #include "test_support.hpp"
@@ -128,6 +129,24 @@ TEST(QualityModel, MissingFieldsAreNamedByPointer) {
     ADD_FAILURE();
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("/views/light_view/generators/fis_tok15/coverage/excess/eq3/count_error: missing field"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+// A per-frame series is summarized (mean, 95th percentile, maximum) by core's summarize, which
+// needs 2 values: a series of one frame is refused by pointer, never summarized as a NaN.
+TEST(QualityModel, AFrameSeriesNeedsTwoFrames) {
+  nlohmann::json doc = read_report(committed_reports().front());
+  const std::string generator = doc["frames_static"]["generators"].begin().key();
+  auto& per_frame = doc["frames_static"]["generators"][generator]["series"]["relative_rmse"]["per_frame"];
+  per_frame = nlohmann::json::array({per_frame[0]});
+  try {
+    quality_model_from_json(doc, "q.json");
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/frames_static/generators/" + generator +
+                                         "/series/relative_rmse/per_frame: has 1 frame(s); a series needs at least 2"),
               std::string::npos)
         << e.what();
   }

@@ -95,11 +95,14 @@ TEST(SweepModel, ReadsBackWhatTheSweepWrote) {
   ASSERT_TRUE(linear.expected.has_value());
   EXPECT_EQ(linear.expected->slope, 1.0);
   EXPECT_FALSE(linear.expected->why.empty());
-  EXPECT_EQ(linear.verdict, std::optional<std::string>("consistent"));
-  EXPECT_FALSE(linear.flagged);
+  ASSERT_TRUE(linear.verdict.has_value());
+  EXPECT_EQ(linear.verdict_word(), "consistent");
+  EXPECT_FALSE(linear.flagged());
   const SweepFitModel& quadratic = model_fit(m, "vsgls", "light_view", "filtered_sampling", "K=1");
-  EXPECT_EQ(quadratic.verdict, std::optional<std::string>("faster"));
-  EXPECT_TRUE(quadratic.flagged);
+  ASSERT_TRUE(quadratic.verdict.has_value());
+  EXPECT_EQ(quadratic.verdict->outcome, Outcome::kDoesNotHold);
+  EXPECT_EQ(quadratic.verdict_word(), "faster");
+  EXPECT_TRUE(quadratic.flagged());
   EXPECT_FALSE(quadratic.judgement.empty());
   const SweepFitModel& total = model_fit(m, "vsgls", "camera_view", "total", "K=1");
   EXPECT_FALSE(total.expected.has_value());
@@ -110,23 +113,33 @@ TEST(SweepModel, ReadsBackWhatTheSweepWrote) {
 TEST(SweepModel, GammaZeroIsReadOffTheLogAxisAndClaimsAreRead) {
   const MeasuredSweep s = test::synthetic_sweep({parse_axis_spec("pdf-sharpness=0,1,2")});
   ojson doc = test::synthetic_sweep_json(s);
-  doc["claims"] = ojson::array({test::synthetic_sweep_claim(nullptr, "too few rounds"),
-                                test::synthetic_sweep_claim(true, "every change within the band")});
+  doc["claims"] = ojson::array({test::synthetic_sweep_claim(nullptr, "inconclusive: too few rounds"),
+                                test::synthetic_sweep_claim(true, "every change within the band"),
+                                test::synthetic_sweep_claim(false, "k-means moves less"),
+                                test::synthetic_sweep_claim(nullptr, "needs a FIS generator")});
   const SweepModel m = read_sweep_model(doc, "mem");
   EXPECT_EQ(m.axes[0].values[0].growth_x, 0.0);
   const SweepFitModel& f = model_fit(m, "pdf-sharpness", "camera_view", "filtered_sampling", "");
   EXPECT_EQ(f.growth_x.front(), 0.0);
   ASSERT_TRUE(f.growth.has_value());
   ASSERT_TRUE(m.claims.has_value());
-  ASSERT_EQ(m.claims->size(), 2u);
+  ASSERT_EQ(m.claims->size(), 4u);
   const SweepClaim& inconclusive = (*m.claims)[0];
   EXPECT_EQ(inconclusive.claim.id, "pdf_independence");
-  EXPECT_FALSE(inconclusive.claim.holds.has_value());
-  EXPECT_EQ(inconclusive.claim.note, "too few rounds");
+  ASSERT_TRUE(inconclusive.claim.verdict.has_value());
+  EXPECT_EQ(inconclusive.claim.verdict->outcome, Outcome::kInconclusive);
+  EXPECT_EQ(inconclusive.claim.verdict->reason, "inconclusive: too few rounds");
+  EXPECT_EQ(inconclusive.claim.verdict->rule, inconclusive.claim.criterion);
   EXPECT_TRUE(inconclusive.claim.informative);
   EXPECT_EQ(inconclusive.band, 0.1);
   EXPECT_EQ(inconclusive.axis, "pdf-sharpness");
-  EXPECT_EQ((*m.claims)[1].claim.holds, std::optional<bool>(true));
+  // Each outcome, and none (a null "holds" whose note is not an inconclusive one).
+  EXPECT_EQ(claim_verdict((*m.claims)[0].claim), "inconclusive");
+  EXPECT_EQ(claim_verdict((*m.claims)[1].claim), "holds");
+  EXPECT_EQ(claim_verdict((*m.claims)[2].claim), "does not hold");
+  EXPECT_EQ(claim_note((*m.claims)[2].claim), "k-means moves less");
+  EXPECT_EQ(claim_verdict((*m.claims)[3].claim), "not measured");
+  EXPECT_EQ((*m.claims)[3].claim.note, "needs a FIS generator");
   EXPECT_NE((*m.claims)[1].claim.criterion.find("\u00b110 %"), std::string::npos);
 }
 
@@ -229,6 +242,30 @@ TEST(SweepModel, RefusesWhatIsNotASweepOfThisVersion) {
   doc = good;
   doc["points"][2]["values"]["vsgls"] = "17";
   EXPECT_NE(message(doc).find("/points/2/values/vsgls: is \"17\", not a value of axis vsgls"), std::string::npos);
+
+  // A growth verdict is judged again from the fit's interval and expectation: words that disagree
+  // with them are refused, as is a verdict without an expectation to judge against.
+  std::size_t judged = good["fits"].size();
+  for (std::size_t i = 0; i < good["fits"].size(); ++i)
+    if (good["fits"][i]["verdict"].is_string()) judged = i;
+  ASSERT_LT(judged, good["fits"].size());
+  const std::string fp = "/fits/" + std::to_string(judged);
+  const std::string word = good["fits"][judged]["verdict"].get<std::string>();
+  doc = good;
+  doc["fits"][judged]["verdict"] = word == "consistent" ? "faster" : "consistent";
+  m = message(doc);
+  EXPECT_NE(m.find(fp + "/verdict: is \""), std::string::npos) << m;
+  EXPECT_NE(m.find("the growth interval against the expected band says \"" + word + "\""), std::string::npos) << m;
+  doc = good;
+  doc["fits"][judged]["flagged"] = !good["fits"][judged]["flagged"].get<bool>();
+  EXPECT_NE(message(doc).find(fp + "/flagged"), std::string::npos);
+  doc = good;
+  doc["fits"][judged]["expected"] = nullptr;
+  EXPECT_NE(message(doc).find(fp + "/verdict: is set, but the fit has no growth or no expectation"), std::string::npos);
+  doc = good;
+  doc["fits"][judged]["verdict"] = "equivalent";
+  EXPECT_NE(message(doc).find(fp + "/verdict: is \"equivalent\", not consistent, faster, slower or null"),
+            std::string::npos);
 }
 
 // The sweep.json written after each point (DESIGN.md §10.1): "complete": false, the points so far

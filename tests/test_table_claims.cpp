@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <map>
 
 #include "harness/core/json_schema_subset.hpp"
 #include "harness/generators/fis/fis_traffic.hpp"
@@ -85,14 +86,29 @@ const nlohmann::ordered_json& overhead_claim(const nlohmann::ordered_json& claim
 }
 
 TEST(OverheadClaim, RuleOnTheInterval) {
-  EXPECT_EQ(judge_overhead(-3, 9.9, 10, true).holds, std::optional<bool>(true));
-  EXPECT_EQ(judge_overhead(-10, 10, 10, true).holds, std::optional<bool>(true));  // the bound is inclusive
-  EXPECT_EQ(judge_overhead(10.1, 40, 10, true).holds, std::optional<bool>(false));
-  EXPECT_EQ(judge_overhead(-40, -10.1, 10, true).holds, std::optional<bool>(false));
-  const OverheadVerdict straddle = judge_overhead(5, 15, 10, true);
-  EXPECT_FALSE(straddle.holds.has_value());
-  EXPECT_EQ(straddle.note, kInconclusiveNote);
-  EXPECT_FALSE(judge_overhead(-1, 1, 10, false).holds.has_value());  // short of its confidence
+  const auto outcome = [](double low, double high, bool nominal = true) {
+    return judge_overhead(low, high, 10, nominal).outcome;
+  };
+  EXPECT_EQ(outcome(-3, 9.9), Outcome::kHolds);
+  EXPECT_EQ(outcome(10.1, 40), Outcome::kDoesNotHold);
+  EXPECT_EQ(outcome(-40, -10.1), Outcome::kDoesNotHold);
+  // The edge convention (core/claim_verdict.hpp): an interval touching +-bound is on neither side.
+  EXPECT_EQ(outcome(-10, 10), Outcome::kInconclusive);
+  EXPECT_EQ(outcome(-3, 10), Outcome::kInconclusive);    // touches +bound from inside
+  EXPECT_EQ(outcome(-10, 3), Outcome::kInconclusive);    // touches -bound from inside
+  EXPECT_EQ(outcome(10, 40), Outcome::kInconclusive);    // touches +bound from outside
+  EXPECT_EQ(outcome(-40, -10), Outcome::kInconclusive);  // touches -bound from outside
+  const ClaimVerdict straddle = judge_overhead(5, 15, 10, true);
+  EXPECT_TRUE(straddle.inconclusive());
+  EXPECT_EQ(straddle.reason, kInconclusiveNote);
+  ASSERT_TRUE(straddle.interval.has_value());
+  EXPECT_EQ(straddle.interval->low, 5);
+  EXPECT_EQ(straddle.interval->high, 15);
+  EXPECT_EQ(straddle.rule, "interval within (-10, 10)");
+  const ClaimVerdict short_of_confidence = judge_overhead(-1, 1, 10, false);
+  EXPECT_TRUE(short_of_confidence.inconclusive());
+  EXPECT_EQ(short_of_confidence.reason.rfind(kInconclusivePrefix, 0), 0u);
+  EXPECT_EQ(outcome(20, 30, false), Outcome::kInconclusive);
   EXPECT_THROW(judge_overhead(2, 1, 10, true), std::invalid_argument);
   EXPECT_THROW(judge_overhead(1, 2, 0, true), std::invalid_argument);
 }
@@ -135,6 +151,78 @@ TEST(OverheadClaim, ThreeOutcomesOnSyntheticTables) {
     EXPECT_EQ(c["note"].get<std::string>().rfind(kInconclusivePrefix, 0), 0u);
     EXPECT_NE(c["note"].get<std::string>().find("3 rounds"), std::string::npos);
   }
+}
+
+// Table `number` with each generator's total per view constant over 6 rounds, at `total_ms`.
+MeasuredTable constant_table(int number, const std::map<std::string, double>& total_ms) {
+  MeasuredTable t;
+  t.number = number;
+  t.scene = number == 1 ? "atrium" : "conference";
+  t.views = {{"camera_view", {64, 64}}, {"light_view", {32, 32}}};
+  t.timing.repetitions = 6;
+  for (const auto& [g, ms] : total_ms) {
+    t.generators.push_back(g);
+    for (const std::string view : {"camera_view", "light_view"}) {
+      CaseTiming c;
+      c.generator = g;
+      c.view = view;
+      c.phases = {"one"};
+      c.phase_ms = {std::vector<double>(6, ms / 2)};
+      c.total_ms = std::vector<double>(6, ms / 2);
+      t.timing.cases.push_back(c);
+    }
+  }
+  return t;
+}
+
+const Claim& claim_with_id(const std::vector<Claim>& claims, const std::string& id) {
+  for (const Claim& c : claims)
+    if (c.id == id) return c;
+  throw std::logic_error("no claim " + id);
+}
+
+// Claims 2, 3 and 6 are rules on point values (ratios, relative changes), not on an interval, so
+// they hold or do not hold; without the generators they compare they have no verdict at all.
+TEST(TableClaims, PointValueClaimsHoldFailOrAreNotMeasured) {
+  ReportContext ctx = synthetic_context();
+  const auto claims = [&](const MeasuredTable& t, const MeasuredTable* other) { return table_claims(t, other, ctx); };
+  const auto verdict = [](const Claim& c) { return claim_verdict(c); };
+  const std::map<std::string, double> fast_fis{
+      {"fis_tok15", 1.0}, {"fis_modified", 1.0}, {"kmeans_2d", 8.0}, {"kmeans_3d", 9.0}};
+  const std::map<std::string, double> slow_fis{
+      {"fis_tok15", 1.0}, {"fis_modified", 2.0}, {"kmeans_2d", 8.0}, {"kmeans_3d", 9.0}};
+  const std::map<std::string, double> fis_only{{"fis_tok15", 1.0}, {"fis_modified", 1.0}};
+
+  // Claim 2: each paper k-means total at least 7 times the modified FIS's.
+  EXPECT_EQ(verdict(claim_with_id(claims(constant_table(1, fast_fis), nullptr), "modified_vs_kmeans_speed")), "holds");
+  EXPECT_EQ(verdict(claim_with_id(claims(constant_table(1, slow_fis), nullptr), "modified_vs_kmeans_speed")),
+            "does not hold");
+  const std::vector<Claim> fis_only_claims = claims(constant_table(1, fis_only), nullptr);
+  const Claim& no_kmeans = claim_with_id(fis_only_claims, "modified_vs_kmeans_speed");
+  EXPECT_EQ(verdict(no_kmeans), "not measured");
+  EXPECT_NE(no_kmeans.note.find("needs"), std::string::npos);
+
+  // Claim 3: from Table 1 to Table 2 FIS moves at most 10 %, each paper k-means more than FIS.
+  std::map<std::string, double> moved = fast_fis;
+  moved["kmeans_2d"] *= 1.5;
+  moved["kmeans_3d"] *= 1.5;
+  const MeasuredTable t1 = constant_table(1, fast_fis), t2 = constant_table(2, moved);
+  EXPECT_EQ(verdict(claim_with_id(claims(t1, &t2), "pdf_independence")), "holds");
+  moved["fis_modified"] *= 1.2;  // FIS moves 20 %
+  const MeasuredTable t2_fis_moves = constant_table(2, moved);
+  EXPECT_EQ(verdict(claim_with_id(claims(t1, &t2_fis_moves), "pdf_independence")), "does not hold");
+  EXPECT_EQ(verdict(claim_with_id(claims(t1, nullptr), "pdf_independence")), "not measured");
+
+  // Claim 6: each paper k-means generator at least 4 times the lines of the modified FIS.
+  ctx.lines["fis_modified"].total = 100;
+  ctx.lines["kmeans_2d"].total = 450;
+  ctx.lines["kmeans_3d"].total = 500;
+  EXPECT_EQ(verdict(claim_with_id(claims(t1, nullptr), "lines_of_code")), "holds");
+  ctx.lines["kmeans_2d"].total = 350;
+  EXPECT_EQ(verdict(claim_with_id(claims(t1, nullptr), "lines_of_code")), "does not hold");
+  ctx.lines.erase("kmeans_2d");
+  ctx.lines.erase("kmeans_3d");
+  EXPECT_EQ(verdict(claim_with_id(claims(t1, nullptr), "lines_of_code")), "not measured");
 }
 
 TEST(OverheadClaim, TableJsonCarriesThePairedAndBandwidthBlocks) {

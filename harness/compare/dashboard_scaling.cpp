@@ -117,15 +117,15 @@ std::string fits_table(const SweepModel& m, std::size_t axis) {
      << "<th>generator</th><th>view</th><th>phase</th><th>growth</th><th>expected</th><th>verdict</th></tr>\n";
   for (const SweepFitModel& f : m.fits) {
     if (f.axis != axis) continue;
-    os << (f.flagged ? "<tr class=\"flagged\">" : "<tr>");
+    os << (f.flagged() ? "<tr class=\"flagged\">" : "<tr>");
     if (sliced) os << "<td>" << xml_escape(sweep_slice_text(f.slice)) << "</td>";
     os << "<td>" << xml_escape(f.generator) << "</td><td>" << xml_escape(f.view) << "</td><td>" << xml_escape(f.phase)
        << "</td><td class=\"growth\">" << xml_escape(f.growth ? f.growth->text : "no fit: " + f.note) << "</td><td>"
        << xml_escape(expected_text(f)) << "</td><td";
     if (!f.judgement.empty()) os << " title=\"" << xml_escape(f.judgement) << "\"";
     os << ">";
-    const std::string verdict = f.verdict ? *f.verdict : "no expectation";
-    if (f.flagged) os << "<strong>" << xml_escape(verdict) << "</strong>";
+    const std::string verdict = f.verdict ? f.verdict_word() : "no expectation";
+    if (f.flagged()) os << "<strong>" << xml_escape(verdict) << "</strong>";
     else os << xml_escape(verdict);
     os << "</td></tr>\n";
   }
@@ -140,12 +140,12 @@ std::string claims_table(const SweepModel& m) {
         "<th>other axes</th><th>result</th><th>note</th></tr>\n";
   for (const SweepClaim& s : *m.claims) {
     const Claim& c = s.claim;
-    const char* result = !c.holds ? "inconclusive" : *c.holds ? "holds" : "does not hold";
-    const char* css = !c.holds ? "inconclusive" : *c.holds ? "holds" : "fails";
+    const std::string result = claim_verdict(c);
+    const char* css = !c.verdict || c.verdict->inconclusive() ? "inconclusive" : c.verdict->holds() ? "holds" : "fails";
     os << "<tr class=\"claim " << css << "\"><td>" << xml_escape(c.id) << "</td><td title=\""
        << xml_escape("criterion: " + c.criterion) << "\">" << xml_escape(c.text) << "</td><td>"
        << xml_escape(s.slice.empty() ? "–" : sweep_slice_text(s.slice)) << "</td><td>" << result
-       << (c.informative ? " (informative only: not a GPU's timing)" : "") << "</td><td>" << xml_escape(c.note)
+       << (c.informative ? " (informative only: not a GPU's timing)" : "") << "</td><td>" << xml_escape(claim_note(c))
        << "</td></tr>\n";
   }
   os << "</table>\n";
@@ -162,7 +162,7 @@ std::string incomplete_mark(const SweepModel& m) {
 std::string sweep_block(const SweepRun& run, std::size_t number) {
   const SweepModel& m = run.model;
   std::size_t flagged = 0;
-  for (const SweepFitModel& f : m.fits) flagged += f.flagged ? 1 : 0;
+  for (const SweepFitModel& f : m.fits) flagged += f.flagged() ? 1 : 0;
   std::string axes;
   for (const SweepAxisModel& a : m.axes) axes += (axes.empty() ? "" : " × ") + a.spec;
   std::string generators;

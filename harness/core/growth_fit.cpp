@@ -117,36 +117,28 @@ std::string growth_text(const GrowthFit& fit, const std::string& axis_symbol) {
          "]";
 }
 
-const char* growth_verdict_name(GrowthVerdict verdict) {
-  switch (verdict) {
-    case GrowthVerdict::kConsistent: return "consistent";
-    case GrowthVerdict::kFaster: return "faster";
-    case GrowthVerdict::kSlower: return "slower";
-  }
-  return "?";
+const char* growth_verdict_name(const ClaimVerdict& verdict, double expected_slope) {
+  if (!verdict.fails()) return "consistent";
+  return verdict.interval && verdict.interval->low > expected_slope ? "faster" : "slower";
+}
+
+ClaimVerdict growth_verdict(double low, double high, double expected_slope, double tolerance) {
+  return judge_within({low, high}, expected_slope - tolerance, expected_slope + tolerance);
 }
 
 GrowthJudgement judge_growth(const GrowthFit& fit, const GrowthExpectation& expected, const std::string& axis_symbol) {
   if (!std::isfinite(expected.slope) || !std::isfinite(expected.tolerance) || expected.tolerance < 0)
     throw InputError("expected growth: the slope must be finite and the tolerance finite and non-negative (got " +
                      number_text(expected.slope) + " \u00b1 " + number_text(expected.tolerance) + ")");
-  const double band_low = expected.slope - expected.tolerance, band_high = expected.slope + expected.tolerance;
   GrowthJudgement j;
-  if (fit.low > band_high) j.verdict = GrowthVerdict::kFaster;
-  else if (fit.high < band_low) j.verdict = GrowthVerdict::kSlower;
+  j.verdict = growth_verdict(fit.low, fit.high, expected.slope, expected.tolerance);
   std::string expectation = axis_symbol + "^" + fixed2(expected.slope);
   if (expected.tolerance > 0) expectation += " \u00b1 " + fixed2(expected.tolerance);
   if (!expected.why.empty()) expectation += " (" + expected.why + ")";
   const std::string fitted = growth_text(fit, axis_symbol);
-  switch (j.verdict) {
-    case GrowthVerdict::kConsistent: j.text = fitted + " is consistent with the expected " + expectation; break;
-    case GrowthVerdict::kFaster:
-      j.text = fitted + " grows faster than the expected " + expectation + ": the interval excludes it";
-      break;
-    case GrowthVerdict::kSlower:
-      j.text = fitted + " grows slower than the expected " + expectation + ": the interval excludes it";
-      break;
-  }
+  const std::string name = growth_verdict_name(j.verdict, expected.slope);
+  if (name == "consistent") j.text = fitted + " is consistent with the expected " + expectation;
+  else j.text = fitted + " grows " + name + " than the expected " + expectation + ": the interval excludes it";
   return j;
 }
 

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "harness/core/claim_verdict.hpp"
+
 namespace vsgl {
 
 // One value of the parameter and the per-round samples (ms) of one phase measured at it.
@@ -57,22 +59,27 @@ struct GrowthExpectation {
   std::string why;       // e.g. "filtered sampling is linear in N"
 };
 
-enum class GrowthVerdict {
-  kConsistent,  // the fit's interval overlaps the accepted band
-  kFaster,      // the whole interval lies above it: cost grows faster than predicted
-  kSlower,      // the whole interval lies below it
-};
-
-// "consistent", "faster", "slower" (for JSON and tables).
-const char* growth_verdict_name(GrowthVerdict verdict);
-
+// The verdict on "the slope lies within the accepted band" (core/claim_verdict.hpp's
+// judge_within): holds when the interval lies inside the band, does not hold when it lies wholly
+// outside (the phase does not grow as its algorithm says), inconclusive when it touches or
+// crosses an end of the band.
 struct GrowthJudgement {
-  GrowthVerdict verdict = GrowthVerdict::kConsistent;
+  ClaimVerdict verdict;
   std::string text;
 
-  // The interval excludes the expectation: the phase does not grow as its algorithm says.
-  bool flagged() const { return verdict != GrowthVerdict::kConsistent; }
+  // The interval excludes the expectation.
+  bool flagged() const { return verdict.fails(); }
 };
+
+// The verdict alone: judge_within of the slope's interval [low, high] over the band
+// [expected_slope - tolerance, expected_slope + tolerance]. Throws std::invalid_argument for
+// low > high, or a slope or tolerance that is not finite.
+ClaimVerdict growth_verdict(double low, double high, double expected_slope, double tolerance);
+
+// The verdict as the sweep document words it: "consistent" (the interval meets the band: holds or
+// inconclusive), "faster" or "slower" (it does not hold, the interval lying above or below the
+// band, hence above or below `expected_slope`).
+const char* growth_verdict_name(const ClaimVerdict& verdict, double expected_slope);
 
 // Throws InputError for an expectation whose slope or tolerance is not finite or whose
 // tolerance is negative.

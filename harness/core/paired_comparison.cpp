@@ -107,32 +107,4 @@ PairedBootstrap paired_bootstrap(std::span<const double> a, std::span<const doub
   return out;
 }
 
-std::string_view verdict_text(IntervalVerdict verdict) {
-  switch (verdict) {
-    case IntervalVerdict::kHolds: return "holds";
-    case IntervalVerdict::kDoesNotHold: return "does not hold";
-    case IntervalVerdict::kInconclusive: return "inconclusive";
-  }
-  return "inconclusive";
-}
-
-IntervalVerdict verdict_below(const PercentileInterval& interval, double bound) {
-  if (interval.high < bound) return IntervalVerdict::kHolds;
-  if (interval.low > bound) return IntervalVerdict::kDoesNotHold;
-  return IntervalVerdict::kInconclusive;
-}
-
-IntervalVerdict verdict_above(const PercentileInterval& interval, double bound) {
-  if (interval.low > bound) return IntervalVerdict::kHolds;
-  if (interval.high < bound) return IntervalVerdict::kDoesNotHold;
-  return IntervalVerdict::kInconclusive;
-}
-
-IntervalVerdict verdict_within(const PercentileInterval& interval, double low, double high) {
-  if (low > high) throw std::invalid_argument("an equivalence band needs low <= high");
-  if (interval.low > low && interval.high < high) return IntervalVerdict::kHolds;
-  if (interval.high < low || interval.low > high) return IntervalVerdict::kDoesNotHold;
-  return IntervalVerdict::kInconclusive;
-}
-
 }  // namespace vsgl

@@ -8,14 +8,13 @@
 // - the paired percentile bootstrap: frames drawn with replacement, the same draw for A and B, of
 //   mean(a) - mean(b) and mean(a) / mean(b), seeded (core/bootstrap.hpp), so one input gives the
 //   same interval on every platform;
-// - the verdict of an interval against a bound fixed before the run: "holds" when the whole
-//   interval lies on the claimed side, "does not hold" when it lies wholly on the other, and
-//   "inconclusive" when it touches or straddles the bound.
+// - the verdict of an interval against a bound fixed before the run is core/claim_verdict.hpp's:
+//   "holds" when the whole interval lies on the claimed side, "does not hold" when it lies wholly
+//   on the other, and "inconclusive" when it touches or straddles the bound.
 #include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <span>
-#include <string_view>
 
 #include "harness/core/bootstrap.hpp"
 
@@ -66,22 +65,5 @@ struct PairedBootstrap {
 // finite, no resamples, or a confidence outside (0, 1).
 PairedBootstrap paired_bootstrap(std::span<const double> a, std::span<const double> b,
                                  const PairedBootstrapOptions& options = {});
-
-enum class IntervalVerdict { kHolds, kDoesNotHold, kInconclusive };
-
-// "holds", "does not hold", "inconclusive".
-std::string_view verdict_text(IntervalVerdict verdict);
-
-// A claim that a quantity lies below `bound`: holds when interval.high < bound, does not hold when
-// interval.low > bound, inconclusive otherwise. E.g. "A's error is lower than B's by more than a
-// margin m": verdict_below(difference_interval, -m), or verdict_below(ratio_interval, 1 - m).
-IntervalVerdict verdict_below(const PercentileInterval& interval, double bound);
-// The mirror: holds when interval.low > bound, does not hold when interval.high < bound.
-IntervalVerdict verdict_above(const PercentileInterval& interval, double bound);
-// A claim that a quantity lies within [low, high] (an equivalence margin): holds when the interval
-// lies strictly inside, does not hold when it lies wholly outside (interval.high < low or
-// interval.low > high), inconclusive when it crosses an end. Throws std::invalid_argument when
-// low > high.
-IntervalVerdict verdict_within(const PercentileInterval& interval, double low, double high);
 
 }  // namespace vsgl

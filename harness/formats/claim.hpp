@@ -6,6 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "harness/core/claim_verdict.hpp"
+
 namespace vsgl {
 
 template <typename Json>
@@ -13,8 +15,9 @@ class BasicJsonReader;  // core/json_reader.hpp
 using JsonReader = BasicJsonReader<nlohmann::json>;
 using OrderedJsonReader = BasicJsonReader<nlohmann::ordered_json>;
 
-// A claim whose interval straddles its bound is neither held nor refuted: holds = none with this
-// note (or one that starts with the prefix and says why, e.g. too few rounds).
+// How the table and sweep documents word an inconclusive verdict's reason: this note, or one that
+// starts with the prefix and says why (e.g. too few rounds). Their "holds" is null both for an
+// inconclusive verdict and for none, so the prefix is what tells the two apart on reading.
 inline constexpr const char* kInconclusivePrefix = "inconclusive";
 inline constexpr const char* kInconclusiveNote = "inconclusive at this noise";
 
@@ -26,29 +29,50 @@ struct Claim {
   // The numbers judged, as the judging code wrote them (table, quality). The sweep keeps its own
   // typed (SweepClaim::measures, formats/sweep_model.hpp) and leaves this empty.
   nlohmann::ordered_json measured = nlohmann::ordered_json::object();
-  std::optional<bool> holds;  // none: not measured, inconclusive, or no clear verdict; `note` says which
-  std::string note;
+  // none: not measured here; `note` says why. Read back from a document, whose keys carry no rule
+  // of their own, the verdict's rule is the criterion, and its interval the one `measured` holds
+  // (the quality document's "interval", the table's "ci_low_us" and "ci_high_us"), if any.
+  std::optional<ClaimVerdict> verdict;
+  std::string note;          // why there is no verdict; "" when there is one (its reason says the rest)
   bool informative = false;  // a CPU device's timing: says nothing of a GPU's
 };
 
-// "holds", "does not hold", "inconclusive" (the note starts with kInconclusivePrefix) or "not measured".
+// "holds", "does not hold", "inconclusive" or "not measured".
 std::string claim_verdict(const Claim& claim);
-// The verdict in words, as the quality document states it: "holds", "does not hold", else the note.
+// The verdict in words, as the quality document states it: "holds", "does not hold", else the
+// inconclusive verdict's reason or the note.
 std::string stated_verdict(const Claim& claim);
+// What a reader is told beside the verdict: the verdict's reason, or the note when there is none.
+const std::string& claim_note(const Claim& claim);
+
+// The table's and the sweep's two fields of a verdict. "holds": true, false, or null for an
+// inconclusive verdict and for none; "note": claim_note. Throws std::invalid_argument for a claim
+// with both a verdict and a note or neither, or an inconclusive reason without kInconclusivePrefix.
+nlohmann::ordered_json claim_holds_json(const Claim& claim);
+// Reads them back: a verdict when `holds` is set or the note starts with kInconclusivePrefix (its
+// rule the claim's criterion and its interval from `measured`, so set those first), else no
+// verdict and the note.
+void set_verdict(Claim& claim, std::optional<bool> holds, const std::string& note);
 
 // How a document writes a claim. The sweep document writes its claims' shared fields itself
 // (formats/sweep_model.cpp), between its own keys in the order its committed files have.
 enum class ClaimLayout {
-  // The table's: {id, claim, criterion, measured, holds (null: none), note, informative_only}.
+  // The table's: {id, claim, criterion, measured, holds, note, informative_only}. holds: true,
+  // false, or null (inconclusive, its note starting with kInconclusivePrefix; or no verdict).
   kTable,
   // The quality document's: {claim, source, measure, verdict} and the members of `measured` beside
-  // them. verdict: "holds", "does not hold", or else the note ("no clear difference (within 1%)",
-  // "not measured here", ...); the quality document has no id and no informative flag.
+  // them. verdict: "holds", "does not hold", the note of a claim not measured (it starts with
+  // "not measured"), or else an inconclusive verdict's reason ("reference not converged ...",
+  // "inconclusive: ...", "no clear difference (within 1%)" in older files); the quality document
+  // has no id and no informative flag.
   kQuality,
 };
 
-// Throws std::invalid_argument for a claim the layout cannot hold (a quality claim with an id, a
-// measured that is not an object, or a member of measured named as one of the layout's keys).
+// Throws std::invalid_argument for a claim the layout cannot hold, that is one it would not read
+// back the same: a quality claim with an id, a measured that is not an object, a member of
+// measured named as one of the layout's keys, a claim with both a verdict and a note or neither,
+// a held or refuted quality claim with a reason, or an inconclusive reason the layout would read
+// as something else.
 nlohmann::ordered_json to_json(const Claim& claim, ClaimLayout layout);
 // `value` is what to_json writes, at `path`, in an ordered document (the table's) or a sorted one
 // (the quality document's). Throws InputError naming the pointer of a missing or mistyped field.

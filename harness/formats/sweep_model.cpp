@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <stdexcept>
 
 #include "harness/core/path_text.hpp"
 #include "harness/core/error.hpp"
+#include "harness/core/growth_fit.hpp"
 #include "harness/core/json_reader.hpp"
 #include "harness/core/printable_text.hpp"
 #include "harness/core/text_format.hpp"
@@ -226,12 +228,23 @@ SweepFitModel read_fit(const Reader& r, const ojson& f, const std::string& p, co
                                  r.string(expected, ep, "why")};
   }
   const ojson& verdict = r.member(f, p, "verdict");
+  const bool flagged = r.boolean(f, p, "flagged");
   if (!verdict.is_null()) {
-    out.verdict = r.string(f, p, "verdict");
-    if (*out.verdict != "consistent" && *out.verdict != "faster" && *out.verdict != "slower")
-      r.fail(p + "/verdict", "is " + quoted_text(*out.verdict) + ", not consistent, faster, slower or null");
+    const std::string word = r.string(f, p, "verdict");
+    if (word != "consistent" && word != "faster" && word != "slower")
+      r.fail(p + "/verdict", "is " + quoted_text(word) + ", not consistent, faster, slower or null");
+    if (!out.growth || !out.expected) r.fail(p + "/verdict", "is set, but the fit has no growth or no expectation");
+    try {
+      out.verdict = growth_verdict(out.growth->low, out.growth->high, out.expected->slope, out.expected->tolerance);
+    } catch (const std::invalid_argument& e) {
+      r.fail(p + "/verdict", std::string("cannot be judged again: ") + e.what());
+    }
+    if (out.verdict_word() != word)
+      r.fail(p + "/verdict", "is " + quoted_text(word) + ", but the growth interval against the expected band says " +
+                                 quoted_text(out.verdict_word()));
   }
-  out.flagged = r.boolean(f, p, "flagged");
+  if (flagged != out.flagged())
+    r.fail(p + "/flagged", std::string("is ") + (flagged ? "true" : "false") + ", but the verdict says otherwise");
   out.judgement = r.optional_string(f, p, "judgement").value_or("");
   return out;
 }
@@ -272,12 +285,21 @@ SweepClaimMeasure read_claim_measure(const Reader& r, const ojson& m, const std:
   if (m.contains("equivalence")) {
     const std::string ep = p + "/equivalence";
     const ojson& e = r.object(m, p, "equivalence");
-    SweepClaimEquivalence q{p_value(r, e, ep, "p_equivalent"), p_value(r, e, ep, "p_outside"),
-                            p_value(r, e, ep, "level_equivalent"), p_value(r, e, ep, "level_outside"),
-                            r.string(e, ep, "verdict")};
-    if (q.verdict != "equivalent" && q.verdict != "not equivalent" && q.verdict != "inconclusive")
-      r.fail(ep + "/verdict",
-             "is " + quoted_text(q.verdict) + R"(, not "equivalent", "not equivalent" or "inconclusive")");
+    SweepClaimEquivalence q{p_value(r, e, ep, "p_equivalent"),
+                            p_value(r, e, ep, "p_outside"),
+                            p_value(r, e, ep, "level_equivalent"),
+                            p_value(r, e, ep, "level_outside"),
+                            {}};
+    const std::string word = r.string(e, ep, "verdict");
+    bool known = false;
+    for (const Outcome o : {Outcome::kHolds, Outcome::kDoesNotHold, Outcome::kInconclusive})
+      if (word == equivalence_text(o)) {
+        q.verdict.outcome = o;
+        known = true;
+      }
+    if (!known)
+      r.fail(ep + "/verdict", "is " + quoted_text(word) + R"(, not "equivalent", "not equivalent" or "inconclusive")");
+    q.verdict.rule = kEquivalenceRule;
     out.equivalence = q;
   }
   return out;
@@ -307,8 +329,8 @@ std::vector<SweepClaim> read_claims(const Reader& r, const ojson& a) {
     for (std::size_t k = 0; k < measured.size(); ++k)
       sweep.measures.push_back(read_claim_measure(r, measured[k], p + "/measured/" + std::to_string(k)));
     const ojson& holds = r.member(c, p, "holds");
-    if (!holds.is_null()) claim.holds = r.boolean(c, p, "holds");
-    claim.note = r.string(c, p, "note");
+    set_verdict(claim, holds.is_null() ? std::nullopt : std::optional<bool>(r.boolean(c, p, "holds")),
+                r.string(c, p, "note"));
     claim.informative = r.boolean(c, p, "informative");
     out.push_back(std::move(sweep));
   }
@@ -415,8 +437,8 @@ ojson fit_json(const SweepFitModel& f, const std::vector<SweepAxisModel>& axes) 
   j["expected"] =
       f.expected ? ojson{{"slope", f.expected->slope}, {"tolerance", f.expected->tolerance}, {"why", f.expected->why}}
                  : ojson(nullptr);
-  j["verdict"] = f.verdict ? ojson(*f.verdict) : ojson(nullptr);
-  j["flagged"] = f.flagged;
+  j["verdict"] = f.verdict ? ojson(f.verdict_word()) : ojson(nullptr);
+  j["flagged"] = f.flagged();
   if (f.verdict) j["judgement"] = f.judgement;
   return j;
 }
@@ -441,7 +463,7 @@ ojson claim_json(const SweepClaim& s) {
                                      {"p_outside", m.equivalence->p_outside},
                                      {"level_equivalent", m.equivalence->level_equivalent},
                                      {"level_outside", m.equivalence->level_outside},
-                                     {"verdict", m.equivalence->verdict}};
+                                     {"verdict", equivalence_text(m.equivalence->verdict.outcome)}};
     measured.push_back(std::move(measure));
   }
   ojson j{{"id", c.id},
@@ -453,8 +475,8 @@ ojson claim_json(const SweepClaim& s) {
           {"band", s.band}};
   if (s.alpha) j["alpha"] = *s.alpha;
   j["measured"] = std::move(measured);
-  j["holds"] = c.holds ? ojson(*c.holds) : ojson(nullptr);
-  j["note"] = c.note;
+  j["holds"] = claim_holds_json(c);
+  j["note"] = claim_note(c);
   j["informative"] = c.informative;
   return j;
 }
@@ -613,6 +635,19 @@ ojson to_json(const SweepModel& m) {
     doc["claims"] = std::move(claims);
   }
   return doc;
+}
+
+std::string SweepFitModel::verdict_word() const {
+  return verdict && expected ? growth_verdict_name(*verdict, expected->slope) : "";
+}
+
+std::string equivalence_text(Outcome outcome) {
+  switch (outcome) {
+    case Outcome::kHolds: return "equivalent";
+    case Outcome::kDoesNotHold: return "not equivalent";
+    case Outcome::kInconclusive: return "inconclusive";
+  }
+  return "inconclusive";
 }
 
 }  // namespace vsgl

@@ -138,9 +138,16 @@ struct SweepFitModel {
   std::optional<SweepGrowth> growth;                       // none: no fit, `note` says why
   std::string note;
   std::optional<SweepExpected> expected;
-  std::optional<std::string> verdict;  // "consistent", "faster", "slower"; none: no expectation
-  bool flagged = false;                // the interval excludes the expectation
-  std::string judgement;               // the verdict in words; "" when none
+  // The growth's interval against the expected band (core/growth_fit.hpp's judge_growth); none:
+  // no expectation. The file words it "consistent", "faster" or "slower" (verdict_word) and
+  // "flagged"; read back, it is judged again from "growth" and "expected", which must agree.
+  std::optional<ClaimVerdict> verdict;
+  std::string judgement;  // the verdict in words; "" when none
+
+  // The interval excludes the expectation.
+  bool flagged() const { return verdict && verdict->fails(); }
+  // "consistent", "faster", "slower"; "" when there is no verdict.
+  std::string verdict_word() const;
 };
 
 // A case's change of its median total from the reference γ, with its bootstrap interval.
@@ -154,12 +161,21 @@ struct SweepClaimChange {
   std::optional<double> p_equivalent, p_outside;
 };
 
-// A FIS case's equivalence verdict across γ, Holm-corrected across the FIS cases.
+// The rule of a FIS case's equivalence verdict (sweep/pdf_independence.hpp): the TOST's p-values
+// across γ against their Holm levels.
+inline constexpr const char* kEquivalenceRule =
+    "TOST across γ, Holm-corrected: equivalent when p_equivalent <= its level, not equivalent when p_outside <= "
+    "its level";
+
+// A FIS case's equivalence verdict across γ, Holm-corrected across the FIS cases. The file words
+// its outcome "equivalent" (holds), "not equivalent" (does not hold) or "inconclusive".
 struct SweepClaimEquivalence {
   double p_equivalent = 1, p_outside = 1;
   double level_equivalent = 0, level_outside = 0;
-  std::string verdict;  // "equivalent", "not equivalent", "inconclusive"
+  ClaimVerdict verdict;  // rule: kEquivalenceRule; no interval
 };
+// "equivalent", "not equivalent", "inconclusive".
+std::string equivalence_text(Outcome outcome);
 
 struct SweepClaimMeasure {
   std::string generator, view;

@@ -6,8 +6,10 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "harness/core/claim_verdict.hpp"
 #include "harness/core/generator_ids.hpp"
 #include "harness/core/paired_comparison.hpp"
 #include "harness/formats/quality_model.hpp"
@@ -54,16 +56,26 @@ struct Comparison {
   std::optional<double> reference_own_error;  // set for a claim the reference decides
 };
 
-struct Judgement {
-  std::optional<bool> holds;
-  std::string note;  // why there is no verdict
+// A comparison's verdict and the numbers it was judged on (the claim's `measured`).
+struct JudgedComparison {
+  ClaimVerdict verdict;
   ojson measured;
 };
 
-Judgement judge(const Comparison& c) {
+const std::string kNotConverged = "reference not converged";
+
+ClaimVerdict inconclusive(std::string rule, std::string reason) {
+  ClaimVerdict v;
+  v.outcome = Outcome::kInconclusive;
+  v.rule = std::move(rule);
+  v.reason = std::move(reason);
+  return v;
+}
+
+JudgedComparison judge(const Comparison& c) {
   const PairedBootstrap boot = paired_bootstrap(c.a, c.b);
   const SignTest sign = sign_test(c.a, c.b);
-  Judgement j;
+  JudgedComparison j;
   const bool ratio = c.quantity == Quantity::kRatio;
   j.measured = ojson{{c.a_label, boot.mean_a}, {c.b_label, boot.mean_b}, {"frames", boot.frames}};
   j.measured["quantity"] = ratio ? "mean(a) / mean(b)" : "mean(a) - mean(b)";
@@ -73,41 +85,55 @@ Judgement judge(const Comparison& c) {
       {"a_below", sign.a_below}, {"a_above", sign.a_above}, {"ties", sign.ties}, {"p_two_sided", sign.p_two_sided}};
   j.measured["bootstrap"] = ojson{{"resamples", boot.resamples}, {"confidence", boot.confidence}, {"seed", boot.seed}};
   if (ratio && !boot.ratio_interval) {
-    j.note = "inconclusive: a frame of " + c.b_label + " is not positive, so the ratio has no interval";
+    j.verdict = inconclusive("interval " + std::string(c.below ? "below " : "above ") + num(c.bound),
+                             std::string(kInconclusivePrefix) + ": a frame of " + c.b_label +
+                                 " is not positive, so the ratio has no interval");
     return j;
   }
   const PercentileInterval iv = ratio ? *boot.ratio_interval : boot.difference_interval;
   const double estimate = ratio ? *boot.ratio : boot.difference;
   j.measured["estimate"] = estimate;
   j.measured["interval"] = ojson::array({iv.low, iv.high});
-  const IntervalVerdict v = c.below ? verdict_below(iv, c.bound) : verdict_above(iv, c.bound);
+  j.verdict = c.below ? judge_below({iv.low, iv.high}, c.bound) : judge_above({iv.low, iv.high}, c.bound);
   if (c.reference_own_error) {
+    j.verdict.rule += ", decided only where the reference's own error is below a tenth of the distance from it";
     // The distance of the measured value from the bound, in the metric's units (DESIGN.md §11a.1).
     const double distance = ratio ? std::abs(boot.mean_a - c.bound * boot.mean_b) : std::abs(estimate - c.bound);
     j.measured["reference_own_error"] = *c.reference_own_error;
     j.measured["judged_distance"] = distance;
     if (!reference_decides(*c.reference_own_error, distance)) {
-      j.note = "reference not converged (own error " + num(*c.reference_own_error) + " x " +
-               num(kReferenceErrorFactor) + " >= " + num(distance) + ")";
+      // Whatever the interval says, the reference cannot tell (DESIGN.md §11a.1).
+      j.verdict.outcome = Outcome::kInconclusive;
+      j.verdict.reason = kNotConverged + " (own error " + num(*c.reference_own_error) + " x " +
+                         num(kReferenceErrorFactor) + " >= " + num(distance) + ")";
       return j;
     }
   }
-  if (v == IntervalVerdict::kHolds) j.holds = true;
-  if (v == IntervalVerdict::kDoesNotHold) j.holds = false;
-  if (v == IntervalVerdict::kInconclusive)
-    j.note = std::string(kInconclusivePrefix) + ": the 95 % interval [" + num(iv.low) + ", " + num(iv.high) +
-             "] reaches the bound " + num(c.bound);
+  if (j.verdict.inconclusive())
+    j.verdict.reason = std::string(kInconclusivePrefix) + ": the 95 % interval [" + num(iv.low) + ", " + num(iv.high) +
+                       "] reaches the bound " + num(c.bound);
   return j;
 }
 
-Claim make_claim(const std::string& text, const std::string& source, const std::string& measure, Judgement j) {
+Claim make_claim(const std::string& text, const std::string& source, const std::string& measure, JudgedComparison j) {
   Claim c;
   c.text = text;
   c.source = source;
   c.criterion = measure;
   c.measured = std::move(j.measured);
-  c.holds = j.holds;
-  if (!c.holds) c.note = j.note;
+  c.verdict = std::move(j.verdict);
+  return c;
+}
+
+// A claim this document does not measure: no verdict, and the note says why.
+Claim unmeasured_claim(const std::string& text, const std::string& source, const std::string& measure,
+                       const std::string& note) {
+  Claim c;
+  c.text = text;
+  c.source = source;
+  c.criterion = measure;
+  c.measured = ojson::object();
+  c.note = note;
   return c;
 }
 
@@ -154,13 +180,15 @@ void add_static_claims(std::vector<Claim>& claims, const QualityModel& m) {
   const auto* mod = series_of(f, kModified, "p99_pixel_error");
   const auto* tok = series_of(f, kTok15, "p99_pixel_error");
   if (mod && tok) {
-    Judgement j = judge({kModified, kTok15, *mod, *tok, Quantity::kRatio, true, 1.0, own_error(m, "p99_pixel_error")});
+    JudgedComparison j =
+        judge({kModified, kTok15, *mod, *tok, Quantity::kRatio, true, 1.0, own_error(m, "p99_pixel_error")});
     const double worst_mod = *std::max_element(mod->begin(), mod->end());
     const double worst_tok = *std::max_element(tok->begin(), tok->end());
     j.measured["worst_frame"] = ojson{{kModified, worst_mod}, {kTok15, worst_tok}};
-    if (j.holds == true && !(worst_mod < worst_tok)) {
-      j.holds.reset();
-      j.note =
+    j.verdict.rule += ", and modified's worst frame below Tok15's";
+    if (j.verdict.holds() && !(worst_mod < worst_tok)) {
+      j.verdict.outcome = Outcome::kInconclusive;
+      j.verdict.reason =
           std::string(kInconclusivePrefix) + ": the interval holds, but modified's worst frame is not below Tok15's";
     }
     claims.push_back(make_claim(kFig5Claim, "paper §4, Fig. 5; DESIGN.md §11a.1",
@@ -205,32 +233,33 @@ void add_k_sweep_claims(std::vector<Claim>& claims, const QualityModel& m) {
     for (std::size_t i = 0; i + 1 < rows.size(); ++i) {
       const KSweepRow &lo = rows[i], &hi = rows[i + 1];
       const std::string a = "K=" + num(hi.K), b = "K=" + num(lo.K);
-      const Judgement flicker = judge({a,
-                                       b,
-                                       hi.per_frame.at("flicker_deviation"),
-                                       lo.per_frame.at("flicker_deviation"),
-                                       Quantity::kRatio,
-                                       true,
-                                       1.0,
-                                       {}});
-      const Judgement error = judge({a, b, hi.per_frame.at("relative_rmse"), lo.per_frame.at("relative_rmse"),
-                                     Quantity::kRatio, false, 1.0, own_error(m, "relative_rmse")});
-      for (const Judgement* j : {&flicker, &error}) {
-        all_hold = all_hold && j->holds == true;
-        any_fails = any_fails || j->holds == false;
-        unconverged = unconverged || (!j->holds && j->note.rfind("reference not converged", 0) == 0);
+      const JudgedComparison flicker = judge({a,
+                                              b,
+                                              hi.per_frame.at("flicker_deviation"),
+                                              lo.per_frame.at("flicker_deviation"),
+                                              Quantity::kRatio,
+                                              true,
+                                              1.0,
+                                              {}});
+      const JudgedComparison error = judge({a, b, hi.per_frame.at("relative_rmse"), lo.per_frame.at("relative_rmse"),
+                                            Quantity::kRatio, false, 1.0, own_error(m, "relative_rmse")});
+      for (const ClaimVerdict* v : {&flicker.verdict, &error.verdict}) {
+        all_hold = all_hold && v->holds();
+        any_fails = any_fails || v->fails();
+        unconverged = unconverged || (v->inconclusive() && v->reason.rfind(kNotConverged, 0) == 0);
       }
       steps.push_back(
           ojson{{"from_K", lo.K}, {"to_K", hi.K}, {"flicker", flicker.measured}, {"error", error.measured}});
       ks += (ks.empty() ? num(lo.K) : "") + ", " + num(hi.K);
     }
-    Judgement j;
+    // An intersection-union test: every step's verdict must hold (DESIGN.md §11a.1).
+    JudgedComparison j;
     j.measured = ojson{{"generator", gen}, {"steps", steps}};
-    if (all_hold) j.holds = true;
-    else if (any_fails) j.holds = false;
-    else
-      j.note = unconverged ? "reference not converged at some step"
-                           : std::string(kInconclusivePrefix) + ": some step's interval reaches 1";
+    j.verdict.rule = "every step's flicker interval below 1 and error interval above 1";
+    j.verdict.outcome = all_hold ? Outcome::kHolds : any_fails ? Outcome::kDoesNotHold : Outcome::kInconclusive;
+    if (j.verdict.inconclusive())
+      j.verdict.reason = unconverged ? kNotConverged + " at some step"
+                                     : std::string(kInconclusivePrefix) + ": some step's interval reaches 1";
     claims.push_back(make_claim(
         kFig6Claim, "paper_tables.json claims[4]; DESIGN.md §11a.1",
         "K sweep, " + gen + ": K = " + ks + ": at every step the frame flicker falls and the relative RMSE grows",
@@ -248,19 +277,15 @@ void add_claim_verdicts(json& r) {
     add_animated_claim(claims, m);
     add_k_sweep_claims(claims, m);
   } else {
-    Judgement none;
-    none.measured = ojson::object();
-    none.note = "not measured here (no per-frame series: a quality document before schema 5)";
-    claims.push_back(make_claim(kFig1Claim, "", "every quality claim", none));
+    claims.push_back(unmeasured_claim(kFig1Claim, "", "every quality claim",
+                                      "not measured here (no per-frame series: a quality document before schema 5)"));
   }
   for (const char* t : {"Modified FIS costs about 5 microseconds more in total than Tok15 FIS.",
                         "Modified FIS is about 7-9 times faster than the k-means generators.",
                         "FIS cost is almost independent of the PDF; k-means cost is not.",
                         "Modified FIS needs about five times fewer lines of code than k-means (Table 3)."}) {
-    Judgement j;
-    j.measured = ojson::object();
-    j.note = "not measured here";
-    claims.push_back(make_claim(t, "paper_tables.json claims", "a timing/code-size claim: see `vsgl-bench tables`", j));
+    claims.push_back(unmeasured_claim(t, "paper_tables.json claims",
+                                      "a timing/code-size claim: see `vsgl-bench tables`", "not measured here"));
   }
   json document = json::array();
   for (const Claim& c : claims) document.push_back(json(to_json(c, ClaimLayout::kQuality)));

@@ -43,23 +43,31 @@ std::string paper_kmeans_text(const std::string& separator) {
   return out;
 }
 
+// A verdict on point values (no interval): holds or does not hold by `rule`.
+ClaimVerdict point_verdict(bool holds, const std::string& rule) {
+  ClaimVerdict v;
+  v.outcome = holds ? Outcome::kHolds : Outcome::kDoesNotHold;
+  v.rule = rule;
+  return v;
+}
+
 // Claims 2 and 6: each paper k-means generator's value over the modified FIS's, for those `value`
-// knows (none: not measured); holds when every ratio is at least `min`, none when there is none.
-struct KmeansRatios {
-  ojson measured = ojson::object();
-  std::optional<bool> holds;
-};
-KmeansRatios kmeans_ratios(const std::function<std::optional<double>(const std::string&)>& value, double min) {
-  KmeansRatios out;
+// knows, into `c.measured`; holds when every ratio is at least `min`, no verdict (`missing` the
+// note) when there is none.
+void judge_kmeans_ratios(Claim& c, const std::function<std::optional<double>(const std::string&)>& value, double min,
+                         const std::string& missing) {
   const std::optional<double> modified = value(kModified);
-  if (!modified) return out;
-  for (const auto& k : paper_kmeans_names())
-    if (const std::optional<double> v = value(k)) {
-      const double ratio = *v / *modified;
-      out.measured[k] = ratio;
-      out.holds = out.holds.value_or(true) && ratio >= min;
-    }
-  return out;
+  bool all = true, any = false;
+  if (modified)
+    for (const auto& k : paper_kmeans_names())
+      if (const std::optional<double> v = value(k)) {
+        const double ratio = *v / *modified;
+        c.measured[k] = ratio;
+        all = all && ratio >= min;
+        any = true;
+      }
+  if (any) c.verdict = point_verdict(all, c.criterion);
+  else c.note = missing;
 }
 
 // 1: the modified kernel costs only microseconds more. Judged on the 95 % interval of the
@@ -81,11 +89,10 @@ Claim overhead_claim(const std::string& text, const MeasuredTable& t, bool infor
   const double tok_ms = median_total(t, kTok15);
   const double bound_us = std::max(kOverheadFloorUs, kOverheadFraction * 1e3 * tok_ms);
   const PairedInterval p = paired_overhead(t);
-  const OverheadVerdict v = judge_overhead(1e3 * p.low, 1e3 * p.high, bound_us, p.reaches_nominal());
-  c.note = v.note;
+  ClaimVerdict v = judge_overhead(1e3 * p.low, 1e3 * p.high, bound_us, p.reaches_nominal());
   if (!p.reaches_nominal())
-    c.note = std::string(kInconclusivePrefix) + ": " + std::to_string(p.count) + " rounds reach only " +
-             number(100 * p.confidence) + "% confidence (95% needs at least 6 rounds)";
+    v.reason = std::string(kInconclusivePrefix) + ": " + std::to_string(p.count) + " rounds reach only " +
+               number(100 * p.confidence) + "% confidence (95% needs at least 6 rounds)";
   c.measured = ojson{{"overhead_us", 1e3 * p.hodges_lehmann},
                      {"ci_low_us", 1e3 * p.low},
                      {"ci_high_us", 1e3 * p.high},
@@ -95,23 +102,21 @@ Claim overhead_claim(const std::string& text, const MeasuredTable& t, bool infor
                      {"difference_of_medians_us", 1e3 * (median_total(t, kModified) - tok_ms)},
                      {"bound_us", bound_us},
                      {"tok15_total_ms", tok_ms}};
-  c.holds = v.holds;
+  c.verdict = std::move(v);
   return c;
 }
 
 // 2: modified FIS is several times faster than the paper's k-means generators.
 Claim kmeans_speed_claim(const std::string& text, const MeasuredTable& t, bool informative) {
-  const KmeansRatios r = kmeans_ratios(
-      [&](const std::string& g) { return has_generator(t, g) ? std::optional(median_total(t, g)) : std::nullopt; },
-      kKmeansOverModifiedMin);
-  return Claim{.id = "modified_vs_kmeans_speed",
-               .text = text,
-               .criterion = "median total(" + paper_kmeans_text(" and ") + ") / median total(" + kModified +
-                            ") >= " + number(kKmeansOverModifiedMin) + " for each",
-               .measured = r.measured,
-               .holds = r.holds,
-               .note = r.holds ? "" : "needs " + kModified + " and a paper k-means generator in this run",
-               .informative = informative};
+  Claim c{.id = "modified_vs_kmeans_speed",
+          .text = text,
+          .criterion = "median total(" + paper_kmeans_text(" and ") + ") / median total(" + kModified +
+                       ") >= " + number(kKmeansOverModifiedMin) + " for each",
+          .informative = informative};
+  judge_kmeans_ratios(
+      c, [&](const std::string& g) { return has_generator(t, g) ? std::optional(median_total(t, g)) : std::nullopt; },
+      kKmeansOverModifiedMin, "needs " + kModified + " and a paper k-means generator in this run");
+  return c;
 }
 
 // 3: FIS cost does not depend on the PDF, k-means cost does: the change from Table 1 to Table 2.
@@ -145,7 +150,7 @@ Claim pdf_change_claim(const std::string& text, const MeasuredTable& t, const Me
       kmeans_any = true;
       kmeans_ok = kmeans_ok && std::abs(c.measured[g].get<double>()) > fis_max;
     }
-  if (fis_any && kmeans_any) c.holds = fis_ok && kmeans_ok;
+  if (fis_any && kmeans_any) c.verdict = point_verdict(fis_ok && kmeans_ok, c.criterion);
   else if (fis_any)
     c.note = "FIS part measured (|change| <= " + number(100 * kFisPdfChangeMax) +
              "%: " + std::string(fis_ok ? "yes" : "no") + "); the k-means part needs " + paper_kmeans_text(" or ");
@@ -161,31 +166,34 @@ Claim not_timed_claim(const std::string& text, const std::string& id, const std:
 // 6: lines of code, counted from the sources (whether or not k-means was timed). Not a timing:
 // the same on every device, so never informative only.
 Claim lines_claim(const std::string& text, const ReportContext& ctx) {
-  const KmeansRatios r = kmeans_ratios(
+  Claim c{.id = "lines_of_code",
+          .text = text,
+          .criterion = "lines_of_code(" + paper_kmeans_text(" and ") + ") / lines_of_code(" + kModified +
+                       ") >= " + number(kLinesRatioMin) + " for each",
+          .informative = false};
+  judge_kmeans_ratios(
+      c,
       [&](const std::string& g) {
         const auto it = ctx.lines.find(g);
         return it == ctx.lines.end() ? std::nullopt : std::optional(static_cast<double>(it->second.total));
       },
-      kLinesRatioMin);
-  return Claim{.id = "lines_of_code",
-               .text = text,
-               .criterion = "lines_of_code(" + paper_kmeans_text(" and ") + ") / lines_of_code(" + kModified +
-                            ") >= " + number(kLinesRatioMin) + " for each",
-               .measured = r.measured,
-               .holds = r.holds,
-               .note = r.holds ? "" : "needs the line counts of " + kModified + " and k-means",
-               .informative = false};
+      kLinesRatioMin, "needs the line counts of " + kModified + " and k-means");
+  return c;
 }
 }  // namespace
 
-OverheadVerdict judge_overhead(double low_us, double high_us, double bound_us, bool reaches_nominal) {
+ClaimVerdict judge_overhead(double low_us, double high_us, double bound_us, bool reaches_nominal) {
   if (!(low_us <= high_us) || !(bound_us > 0))
     throw std::invalid_argument("an overhead interval needs low <= high and a positive bound");
-  if (!reaches_nominal)
-    return {std::nullopt, std::string(kInconclusivePrefix) + ": the interval falls short of 95% confidence"};
-  if (low_us >= -bound_us && high_us <= bound_us) return {true, ""};
-  if (low_us > bound_us || high_us < -bound_us) return {false, ""};
-  return {std::nullopt, kInconclusiveNote};
+  ClaimVerdict v = judge_within({low_us, high_us}, -bound_us, bound_us);
+  if (!reaches_nominal) {
+    // An interval short of its confidence decides nothing, wherever it lies.
+    v.outcome = Outcome::kInconclusive;
+    v.reason = std::string(kInconclusivePrefix) + ": the interval falls short of 95% confidence";
+  } else if (v.inconclusive()) {
+    v.reason = kInconclusiveNote;
+  }
+  return v;
 }
 
 nlohmann::ordered_json claims_json(const MeasuredTable& t, const MeasuredTable* other, const ReportContext& ctx) {

@@ -17,17 +17,16 @@ namespace vsgl {
 // pdf-sharpness axis (sweep/pdf_independence.hpp).
 inline constexpr double kFisPdfChangeMax = 0.10;
 
-struct OverheadVerdict {
-  std::optional<bool> holds;
-  std::string note;
-};
-// Claim 1's rule on an interval [low, high] of the overhead and the bound +-bound_us: inside ->
-// holds, wholly outside -> does not hold, straddling or short of its confidence -> inconclusive.
-// Throws std::invalid_argument for low > high or a bound that is not positive.
-OverheadVerdict judge_overhead(double low_us, double high_us, double bound_us, bool reaches_nominal);
+// Claim 1's rule on an interval [low, high] of the overhead and the bound +-bound_us, the
+// interval rule "within (-bound, bound)" of core/claim_verdict.hpp: inside -> holds, wholly
+// outside -> does not hold, touching or straddling an end, or short of its confidence ->
+// inconclusive (reason kInconclusiveNote, or kInconclusivePrefix and why). Throws
+// std::invalid_argument for low > high or a bound that is not positive.
+ClaimVerdict judge_overhead(double low_us, double high_us, double bound_us, bool reaches_nominal);
 
-// `other` is the other paper table of the same run (claim 3 compares them), or nullptr. An open
-// verdict's note is kInconclusiveNote or starts with kInconclusivePrefix (formats/claim.hpp).
+// `other` is the other paper table of the same run (claim 3 compares them), or nullptr. An
+// inconclusive verdict's reason is kInconclusiveNote or starts with kInconclusivePrefix
+// (formats/claim.hpp).
 std::vector<Claim> table_claims(const MeasuredTable& t, const MeasuredTable* other, const ReportContext& ctx);
 // The same as the table JSON's "claims" array.
 nlohmann::ordered_json claims_json(const MeasuredTable& t, const MeasuredTable* other, const ReportContext& ctx);

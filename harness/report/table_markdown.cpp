@@ -252,7 +252,7 @@ void write_claims(std::ostringstream& os, const std::vector<Claim>& claims) {
     os << "- **" << claim_verdict(c) << "**" << (c.informative && measured ? " (informative: CPU device)" : "") << " — "
        << c.text << "\n  - criterion: " << c.criterion;
     if (measured) os << "\n  - measured: `" << c.measured.dump() << "`";
-    if (!c.note.empty()) os << "\n  - " << c.note;
+    if (!claim_note(c).empty()) os << "\n  - " << claim_note(c);
     os << "\n";
   }
 }

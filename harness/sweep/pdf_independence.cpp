@@ -92,22 +92,22 @@ void judge(PdfIndependence& j) {
     if (p.fis) any_fis = true;
     if (!p.fis && p.in_paper) any_kmeans = true;
     if (!p.equivalence) continue;
-    const CaseEquivalence& e = *p.equivalence;
+    const SweepClaimEquivalence& e = *p.equivalence;
     // The γ that decides: the largest TOST p-value (equivalence), the smallest outside one.
     const GammaChange* worst = nullptr;
     for (const GammaChange& c : p.changes) {
       if (c.reference) continue;
-      if (e.verdict == "not equivalent" ? (!worst || c.p_outside < worst->p_outside)
-                                        : (!worst || c.p_equivalent > worst->p_equivalent))
+      if (e.verdict.fails() ? (!worst || c.p_outside < worst->p_outside)
+                            : (!worst || c.p_equivalent > worst->p_equivalent))
         worst = &c;
     }
     const std::string at = worst ? " (at γ=" + number_text(worst->gamma, 4) + " moves " +
                                        interval_text(worst->change, worst->low, worst->high) + ")"
                                  : std::string();
-    if (e.verdict == "not equivalent")
+    if (e.verdict.fails())
       refuted.push_back(p.generator + " " + p.view + " is not within ±" + percent(j.band) + at + ": p " +
                         number_text(e.p_outside, 3) + " <= Holm level " + number_text(e.level_outside, 3));
-    else if (e.verdict == "inconclusive")
+    else if (e.verdict.inconclusive())
       open.push_back(p.generator + " " + p.view + " not shown within ±" + percent(j.band) + at + ": TOST p " +
                      number_text(e.p_equivalent, 3) + ", Holm level " + number_text(e.level_equivalent, 3) +
                      (e.p_equivalent <= e.level_equivalent ? " (Holm stopped at a smaller p-value)" : ""));
@@ -118,6 +118,7 @@ void judge(PdfIndependence& j) {
       if (!f.fis || f.view != k.view) continue;
       const std::string what = k.generator + " spread " + interval_text(k.spread, k.low, k.high) + " vs " +
                                f.generator + " " + interval_text(f.spread, f.low, f.high) + " on " + k.view;
+      // The edge convention of core/claim_verdict.hpp: intervals that touch overlap.
       if (k.high < f.low) refuted.push_back(what + ": k-means moves less");
       else if (!(k.low > f.high)) open.push_back(what + ": the intervals overlap");
     }
@@ -130,18 +131,24 @@ void judge(PdfIndependence& j) {
     if (v.size() > kShown) s += "; and " + std::to_string(v.size() - kShown) + " more";
     return s;
   };
+  j.verdict.reset();
+  j.note.clear();
   if (!any_fis || !any_kmeans) {
-    j.holds = std::nullopt;
     j.note = "needs a FIS generator and a paper k-means generator on the pdf-sharpness axis";
-  } else if (!refuted.empty()) {
-    j.holds = false;
-    j.note = joined(refuted);
-  } else if (!open.empty()) {
-    j.holds = std::nullopt;
-    j.note = std::string(kInconclusivePrefix) + ": " + joined(open);
-  } else {
-    j.holds = true;
+    return;
   }
+  ClaimVerdict v;
+  v.rule = "every FIS case equivalent (TOST, Holm) and every paper k-means spread interval above every FIS one";
+  if (!refuted.empty()) {
+    v.outcome = Outcome::kDoesNotHold;
+    v.reason = joined(refuted);
+  } else if (!open.empty()) {
+    v.outcome = Outcome::kInconclusive;
+    v.reason = std::string(kInconclusivePrefix) + ": " + joined(open);
+  } else {
+    v.outcome = Outcome::kHolds;
+  }
+  j.verdict = std::move(v);
 }
 
 }  // namespace
@@ -169,18 +176,17 @@ void judge_fis_equivalence(std::vector<PdfSpread>& spreads, double alpha) {
   const std::vector<HolmDecision> eq = holm_correction(p_equivalent, alpha);
   const std::vector<HolmDecision> out = holm_correction(p_outside, alpha);
   for (std::size_t k = 0; k < fis.size(); ++k) {
-    CaseEquivalence e;
+    SweepClaimEquivalence e;
     e.p_equivalent = p_equivalent[k];
     e.p_outside = p_outside[k];
     e.level_equivalent = eq[k].level;
     e.level_outside = out[k].level;
-    e.verdict = eq[k].rejected ? "equivalent" : out[k].rejected ? "not equivalent" : "inconclusive";
+    e.verdict.outcome = eq[k].rejected    ? Outcome::kHolds
+                        : out[k].rejected ? Outcome::kDoesNotHold
+                                          : Outcome::kInconclusive;
+    e.verdict.rule = kEquivalenceRule;
     spreads[fis[k]].equivalence = e;
   }
-}
-
-std::string verdict_word(const std::optional<bool>& holds) {
-  return holds ? (*holds ? "holds" : "does not hold") : "inconclusive";
 }
 
 std::vector<PdfIndependence> judge_pdf_independence(const MeasuredSweep& s, const std::vector<SweepFit>& fits,
@@ -248,13 +254,10 @@ SweepClaim pdf_independence_claim(const PdfIndependence& j, const std::string& t
       }
       m.changes.push_back(change);
     }
-    if (p.equivalence)
-      m.equivalence =
-          SweepClaimEquivalence{p.equivalence->p_equivalent, p.equivalence->p_outside, p.equivalence->level_equivalent,
-                                p.equivalence->level_outside, p.equivalence->verdict};
+    m.equivalence = p.equivalence;
     s.measures.push_back(std::move(m));
   }
-  c.holds = j.holds;
+  c.verdict = j.verdict;
   c.note = j.note;
   c.informative = informative;
   return s;

@@ -34,14 +34,6 @@ struct GammaChange {
   double p_equivalent = 1, p_outside = 1;  // TOST at ±band (core/equivalence_tost.hpp); 1 at the reference
 };
 
-// A FIS case's equivalence verdict: its p-values over γ and the Holm levels they were held to.
-struct CaseEquivalence {
-  double p_equivalent = 1;  // the largest over γ (every γ must be within the band)
-  double p_outside = 1;     // the smallest over γ times the number of γ (some γ outside), at most 1
-  double level_equivalent = 0, level_outside = 0;  // Holm's alpha / (m - rank + 1) in each family
-  std::string verdict;                             // "equivalent", "not equivalent", "inconclusive"
-};
-
 struct PdfSpread {
   std::string generator, view;
   bool fis = false;
@@ -49,7 +41,10 @@ struct PdfSpread {
   std::vector<GammaChange> changes;  // by γ, the reference included (change 0)
   double spread = 0;                 // max |change| over γ
   double low = 0, high = 0;
-  std::optional<CaseEquivalence> equivalence;  // FIS cases
+  // FIS cases: p_equivalent the largest over γ (every γ must be within the band), p_outside the
+  // smallest over γ times the number of γ (some γ outside), at most 1; the levels Holm's
+  // alpha / (m - rank + 1) in each family.
+  std::optional<SweepClaimEquivalence> equivalence;
 };
 
 struct PdfIndependence {
@@ -60,8 +55,10 @@ struct PdfIndependence {
   double alpha = 0;  // the family-wise level of the equivalence tests
   std::size_t resamples = 0;
   std::vector<PdfSpread> spreads;  // per case, in the points' case order
-  std::optional<bool> holds;
-  std::string note;  // why it does not hold or is inconclusive, or what is missing
+  // None: the slice lacks a FIS or a paper k-means generator, `note` says so. The reason says why
+  // it does not hold or is inconclusive.
+  std::optional<ClaimVerdict> verdict;
+  std::string note;
 };
 
 struct PdfIndependenceOptions {
@@ -83,8 +80,5 @@ SweepClaim pdf_independence_claim(const PdfIndependence& judgement, const std::s
 // Each FIS case's verdict from its two p-values, Holm-corrected across the cases at `alpha`; the
 // other spreads are left alone. (Exposed so a test can give it p-values directly.)
 void judge_fis_equivalence(std::vector<PdfSpread>& spreads, double alpha);
-
-// "holds", "does not hold", "inconclusive".
-std::string verdict_word(const std::optional<bool>& holds);
 
 }  // namespace vsgl

@@ -72,8 +72,7 @@ SweepFitModel fit_model(const SweepFit& f, const SweepAxis& axis) {
   out.note = f.note;
   if (f.expected) out.expected = SweepExpected{f.expected->slope, f.expected->tolerance, f.expected->why};
   if (f.judgement) {
-    out.verdict = growth_verdict_name(f.judgement->verdict);
-    out.flagged = f.judgement->flagged();
+    out.verdict = f.judgement->verdict;
     out.judgement = f.judgement->text;
   }
   return out;

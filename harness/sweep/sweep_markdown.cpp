@@ -19,9 +19,9 @@ std::string cell_text(const TimingStatistics& s) {
 std::string verdict_text(const SweepFitModel& f) {
   if (!f.growth) return "no fit: " + f.note;
   if (!f.verdict) return "no expectation";
-  return f.flagged
-             ? "**" + *f.verdict + "** (expected " + number_text(f.expected->slope, 3) + ": " + f.expected->why + ")"
-             : *f.verdict;
+  return f.flagged() ? "**" + f.verdict_word() + "** (expected " + number_text(f.expected->slope, 3) + ": " +
+                           f.expected->why + ")"
+                     : f.verdict_word();
 }
 
 // "gbuffer=3840x2176, K=2": each axis's value at a point.
@@ -50,7 +50,7 @@ std::string header(const SweepModel& s) {
             (b.generator.empty() ? std::string() : ", " + b.generator + " " + b.view) + ": " + b.reason + "\n";
   }
   std::size_t flagged = 0;
-  for (const SweepFitModel& f : s.fits) flagged += f.flagged ? 1 : 0;
+  for (const SweepFitModel& f : s.fits) flagged += f.flagged() ? 1 : 0;
   md += flagged == 0
             ? "No phase grows other than its algorithm predicts.\n"
             : std::to_string(flagged) + " fit(s) exclude the expected growth (marked **faster**/**slower**).\n";
@@ -125,11 +125,10 @@ std::string pdf_frequency_table(const SweepModel& s) {
 std::string claim_table(const SweepClaim& c) {
   // Files written before the equivalence test (no alpha) keep their own wording and columns.
   const bool tost = c.alpha.has_value();
-  std::string md = "\n## PDF independence" +
-                   (c.slice.empty() ? std::string() : " (" + sweep_slice_text(c.slice) + ")") + ": " +
-                   verdict_word(c.claim.holds) +
-                   "\n\nChange of each view's median total from γ=" + number_text(c.reference_gamma, 4) +
-                   ", with 95 % bootstrap intervals; ";
+  std::string md =
+      "\n## PDF independence" + (c.slice.empty() ? std::string() : " (" + sweep_slice_text(c.slice) + ")") + ": " +
+      claim_verdict(c.claim) + "\n\nChange of each view's median total from γ=" + number_text(c.reference_gamma, 4) +
+      ", with 95 % bootstrap intervals; ";
   if (tost)
     md += "each FIS case must be shown equivalent within ±" + number_text(100 * c.band, 3) +
           " % at every γ (TOST, Holm-corrected across the FIS cases at α=" + number_text(*c.alpha, 3) +
@@ -150,12 +149,13 @@ std::string claim_table(const SweepClaim& c) {
       md += " " + pct(g.change) + " [" + pct(g.low) + ", " + pct(g.high) + "] |";
     md += " " + pct(p.spread) + " [" + pct(p.spread_low) + ", " + pct(p.spread_high) + "] |";
     if (tost)
-      md += p.equivalence ? " " + p.equivalence->verdict + " (p " + number_text(p.equivalence->p_equivalent, 3) +
-                                ", level " + number_text(p.equivalence->level_equivalent, 3) + ") |"
+      md += p.equivalence ? " " + equivalence_text(p.equivalence->verdict.outcome) + " (p " +
+                                number_text(p.equivalence->p_equivalent, 3) + ", level " +
+                                number_text(p.equivalence->level_equivalent, 3) + ") |"
                           : " |";
     md += "\n";
   }
-  if (!c.claim.note.empty()) md += "\n" + c.claim.note + "\n";
+  if (!claim_note(c.claim).empty()) md += "\n" + claim_note(c.claim) + "\n";
   return md;
 }
 
