@@ -13,6 +13,7 @@
 #include "harness/sweep/sweep_document.hpp"
 #include "harness/sweep/sweep_markdown.hpp"
 #include "harness/sweep/sweep_plots.hpp"
+#include "synthetic_header.hpp"
 #include "test_support.hpp"
 
 namespace vsgl {
@@ -114,17 +115,9 @@ TEST(PdfIndependence, HoldsWhenFisStaysFlatAndKmeansMovesWithGamma) {
   }
   // The JSON carries it as a claim, valid against the schema; the markdown gives its verdict.
   SweepContext ctx;
-  ctx.device = {{"name", "synthetic"},
-                {"type", "cpu"},
-                {"timestamps", true},
-                {"timestamp_valid_bits", 64},
-                {"timestamp_period_ns", 1.0}};
-  ctx.run = {{"started_utc", "2026-01-01T00:00:00Z"},
-             {"validation_layer", false},
-             {"quick", true},
-             {"protocol_compliant", false},
-             {"clocks_locked_claimed", false}};
-  ctx.build = nlohmann::ordered_json::object();
+  ctx.device = test::synthetic_device();
+  ctx.run = test::synthetic_run();
+  ctx.build = test::synthetic_build();
   ctx.paper = load_paper_tables(kSource / "results/paper/paper_tables.json");
   ctx.informative = true;
   const SweepModel document = sweep_document(s, sweep_fits(s), ctx, claims);

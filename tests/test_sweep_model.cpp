@@ -40,13 +40,12 @@ TEST(SweepModel, ReadsBackWhatTheSweepWrote) {
       to_json(sweep_document(s, fits, test::synthetic_sweep_context("GPU X", "2026-02-03T04:05:06Z"))), "mem");
 
   EXPECT_EQ(m.schema_version, 1);
-  EXPECT_EQ(m.device_name(), "GPU X");
-  EXPECT_EQ(m.device["type"], "cpu");  // the whole object kept
-  ASSERT_TRUE(m.git_commit().has_value());
-  EXPECT_EQ(*m.git_commit(), "0123456789abcdef");
-  EXPECT_FALSE(m.git_dirty());
-  EXPECT_EQ(m.started_utc(), "2026-02-03T04:05:06Z");
-  EXPECT_TRUE(m.quick());
+  EXPECT_EQ(m.device.name, "GPU X");
+  EXPECT_EQ(m.device.type, "cpu");
+  EXPECT_EQ(m.build.git_commit, "0123456789abcdef");
+  EXPECT_FALSE(m.build.git_dirty);
+  EXPECT_EQ(m.run.started_utc, "2026-02-03T04:05:06Z");
+  EXPECT_TRUE(m.run.quick);
   EXPECT_EQ(m.scene.name, "tiny");
   EXPECT_EQ(m.scene.kind, SceneKind::kProcedural);
   EXPECT_EQ(m.generators, (std::vector<std::string>{"fis_modified", "kmeans_3d"}));

@@ -18,6 +18,7 @@
 #include "harness/sweep/sweep_document.hpp"
 #include "harness/sweep/sweep_markdown.hpp"
 #include "harness/sweep/sweep_plots.hpp"
+#include "synthetic_header.hpp"
 #include "test_support.hpp"
 
 namespace vsgl {
@@ -85,17 +86,9 @@ MeasuredSweep synthetic_sweep(const std::vector<SweepAxis>& axes) {
 
 SweepContext synthetic_sweep_context() {
   SweepContext c;
-  c.device = nlohmann::ordered_json{{"name", "synthetic"},
-                                    {"type", "cpu"},
-                                    {"timestamps", true},
-                                    {"timestamp_valid_bits", 64},
-                                    {"timestamp_period_ns", 1.0}};
-  c.build = nlohmann::ordered_json{{"compiler", "test"}};
-  c.run = nlohmann::ordered_json{{"started_utc", "2026-01-01T00:00:00Z"},
-                                 {"validation_layer", false},
-                                 {"quick", true},
-                                 {"protocol_compliant", false},
-                                 {"clocks_locked_claimed", false}};
+  c.device = test::synthetic_device();
+  c.build = test::synthetic_build();
+  c.run = test::synthetic_run();
   return c;
 }
 

@@ -13,6 +13,7 @@
 #include "harness/formats/scene_identity.hpp"
 #include "harness/formats/table_model.hpp"
 #include "harness/report/capture_scene_identity.hpp"
+#include "synthetic_header.hpp"
 
 namespace vsgl {
 namespace {
@@ -149,9 +150,9 @@ TEST(SceneIdentity, TableSchemaTwoNamesAreInferredAndWrittenBackAsNames) {
 TEST(SceneIdentity, SchemaOneTablesAreLabelledByTheirCaptureScene) {
   ojson doc = table_doc(1, "unused");
   doc.erase("scene");  // schema 1 named the scene only under /capture
-  doc["device"] = ojson{{"name", "GPU"}, {"type", "discrete"}};
-  doc["build"] = ojson{{"git_commit", "abc1234"}};
-  doc["run"] = ojson{{"started_utc", "2026-11-22T00:00:00Z"}};
+  doc["device"] = to_json(test::synthetic_device("GPU", "discrete"));
+  doc["build"] = to_json(test::synthetic_build("abc1234"));
+  doc["run"] = to_json(test::synthetic_run("2026-11-22T00:00:00Z"));
   doc["config"] = ojson{{"K", 1}};
   doc["capture"] = ojson{{"scene", "atrium"}, {"hashes", ojson{{"gbuffer", ojson::object()}}}};
   const BenchRun run = parse_bench_run(doc, "h100/table1.json");

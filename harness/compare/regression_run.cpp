@@ -56,16 +56,16 @@ BenchRun parse_table_json(const json& doc, const OrderedJsonReader& r) {
                          "'); compare, export and dashboard key runs by paper table (1, 2) and do not read it yet");
   if (*m.table != 1 && *m.table != 2) r.fail("/table", "is " + std::to_string(*m.table) + ", not 1 or 2");
   const int table = *m.table;
-  if (!m.device.fields.is_object()) r.fail("/device", "missing field");
-  run.device = required(r, m.device.name, "/device/name");
-  run.device_type = m.device.type;
-  if (!m.build.fields.is_object()) r.fail("/build", "missing field");
-  run.git_commit = required(r, m.build.git_commit, "/build/git_commit");
-  run.git_dirty = m.build.git_dirty;
-  if (!m.run.fields.is_object()) r.fail("/run", "missing field");
-  run.date = required(r, m.run.started_utc, "/run/started_utc");
-  run.quick = m.run.quick;
-  run.debug_slow = m.run.debug_slow;
+  const DeviceRecord& device = required(r, m.device, "/device");
+  run.device = device.name;
+  run.device_type = device.type;
+  const BuildRecord& build = required(r, m.build, "/build");
+  run.git_commit = build.git_commit;
+  run.git_dirty = build.git_dirty;
+  const RunRecord& header_run = required(r, m.run, "/run");
+  run.date = header_run.started_utc;
+  run.quick = header_run.quick;
+  run.debug_slow = header_run.debug_slow;
 
   RunTable t;
   t.table = table;

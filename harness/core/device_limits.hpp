@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <string>
 
-#include <nlohmann/json_fwd.hpp>
+#include <nlohmann/json.hpp>
 
 namespace vsgl {
 
@@ -54,11 +54,12 @@ struct DeviceLimits {
   Rgba32fFeatures rgba32f_optimal_tiling;
 };
 
-// The `limits` object: every member above but the offset alignment, by its Vulkan name.
-nlohmann::json to_json(const DeviceLimits& limits);
+// The `limits` object: every member above but the offset alignment, by its Vulkan name, the keys
+// sorted (core/sorted_json.hpp).
+nlohmann::ordered_json to_json(const DeviceLimits& limits);
 // Reads what to_json writes at `path`; refuses a missing, mistyped or unknown member (InputError
 // naming its pointer).
-DeviceLimits device_limits_from_json(const BasicJsonReader<nlohmann::json>& reader, const nlohmann::json& limits,
-                                     const std::string& path);
+DeviceLimits device_limits_from_json(const BasicJsonReader<nlohmann::ordered_json>& reader,
+                                     const nlohmann::ordered_json& limits, const std::string& path);
 
 }  // namespace vsgl

@@ -397,13 +397,13 @@ nlohmann::ordered_json to_json(const TableModel& m) {
   if (m.title) doc["title"] = *m.title;
   if (m.scene) doc["scene"] = to_json(*m.scene);
   if (m.unit) doc["unit"] = *m.unit;
-  doc["device"] = m.device.fields;
+  if (m.device) doc["device"] = to_json(*m.device);
   if (m.driver) doc["driver"] = ojson{{"name", m.driver->name}, {"info", m.driver->info}, {"version", m.driver->version}};
   if (m.api_version) doc["api_version"] = *m.api_version;
   if (m.timestamp_period_ns) doc["timestamp_period_ns"] = *m.timestamp_period_ns;
   if (m.timestamp_valid_bits) doc["timestamp_valid_bits"] = *m.timestamp_valid_bits;
-  doc["build"] = m.build.fields;
-  doc["run"] = m.run.fields;
+  if (m.build) doc["build"] = to_json(*m.build);
+  if (m.run) doc["run"] = to_json(*m.run);
   doc["config"] = m.config;
   doc["capture"] = m.capture.fields;
   if (m.paper) doc["paper"] = ojson{{"source", m.paper->source}, {"file", m.paper->file}, {"gpu", m.paper->gpu}};
@@ -446,40 +446,16 @@ TableModel table_model_from_json(const nlohmann::ordered_json& doc, const std::s
   m.title = r.optional_string(doc, "", "title");
   m.unit = r.optional_string(doc, "", "unit");
 
-  if (const ojson* device = r.optional_object(doc, "", "device")) {
-    m.device.fields = *device;
-    m.device.name = r.optional_string(*device, "/device", "name");
-    m.device.type = device->contains("type") && (*device)["type"].is_string() ? (*device)["type"].get<std::string>() : "";
-  } else {
-    m.device.fields = nullptr;
-  }
+  if (const ojson* device = r.optional_object(doc, "", "device"))
+    m.device = device_record_from_json(r, *device, "/device");
   if (const ojson* d = r.optional_object(doc, "", "driver"))
     m.driver = DriverSummary{r.string(*d, "/driver", "name"), r.string(*d, "/driver", "info"), r.string(*d, "/driver", "version")};
   m.api_version = r.optional_string(doc, "", "api_version");
   m.timestamp_period_ns = r.optional_number(doc, "", "timestamp_period_ns");
   m.timestamp_valid_bits = r.optional_uint64(doc, "", "timestamp_valid_bits");
 
-  if (const ojson* build = r.optional_object(doc, "", "build")) {
-    m.build.fields = *build;
-    m.build.git_commit = r.optional_string(*build, "/build", "git_commit");
-    m.build.git_dirty = r.flag(*build, "/build", "git_dirty", false);
-  } else {
-    m.build.fields = nullptr;
-  }
-  if (const ojson* run = r.optional_object(doc, "", "run")) {
-    m.run.fields = *run;
-    m.run.started_utc = r.optional_string(*run, "/run", "started_utc");
-    m.run.quick = r.flag(*run, "/run", "quick", false);
-    if (const auto slow = run->find("debug_slow"); slow != run->end()) {
-      if (!slow->is_array()) r.fail("/run/debug_slow", "is not an array");
-      for (std::size_t i = 0; i < slow->size(); ++i) {
-        if (!(*slow)[i].is_string()) r.fail("/run/debug_slow/" + std::to_string(i), "is not a generator name");
-        m.run.debug_slow.push_back((*slow)[i].get<std::string>());
-      }
-    }
-  } else {
-    m.run.fields = nullptr;
-  }
+  if (const ojson* build = r.optional_object(doc, "", "build")) m.build = build_record_from_json(r, *build, "/build");
+  if (const ojson* run = r.optional_object(doc, "", "run")) m.run = run_record_from_json(r, *run, "/run");
   if (const ojson* config = r.optional_object(doc, "", "config")) m.config = *config;
   else m.config = nullptr;
   if (const ojson* capture = r.optional_object(doc, "", "capture")) m.capture = read_capture(r, *capture);

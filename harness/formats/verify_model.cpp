@@ -8,15 +8,16 @@
 #include "harness/core/embedded_files.hpp"
 #include "harness/core/json_reader.hpp"
 #include "harness/core/json_schema_subset.hpp"
+#include "harness/core/sorted_json.hpp"
 
 namespace vsgl {
 namespace {
 
-using json = nlohmann::json;
+using json = nlohmann::ordered_json;
 
 const char* kind_name(VerifyCheckKind kind) { return kind == VerifyCheckKind::kMeasurement ? "measurement" : "check"; }
 
-VerifyCheck read_check(const JsonReader& r, const json& c, const std::string& p) {
+VerifyCheck read_check(const OrderedJsonReader& r, const json& c, const std::string& p) {
   if (!c.is_object()) r.wrong_type(c, p, "an object");
   r.only_keys(c, p, {"view", "generator", "check", "kind", "measured", "tolerance", "expected", "passed", "detail"});
   VerifyCheck out;
@@ -47,29 +48,30 @@ VerifyCheck read_check(const JsonReader& r, const json& c, const std::string& p)
 
 }  // namespace
 
-nlohmann::json to_json(const VerifyCheck& c) {
+nlohmann::ordered_json to_json(const VerifyCheck& c) {
   json out{{"view", c.view},         {"generator", c.generator}, {"check", c.check},
            {"measured", c.measured}, {"passed", c.passed},       {"detail", c.detail}};
   if (c.kind) out["kind"] = kind_name(*c.kind);
   if (c.tolerance) out["tolerance"] = *c.tolerance;
   if (c.expected) out["expected"] = *c.expected;
-  return out;
+  return sorted_keys(out);
 }
 
-nlohmann::json to_json(const VerifyDocument& doc) {
+nlohmann::ordered_json to_json(const VerifyDocument& doc) {
   json checks = json::array();
   for (const VerifyCheck& c : doc.checks) checks.push_back(to_json(c));
-  return json{{"capture", doc.capture}, {"scene", doc.scene}, {"device", to_json(doc.device)}, {"checks", checks}};
+  return sorted_keys(
+      json{{"capture", doc.capture}, {"scene", doc.scene}, {"device", to_json(doc.device)}, {"checks", checks}});
 }
 
-VerifyDocument verify_from_json(const nlohmann::json& doc, const std::string& where) {
-  const JsonReader r(where, JsonPathStyle::kPointer);
+VerifyDocument verify_from_json(const nlohmann::ordered_json& doc, const std::string& where) {
+  const OrderedJsonReader r(where, JsonPathStyle::kPointer);
   if (!doc.is_object()) r.wrong_type(doc, "", "an object");
   r.only_keys(doc, "", {"capture", "scene", "device", "checks"});
   VerifyDocument out;
   out.capture = r.string(doc, "", "capture");
   out.scene = r.string(doc, "", "scene");
-  out.device = device_from_json(r.object(doc, "", "device"), where, "/device");
+  out.device = device_record_from_json(r, r.object(doc, "", "device"), "/device");
   const json& checks = r.member(doc, "", "checks");
   if (!checks.is_array()) r.wrong_type(checks, "/checks", "an array");
   for (std::size_t i = 0; i < checks.size(); ++i)
@@ -78,13 +80,13 @@ VerifyDocument verify_from_json(const nlohmann::json& doc, const std::string& wh
 }
 
 VerifyDocument read_verify_file(const std::filesystem::path& path) {
-  return verify_from_json(json(read_json_file(path, "the verify document")), path_text(path));
+  return verify_from_json(read_json_file(path, "the verify document"), path_text(path));
 }
 
 std::string verify_file_text(const VerifyDocument& doc) {
   const json out = to_json(doc);
-  require_conforming(nlohmann::ordered_json(out), json(embedded_json(kVerifySchemaFile, "the verify schema")),
-                     "the verify document", embedded_file_label(kVerifySchemaFile));
+  require_conforming(out, nlohmann::json(embedded_json(kVerifySchemaFile, "the verify schema")), "the verify document",
+                     embedded_file_label(kVerifySchemaFile));
   return out.dump(2) + "\n";
 }
 

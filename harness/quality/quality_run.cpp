@@ -26,7 +26,7 @@
 #include "harness/quality/quality_pictures.hpp"
 #include "harness/quality/quality_reference.hpp"
 #include "harness/quality/reference_capture.hpp"
-#include "harness/timing/run_provenance.hpp"
+#include "harness/formats/run_header.hpp"
 #include "harness/quality/shading_pass.hpp"
 
 namespace vsgl {
@@ -710,10 +710,11 @@ void write_header(QualityModel& out, Device& device, const Capture& capture, con
   out.capture_hashes = capture_hashes_json(capture);
   out.device_name = device.info().name;
   out.device_driver = device.info().driver_name + " " + device.info().driver_info;
-  out.build = build_json();
-  out.version = out.build.at("vsgl_bench_version").get<std::string>();
-  out.git_commit = out.build.at("git_commit").get<std::string>();
-  out.git_dirty = out.build.at("git_dirty").get<bool>();
+  const BuildRecord build = this_build();
+  out.build = to_json(build);
+  out.version = build.vsgl_bench_version;
+  out.git_commit = build.git_commit;
+  out.git_dirty = build.git_dirty;
   out.generators = config.generators;
   out.light_vsgls = config.light_vsgls;
   out.camera_vsgls = config.camera_vsgls;
