@@ -74,16 +74,18 @@ TEST(FrameError, ABlackFrameHasScaleZeroAndBadInputIsRefused) {
 }
 
 TEST(SeriesSummary, MeanNinetyFifthPercentileAndMaximum) {
+  // A per-frame series is summarized by core's summarize, like every other set of values.
   std::vector<double> v;
   for (int i = 20; i >= 1; --i) v.push_back(i);  // unsorted on purpose
-  const SeriesSummary s = summarize_series(v);
+  const SampleStats s = summarize(v);
   EXPECT_DOUBLE_EQ(s.mean, 10.5);
   EXPECT_NEAR(s.p95, 1.0 + 19.0 * 0.95, 1e-12);  // type 7: 1 + (n - 1) p on 1..20
+  EXPECT_NEAR(s.p99, 1.0 + 19.0 * 0.99, 1e-12);
   EXPECT_DOUBLE_EQ(s.max, 20.0);
-  const std::vector<double> one{3.0};
-  EXPECT_DOUBLE_EQ(summarize_series(one).p95, 3.0);
-  EXPECT_THROW(summarize_series(std::vector<double>{}), std::invalid_argument);
-  EXPECT_THROW(summarize_series(std::vector<double>{1.0, NAN}), std::invalid_argument);
+  const std::vector<double> two{3.0, 5.0};
+  EXPECT_DOUBLE_EQ(summarize(two).p95, 3.0 + 2.0 * 0.95);
+  EXPECT_THROW(summarize(std::vector<double>{3.0}), std::invalid_argument);  // no standard deviation
+  EXPECT_THROW(summarize(std::vector<double>{1.0, NAN}), std::invalid_argument);
 }
 
 TEST(FrameDeviation, EachFramesShareOfTheFlicker) {

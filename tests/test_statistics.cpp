@@ -23,6 +23,9 @@ TEST(Statistics, FourSamplesByHand) {
   EXPECT_DOUBLE_EQ(st.median, 2.5);
   EXPECT_DOUBLE_EQ(st.q1, 1.75);
   EXPECT_DOUBLE_EQ(st.q3, 3.25);
+  // h(p95) = 2.85 -> 3 + 0.85 = 3.85; h(p99) = 2.97 -> 3.97.
+  EXPECT_DOUBLE_EQ(st.p95, 3.85);
+  EXPECT_DOUBLE_EQ(st.p99, 3.97);
   EXPECT_DOUBLE_EQ(st.mean, 2.5);
   EXPECT_DOUBLE_EQ(st.stdev, std::sqrt(5.0 / 3.0));
   EXPECT_DOUBLE_EQ(relative_iqr(st), 1.5 / 2.5);

@@ -20,7 +20,7 @@ SampleStats summarize(std::span<const double> samples) {
   if (samples.size() < 2)
     throw std::invalid_argument("statistics need at least 2 samples (got " + std::to_string(samples.size()) + ")");
   for (double s : samples)
-    if (!std::isfinite(s)) throw std::invalid_argument("a timing sample is not finite");
+    if (!std::isfinite(s)) throw std::invalid_argument("a sample is not finite");
   std::vector<double> sorted(samples.begin(), samples.end());
   std::sort(sorted.begin(), sorted.end());
   SampleStats st;
@@ -30,12 +30,15 @@ SampleStats summarize(std::span<const double> samples) {
   st.median = quantile_sorted(sorted, 0.5);
   st.q1 = quantile_sorted(sorted, 0.25);
   st.q3 = quantile_sorted(sorted, 0.75);
-  // Two passes (mean, then squared deviations): no cancellation for tightly clustered samples.
+  st.p95 = quantile_sorted(sorted, 0.95);
+  st.p99 = quantile_sorted(sorted, 0.99);
+  // Two passes (mean, then squared deviations): no cancellation for tightly clustered samples. In
+  // the input's order, as the per-frame series' means in committed quality documents were summed.
   double sum = 0;
-  for (double s : sorted) sum += s;
+  for (double s : samples) sum += s;
   st.mean = sum / static_cast<double>(st.count);
   double squares = 0;
-  for (double s : sorted) squares += (s - st.mean) * (s - st.mean);
+  for (double s : samples) squares += (s - st.mean) * (s - st.mean);
   st.stdev = std::sqrt(squares / static_cast<double>(st.count - 1));
   return st;
 }
@@ -192,18 +195,6 @@ PairedInterval paired_interval(std::span<const double> differences, double confi
     r.confidence = 1.0 - 2.0 * normal_cdf((static_cast<double>(c) - 0.5 - mean) / sd);
   }
   return r;
-}
-
-SeriesSummary summarize_series(std::span<const double> values) {
-  if (values.empty()) throw std::invalid_argument("summarize_series: no values");
-  std::vector<double> sorted(values.begin(), values.end());
-  double sum = 0;
-  for (double v : sorted) {
-    if (!std::isfinite(v)) throw std::invalid_argument("summarize_series: a value is not finite");
-    sum += v;
-  }
-  std::sort(sorted.begin(), sorted.end());
-  return {sum / static_cast<double>(sorted.size()), quantile_sorted(sorted, 0.95), sorted.back()};
 }
 
 }  // namespace vsgl

@@ -1,9 +1,11 @@
 #pragma once
-// Summary statistics of timing samples (DESIGN.md §9): median (the headline), min, max, quartiles,
-// mean and sample standard deviation. Quartiles use linear interpolation between order
-// statistics, Hyndman & Fan type 7 (R's default, NumPy's "linear"): with the n samples sorted
-// as x[0] <= ... <= x[n-1], Q(p) = x[j] + (h - j) (x[j+1] - x[j]) where h = (n - 1) p, j = floor(h).
-// A statistic that cannot be computed is an error, never a NaN in a table (DESIGN.md §12).
+// Summary statistics of a set of values (DESIGN.md §9): timing samples, a per-frame series
+// (§11a.1), the kernels' PDF mass (§11a). One summary for all: median (the timing headline), min,
+// max, quartiles, the 95th and 99th percentiles, mean and sample standard deviation. Quantiles use
+// linear interpolation between order statistics, Hyndman & Fan type 7 (R's default, NumPy's
+// "linear"): with the n values sorted as x[0] <= ... <= x[n-1], Q(p) = x[j] + (h - j) (x[j+1] -
+// x[j]) where h = (n - 1) p, j = floor(h). A statistic that cannot be computed is an error, never
+// a NaN in a table (DESIGN.md §12).
 #include <cstddef>
 #include <span>
 #include <vector>
@@ -17,6 +19,8 @@ struct SampleStats {
   double max = 0;
   double q1 = 0;
   double q3 = 0;
+  double p95 = 0;  // a per-frame series' tail (DESIGN.md §11a.1)
+  double p99 = 0;  // the kernels' PDF mass's tail (DESIGN.md §11a)
   double mean = 0;
   double stdev = 0;  // sample standard deviation (divisor n - 1)
 
@@ -30,13 +34,6 @@ double quantile_sorted(std::span<const double> sorted, double p);
 // Throws std::invalid_argument for fewer than 2 samples (no standard deviation) or a sample
 // that is not finite.
 SampleStats summarize(std::span<const double> samples);
-
-// A per-frame series over its frames (DESIGN.md §11a.1): mean, type-7 95th percentile and maximum.
-// Throws std::invalid_argument for no values or a value that is not finite.
-struct SeriesSummary {
-  double mean = 0, p95 = 0, max = 0;
-};
-SeriesSummary summarize_series(std::span<const double> values);
 
 // The stop rule's noise measure: IQR / median. Throws std::invalid_argument when the median
 // is not positive (timings are positive by construction; see TimestampPool::interval_ns).

@@ -144,7 +144,7 @@ json error_json(const ImageErrorSummary& e) {
 json series_json(const FrameSeries& series) {
   json out = json::object();
   for (const auto& [name, values] : series) {
-    const SeriesSummary sum = summarize_series(values);
+    const SampleStats sum = summarize(values);
     out[name] = json{{"per_frame", values}, {"mean", sum.mean}, {"p95", sum.p95}, {"max", sum.max}};
   }
   return out;
@@ -156,7 +156,8 @@ FrameSeries read_series(const JsonReader& r, const json& o, const std::string& p
     const std::string mp = p + "/" + name;
     if (!v.is_object()) r.wrong_type(v, mp, "an object");
     series[name] = r.numbers(v, mp, "per_frame");
-    if (series[name].empty()) r.fail(mp + "/per_frame", "has no frames");
+    if (series[name].size() < 2)
+      r.fail(mp + "/per_frame", "has " + std::to_string(series[name].size()) + " frame(s); a series needs at least 2");
   }
   return series;
 }

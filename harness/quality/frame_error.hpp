@@ -1,6 +1,6 @@
 #pragma once
 // The image error of one frame against its reference (DESIGN.md §11a.1): a pure CPU function over
-// radiance images, so tests can feed it known answers. Over frames, core's summarize_series.
+// radiance images, so tests can feed it known answers. Over frames, core's summarize.
 #include <cstdint>
 
 #include "harness/quality/flip.hpp"

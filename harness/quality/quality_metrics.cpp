@@ -11,21 +11,6 @@
 namespace vsgl {
 double pixel_luminance(glm::vec4 p) { return static_cast<double>(luminance(glm::vec3(p))); }
 
-ValueSummary summarize_values(std::vector<double> values) {
-  if (values.empty()) throw std::invalid_argument("summarize_values: no values");
-  std::sort(values.begin(), values.end());
-  ValueSummary s;
-  s.count = values.size();
-  // Mean and sample standard deviation (n - 1) as every table has them (core/statistics.hpp).
-  const SampleStats st = summarize(values);
-  s.mean = st.mean;
-  s.stdev = st.stdev;
-  s.min = values.front();
-  s.max = values.back();
-  s.p99 = quantile_sorted(values, 0.99);
-  return s;
-}
-
 std::vector<uint32_t> footprint_counts(const std::vector<VsglRecord>& kernels, const VirtualSquare& square) {
   const int64_t w = square.width, h = square.height;
   // 2D difference array: +1 at a footprint's first texel, -1 past its ends; prefix sums give the
@@ -90,7 +75,7 @@ KernelCoverage kernel_coverage(const std::vector<VsglRecord>& kernels, const Mip
   const double n_over_k = static_cast<double>(kernels.size()) / static_cast<double>(K);
   for (const VsglRecord& k : kernels)
     c.mass_ratio.push_back(static_cast<double>(modified_kernel_mass(pdf_pyramid, k.center(), k.level())) * n_over_k);
-  c.mass = summarize_values(c.mass_ratio);
+  c.mass = summarize(c.mass_ratio);
   return c;
 }
 

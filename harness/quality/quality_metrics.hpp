@@ -9,20 +9,12 @@
 #include <glm/glm.hpp>
 
 #include "harness/capture/capture.hpp"
+#include "harness/core/statistics.hpp"
 #include "harness/reference/fis_reference.hpp"
 #include "harness/quality/radiance_image.hpp"
 #include "harness/math/vsgl_math.hpp"
 
 namespace vsgl {
-
-// mean, sample standard deviation (n - 1, core's summarize), min, max, 99th percentile (type-7
-// quantile) of a set of values; at least 2 values (std::invalid_argument otherwise).
-struct ValueSummary {
-  std::size_t count = 0;
-  double mean = 0, stdev = 0, min = 0, max = 0, p99 = 0;
-};
-// Throws std::invalid_argument for an empty input.
-ValueSummary summarize_values(std::vector<double> values);
 
 // ---- Fig. 1: kernel footprints ---------------------------------------------------------------
 // Kernel i's footprint is the square of side 2^l_i texels centred at x_i * S in the virtual
@@ -37,7 +29,7 @@ struct KernelCoverage {
   uint64_t covered_centres = 0;  // sum over all in-bounds texels of their footprint count
   // Kernel i's PDF mass a(l_i) p_bar(x_i, l_i) (Eq. 3's left side) times N / K: 1 is the target.
   std::vector<double> mass_ratio;
-  ValueSummary mass;
+  SampleStats mass;  // of mass_ratio (core's summarize)
 };
 // Per in-bounds texel, how many footprints cover it (row-major W x H of the square's image).
 std::vector<uint32_t> footprint_counts(const std::vector<VsglRecord>& kernels, const VirtualSquare& square);

@@ -282,7 +282,7 @@ void write_frame_errors(std::ostringstream& md, const QualityModel& m, const Fra
         md << " n/a |";
         continue;
       }
-      const SeriesSummary sum = summarize_series(it->second);
+      const SampleStats sum = summarize(it->second);
       md << " " << num(sum.mean) << " / " << num(sum.p95) << " / " << num(sum.max) << " |";
     }
     md << "\n";
@@ -328,7 +328,7 @@ void write_k_sweep(std::ostringstream& md, const QualityModel& m) {
         "count error, Eq. 3 (floor) | max Phi_i / mean |\n|---|---|---|---|---|---|---|---|---|---|\n";
   const auto frame_mean = [](const KSweepRow& row, const char* series) {
     const auto it = row.per_frame.find(series);
-    return it == row.per_frame.end() ? std::string("n/a") : num(summarize_series(it->second).mean);
+    return it == row.per_frame.end() ? std::string("n/a") : num(summarize(it->second).mean);
   };
   for (const auto& [g, rows] : m.k_sweep)
     for (const KSweepRow& row : rows)

@@ -15,6 +15,7 @@
 #include "harness/vk/device.hpp"
 #include "harness/generators/device_view.hpp"
 #include "harness/core/error.hpp"
+#include "harness/core/statistics.hpp"
 #include "harness/core/generator_ids.hpp"
 #include "harness/reference/fis_reference.hpp"
 #include "harness/generators/generator_registry.hpp"
@@ -87,7 +88,7 @@ double power_sum(const std::vector<VsglRecord>& vsgls) {
   return s;
 }
 
-MassSummary summary_of(const ValueSummary& s) { return {s.mean, s.stdev, s.min, s.max, s.p99}; }
+MassSummary summary_of(const SampleStats& s) { return {s.mean, s.stdev, s.min, s.max, s.p99}; }
 
 PowerSummary power_summary(const PowerMetrics& p) {
   return {p.max_over_mean, p.p99_over_mean, p.power_ratio, p.total_vsgl_power, p.total_flux};
@@ -179,7 +180,7 @@ FluxOriginFrames flux_origin_frames(const std::vector<FluxOrigin>& origins) {
   for (std::size_t c = 0; c < kFluxClasses; ++c) {
     std::vector<double> v;
     for (const FluxOrigin& o : origins) v.push_back(o.gathered[c]);
-    const ValueSummary s = summarize_values(v);
+    const SampleStats s = summarize(v);
     out.gathered_mean.push_back(s.mean);
     out.gathered_stdev.push_back(s.stdev);
   }
@@ -190,12 +191,12 @@ FluxOriginFrames flux_origin_frames(const std::vector<FluxOrigin>& origins) {
     for (double g : o.gathered_by_oversized) by_oversized += g;
     oversized.push_back(by_oversized / o.attributed_power_ratio);
   }
-  const ValueSummary r = summarize_values(ratios);
+  const SampleStats r = summarize(ratios);
   out.ratio_mean = r.mean;
   out.ratio_stdev = r.stdev;
   out.ratio_min = r.min;
   out.ratio_max = r.max;
-  out.oversized_share_mean = summarize_values(oversized).mean;
+  out.oversized_share_mean = summarize(oversized).mean;
   return out;
 }
 
