@@ -40,6 +40,7 @@
 #include "bench/cli/gpu_session.hpp"
 #include "bench/cli/timed_generators.hpp"
 #include "harness/core/platform_path.hpp"
+#include "harness/core/sorted_json.hpp"
 #include "harness/capture/capture_files.hpp"
 #include "harness/generators/fis/fis_generator.hpp"
 #include "harness/generators/generator_registry.hpp"
@@ -117,16 +118,17 @@ void add_run_context(const DeviceInfo& info, const Options& o) {
   benchmark::AddCustomContext("vsgl_git_commit", build.git_commit);
   benchmark::AddCustomContext("vsgl_compiler", build.compiler);
   const GeneratorConfig resolved = resolve_fis_config(info, o.generator.config);
-  benchmark::AddCustomContext("vsgl_config",
-                              nlohmann::json{{"camera_vsgls", o.generator.camera_vsgls},
-                                             {"light_vsgls", o.generator.light_vsgls},
-                                             {"K", o.generator.config.K},
-                                             {"bisection_iterations", o.generator.config.bisection_iterations},
-                                             {"kmeans_iterations", o.generator.config.kmeans_iterations},
-                                             {"pyramid", pyramid_path_name(resolved.pyramid)},
-                                             {"mipmapping", mip_strategy_name(*resolved.mipmapping)},
-                                             {"replays", o.replays}}
-                                  .dump());
+  benchmark::AddCustomContext(
+      "vsgl_config",
+      sorted_keys(nlohmann::ordered_json{{"camera_vsgls", o.generator.camera_vsgls},
+                                         {"light_vsgls", o.generator.light_vsgls},
+                                         {"K", o.generator.config.K},
+                                         {"bisection_iterations", o.generator.config.bisection_iterations},
+                                         {"kmeans_iterations", o.generator.config.kmeans_iterations},
+                                         {"pyramid", pyramid_path_name(resolved.pyramid)},
+                                         {"mipmapping", mip_strategy_name(*resolved.mipmapping)},
+                                         {"replays", o.replays}})
+          .dump());
 }
 
 // Everything one input's benchmarks replay; alive until the end of main.

@@ -67,7 +67,7 @@ TEST(DeviceLimits, TheDriversLimitsAreTheDocumentsLimitsAndReadBackAsWritten) {
   EXPECT_EQ(j["maxComputeWorkGroupSize"], nlohmann::ordered_json({0u, 0u, 64u}));
   EXPECT_EQ(j["rgba32f_optimal_tiling"]["blit_dst"], true);
   EXPECT_FALSE(j.contains("minStorageBufferOffsetAlignment"));
-  const DeviceLimits back = device_limits_from_json(OrderedJsonReader("limits", JsonPathStyle::kPointer), j, "/limits");
+  const DeviceLimits back = device_limits_from_json(JsonReader("limits", JsonPathStyle::kPointer), j, "/limits");
   EXPECT_EQ(to_json(back), j);
   EXPECT_EQ(back.workgroup_count[1], 65535u);
   EXPECT_EQ(back.max_memory_allocation_size, 1ull << 32);
@@ -76,7 +76,7 @@ TEST(DeviceLimits, TheDriversLimitsAreTheDocumentsLimitsAndReadBackAsWritten) {
   nlohmann::ordered_json unknown = j;
   unknown["maxFramebufferWidth"] = 4096u;
   try {
-    device_limits_from_json(OrderedJsonReader("limits", JsonPathStyle::kPointer), unknown, "/limits");
+    device_limits_from_json(JsonReader("limits", JsonPathStyle::kPointer), unknown, "/limits");
     FAIL() << "an unknown limit was accepted";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("/limits/maxFramebufferWidth: is not a known limit"), std::string::npos)

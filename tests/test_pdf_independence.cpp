@@ -132,8 +132,8 @@ TEST(PdfIndependence, HoldsWhenFisStaysFlatAndKmeansMovesWithGamma) {
   // The document reads back to the same JSON.
   EXPECT_EQ(to_json(read_sweep_model(doc, "the synthetic sweep")), doc);
   EXPECT_EQ(doc["claims"][0]["text"], ctx.paper["claims"][2]);
-  const auto schema = nlohmann::json::parse(std::ifstream(kSource / "results/schema/sweep.schema.json"));
-  const auto problems = validate_against_schema(nlohmann::json::parse(doc.dump()), schema);
+  const auto schema = nlohmann::ordered_json::parse(std::ifstream(kSource / "results/schema/sweep.schema.json"));
+  const auto problems = validate_against_schema(doc, schema);
   EXPECT_TRUE(problems.empty()) << problems.front();
   EXPECT_NE(sweep_markdown(document).find("## PDF independence: holds"), std::string::npos);
   EXPECT_NE(sweep_markdown(document).find("| equivalent (p "), std::string::npos);
@@ -267,7 +267,7 @@ TEST(PdfIndependence, InconclusiveWhenNothingMovesAndWithoutKmeans) {
 }
 
 TEST(SweepPaperReference, PlotsMarkThePaperAtItsSetupForAPaperScene) {
-  const nlohmann::json paper = load_paper_tables(kSource / "results/paper/paper_tables.json");
+  const nlohmann::ordered_json paper = load_paper_tables(kSource / "results/paper/paper_tables.json");
   EXPECT_EQ(paper_reference_x(paper, SweepParameter::kVsgls, "camera_view"), 2048.0);
   EXPECT_EQ(paper_reference_x(paper, SweepParameter::kVsgls, "light_view"), 1024.0);
   EXPECT_EQ(paper_reference_x(paper, SweepParameter::kGbuffer, "camera_view"), 1920.0 * 1088.0);

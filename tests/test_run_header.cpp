@@ -76,7 +76,7 @@ TEST(RunHeader, EveryCommittedDeviceBuildAndRunReadsAndWritesBackTheSame) {
   for (const fs::path& f : committed_json_documents()) {
     SCOPED_TRACE(f.string());
     const ojson doc = read_json_file(f, "the document");
-    const OrderedJsonReader r(f.string(), JsonPathStyle::kPointer);
+    const JsonReader r(f.string(), JsonPathStyle::kPointer);
     std::vector<std::pair<std::string, const ojson*>> device_objects;
     if (doc.contains("device") && doc["device"].contains("index"))
       device_objects.emplace_back("/device", &doc["device"]);
@@ -145,7 +145,7 @@ TEST(RunHeader, WritesTheKeyOrderOfTheCommittedFiles) {
 }
 
 TEST(RunHeader, TheReaderNamesWhatIsMissingMistypedOrUnknown) {
-  const OrderedJsonReader r("h.json", JsonPathStyle::kPointer);
+  const JsonReader r("h.json", JsonPathStyle::kPointer);
   const ojson device = to_json(test::synthetic_device());
   ojson bad = device;
   bad.erase("queue_family");

@@ -241,9 +241,9 @@ TEST(SweepModel, AnIncompleteSweepReadsBackWithThePointsItHas) {
   s.complete = false;
   const ojson doc = test::synthetic_sweep_json(s);
   EXPECT_EQ(doc["complete"], false);
-  const nlohmann::json schema =
+  const nlohmann::ordered_json schema =
       test::read_json(std::filesystem::path(VSGL_SOURCE_DIR) / "results/schema/sweep.schema.json");
-  const auto problems = validate_against_schema(nlohmann::json::parse(doc.dump()), schema);
+  const auto problems = validate_against_schema(doc, schema);
   EXPECT_TRUE(problems.empty()) << problems.front();
   const SweepModel m = read_sweep_model(doc, "mem");
   EXPECT_FALSE(m.complete);
@@ -262,7 +262,7 @@ TEST(SweepModel, AnIncompleteSweepReadsBackWithThePointsItHas) {
   EXPECT_TRUE(read_sweep_model(complete, "mem").complete);
   ojson older = complete;
   older.erase("complete");
-  EXPECT_TRUE(validate_against_schema(nlohmann::json::parse(older.dump()), schema).empty());
+  EXPECT_TRUE(validate_against_schema(older, schema).empty());
   const SweepModel o = read_sweep_model(older, "mem");
   EXPECT_TRUE(o.complete);
   EXPECT_EQ(o.reached_points(), o.planned_points());
@@ -275,7 +275,7 @@ TEST(SweepModel, AnIncompleteSweepReadsBackWithThePointsItHas) {
   wrong["complete"] = "no";
   msg = test::input_error([&] { read_sweep_model(wrong, "runs/sweep.json"); });
   EXPECT_NE(msg.find("/complete"), std::string::npos) << msg;
-  EXPECT_FALSE(validate_against_schema(nlohmann::json::parse(wrong.dump()), schema).empty());
+  EXPECT_FALSE(validate_against_schema(wrong, schema).empty());
 }
 
 TEST(SweepModel, ReadsAFileAndNamesItWhenItCannot) {

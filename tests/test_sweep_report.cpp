@@ -135,9 +135,9 @@ TEST(SweepReport, JsonConformsToTheSchemaAndKeepsTheRawSamples) {
   const MeasuredSweep s = synthetic_sweep(axes);
   const auto fits = sweep_fits(s);
   const nlohmann::ordered_json doc = to_json(sweep_document(s, fits, synthetic_sweep_context()));
-  const nlohmann::json schema = test::read_json(kSweepSchemaFile);
+  const nlohmann::ordered_json schema = test::read_json(kSweepSchemaFile);
   ASSERT_TRUE(schema_subset_problems(schema).empty());
-  const auto problems = validate_against_schema(nlohmann::json::parse(doc.dump()), schema);
+  const auto problems = validate_against_schema(doc, schema);
   EXPECT_TRUE(problems.empty()) << problems.front();
   ASSERT_EQ(doc["points"].size(), 6u);
   EXPECT_EQ(doc["points"][3]["values"]["vsgls"], "16");
@@ -151,13 +151,13 @@ TEST(SweepReport, JsonConformsToTheSchemaAndKeepsTheRawSamples) {
   EXPECT_TRUE(flagged);
 
   // The schema can fail: a point without samples, a fit without its verdict, an unknown axis.
-  nlohmann::json broken = nlohmann::json::parse(doc.dump());
+  nlohmann::ordered_json broken = doc;
   broken["points"][0]["cases"][0]["phases"][0].erase("samples_ms");
   EXPECT_FALSE(validate_against_schema(broken, schema).empty());
-  broken = nlohmann::json::parse(doc.dump());
+  broken = doc;
   broken["fits"][0].erase("verdict");
   EXPECT_FALSE(validate_against_schema(broken, schema).empty());
-  broken = nlohmann::json::parse(doc.dump());
+  broken = doc;
   broken["axes"][0]["name"] = "lights";
   EXPECT_FALSE(validate_against_schema(broken, schema).empty());
 }
@@ -218,7 +218,7 @@ TEST(SweepReport, GammaZeroStaysOffTheLogAxis) {
   EXPECT_EQ(f.expected->slope, 0.0);
   const SweepModel document = sweep_document(three, fits, synthetic_sweep_context());
   const auto doc = to_json(document);
-  EXPECT_TRUE(validate_against_schema(nlohmann::json::parse(doc.dump()), test::read_json(kSweepSchemaFile)).empty());
+  EXPECT_TRUE(validate_against_schema(doc, test::read_json(kSweepSchemaFile)).empty());
   EXPECT_EQ(doc["points"][2]["pdf_sharpness"]["pdf_frequency"]["light_view"]["relative_variance"], 2.0);
   EXPECT_NE(sweep_markdown(document).find("## PDF frequency at each"), std::string::npos);
 }

@@ -169,8 +169,8 @@ BenchRun run_on(const SceneIdentity& scene, const std::string& device, const std
   r.date = date;
   RunTable t;
   t.table = 1;
-  t.capture_hashes = nlohmann::json{{"gbuffer", "h"}};
-  t.workload = nlohmann::json{{"K", 1}};
+  t.capture_hashes = nlohmann::ordered_json{{"gbuffer", "h"}};
+  t.workload = nlohmann::ordered_json{{"K", 1}};
   t.scene = scene;
   r.tables[1] = t;
   for (const char* name : {"table1/fis_tok15/total", "table1/fis_tok15/camera_view/additional"}) {
@@ -219,7 +219,7 @@ TEST(SceneIdentity, ExportNamesCarryTheScene) {
 TEST(SceneIdentity, DashboardKeepsOneSeriesPerDeviceAndScene) {
   const std::vector<BenchRun> runs{run_on(stand_in_atrium(), "GPU", "2026-12-01T00:00:00Z"),
                                    run_on(paper_sponza(), "GPU", "2026-12-02T00:00:00Z")};
-  const std::string html = dashboard_html(runs, nlohmann::json::object(), "results", {});
+  const std::string html = dashboard_html(runs, nlohmann::ordered_json::object(), "results", {});
   EXPECT_NE(html.find("Table 1 (atrium, stand-in; sponza, paper scene)"), std::string::npos);
   EXPECT_NE(html.find("GPU (atrium, stand-in)"), std::string::npos);
   EXPECT_NE(html.find("GPU (sponza, paper scene)"), std::string::npos);

@@ -11,15 +11,13 @@
 #include "harness/core/path_text.hpp"
 #include "harness/core/statistics.hpp"
 #include "harness/core/printable_text.hpp"
+#include "harness/core/sorted_json.hpp"
 #include "harness/formats/table_model.hpp"
 
 namespace vsgl {
 namespace {
 
 using json = nlohmann::ordered_json;
-
-// Order-independent copy for equality (capture hashes, workload config).
-nlohmann::json unordered(const json& j) { return nlohmann::json::parse(j.dump()); }
 
 std::string text_or(const json& obj, const std::string& key, const std::string& fallback) {
   const auto it = obj.find(key);
@@ -41,12 +39,12 @@ RunSeries series_of(const TimingStatistics& stats, std::string name, int table, 
 
 // What identifies a run and must be in its file, beyond what the table model itself requires.
 template <typename T>
-const T& required(const OrderedJsonReader& r, const std::optional<T>& v, const std::string& pointer) {
+const T& required(const JsonReader& r, const std::optional<T>& v, const std::string& pointer) {
   if (!v) r.fail(pointer, "missing field");
   return *v;
 }
 
-BenchRun parse_table_json(const json& doc, const OrderedJsonReader& r) {
+BenchRun parse_table_json(const json& doc, const JsonReader& r) {
   const TableModel m = table_model_from_json(doc, r.where());
   BenchRun run;
   run.format = "table";
@@ -70,14 +68,14 @@ BenchRun parse_table_json(const json& doc, const OrderedJsonReader& r) {
   RunTable t;
   t.table = table;
   if (!m.capture.fields.is_object()) r.fail("/capture", "missing field");
-  t.capture_hashes = unordered(required(r, m.capture.hashes, "/capture/hashes"));
+  t.capture_hashes = sorted_keys(required(r, m.capture.hashes, "/capture/hashes"));
   // The workload, not the protocol: repetitions, noise target and caps change how long a run
   // measures, not what it measures; the generator list decides which rows exist (compared row
   // by row); kmeans_sum and sampler are descriptions.
   if (!m.config.is_object()) r.fail("/config", "missing field");
   json workload = m.config;
   for (const char* key : {"timing", "generators", "kmeans_sum", "sampler"}) workload.erase(key);
-  t.workload = unordered(workload);
+  t.workload = sorted_keys(workload);
   t.scene = m.timed_scene();
   run.tables[table] = t;
 
@@ -93,7 +91,7 @@ BenchRun parse_table_json(const json& doc, const OrderedJsonReader& r) {
   return run;
 }
 
-double to_ms(double value, const std::string& unit, const OrderedJsonReader& r, const std::string& pointer) {
+double to_ms(double value, const std::string& unit, const JsonReader& r, const std::string& pointer) {
   if (unit == "ns") return value * 1e-6;
   if (unit == "us") return value * 1e-3;
   if (unit == "ms") return value;
@@ -101,7 +99,7 @@ double to_ms(double value, const std::string& unit, const OrderedJsonReader& r, 
   r.fail(pointer, "unknown time unit " + quoted_text(unit));
 }
 
-json parse_embedded(const OrderedJsonReader& r, const json& context, const std::string& key) {
+json parse_embedded(const JsonReader& r, const json& context, const std::string& key) {
   const std::string text = r.string(context, "/context", key);
   try {
     return json::parse(text);
@@ -110,7 +108,7 @@ json parse_embedded(const OrderedJsonReader& r, const json& context, const std::
   }
 }
 
-BenchRun parse_gbench_json(const json& doc, const OrderedJsonReader& r) {
+BenchRun parse_gbench_json(const json& doc, const JsonReader& r) {
   BenchRun run;
   run.format = "gbench";
   const json& context = r.object(doc, "", "context");
@@ -161,8 +159,9 @@ BenchRun parse_gbench_json(const json& doc, const OrderedJsonReader& r) {
     if (!run.tables.contains(s.table)) {
       RunTable t;
       t.table = s.table;
-      t.capture_hashes = unordered(parse_embedded(r, context, "vsgl_table" + std::to_string(s.table) + "_capture_hashes"));
-      t.workload = unordered(workload);
+      t.capture_hashes =
+          sorted_keys(parse_embedded(r, context, "vsgl_table" + std::to_string(s.table) + "_capture_hashes"));
+      t.workload = sorted_keys(workload);
       const std::string scene_key = "vsgl_table" + std::to_string(s.table) + "_scene";
       if (context.contains(scene_key))
         t.scene = scene_identity_from_json(parse_embedded(r, context, scene_key), r.where(), "/context/" + scene_key);
@@ -186,7 +185,7 @@ const RunSeries* BenchRun::find(const std::string& name) const {
 }
 
 BenchRun parse_bench_run(const nlohmann::ordered_json& doc, const std::string& what) {
-  const OrderedJsonReader r(what, JsonPathStyle::kPointer);
+  const JsonReader r(what, JsonPathStyle::kPointer);
   if (!doc.is_object()) r.fail("", "is not a JSON object (neither a table JSON nor Google Benchmark JSON)");
   BenchRun run;
   if (doc.contains("benchmarks") && doc.contains("context")) run = parse_gbench_json(doc, r);

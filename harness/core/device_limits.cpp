@@ -57,7 +57,7 @@ constexpr Feature kFeatures[] = {
     {"blit_dst", &Rgba32fFeatures::blit_dst},
 };
 
-std::array<uint32_t, 3> vector3(const OrderedJsonReader& r, const json& object, const std::string& parent,
+std::array<uint32_t, 3> vector3(const JsonReader& r, const json& object, const std::string& parent,
                                 std::string_view key) {
   const json& a = r.array(object, parent, key, 3);
   const std::string path = r.child(parent, key);
@@ -84,7 +84,7 @@ nlohmann::ordered_json to_json(const DeviceLimits& l) {
   return sorted_keys(out);
 }
 
-DeviceLimits device_limits_from_json(const OrderedJsonReader& r, const json& l, const std::string& p) {
+DeviceLimits device_limits_from_json(const JsonReader& r, const json& l, const std::string& p) {
   DeviceLimits out;
   for (const Limit32& k : kLimits32) out.*k.field = r.uint32(l, p, k.key);
   out.workgroup_size = vector3(r, l, p, kWorkgroupSize);

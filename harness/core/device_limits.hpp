@@ -11,8 +11,7 @@
 
 namespace vsgl {
 
-template <typename Json>
-class BasicJsonReader;  // core/json_reader.hpp
+class JsonReader;  // core/json_reader.hpp
 
 // VK_FORMAT_R32G32B32A32_SFLOAT's optimal tiling features the FIS paths use.
 struct Rgba32fFeatures {
@@ -59,7 +58,7 @@ struct DeviceLimits {
 nlohmann::ordered_json to_json(const DeviceLimits& limits);
 // Reads what to_json writes at `path`; refuses a missing, mistyped or unknown member (InputError
 // naming its pointer).
-DeviceLimits device_limits_from_json(const BasicJsonReader<nlohmann::ordered_json>& reader,
-                                     const nlohmann::ordered_json& limits, const std::string& path);
+DeviceLimits device_limits_from_json(const JsonReader& reader, const nlohmann::ordered_json& limits,
+                                     const std::string& path);
 
 }  // namespace vsgl

@@ -1,7 +1,8 @@
 #pragma once
-// The key order of the documents that were first written as nlohmann::json, which sorts its keys:
-// the device object of every document, the devices, verify and quality documents. Every document is
-// an nlohmann::ordered_json now; sorting keeps those files as they always were, byte for byte.
+// The key order of what was first written as an nlohmann::json, which sorts its keys: the device
+// object of every document, and the devices, verify and quality documents. Every document is an
+// nlohmann::ordered_json now (the one flavour); sorting keeps those files as they always were,
+// byte for byte. Sorted keys also make two objects equal whatever order they were built in.
 #include <nlohmann/json.hpp>
 
 namespace vsgl {

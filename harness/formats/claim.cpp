@@ -22,14 +22,13 @@ ojson table_json(const Claim& c) {
                {"informative_only", c.informative}};
 }
 
-template <typename Json>
-Claim read_table(const BasicJsonReader<Json>& r, const Json& c, const std::string& p) {
+Claim read_table(const JsonReader& r, const ojson& c, const std::string& p) {
   if (!c.is_object()) r.wrong_type(c, p, "an object");
   Claim claim;
   claim.id = r.string(c, p, "id");
   claim.text = r.string(c, p, "claim");
   claim.criterion = r.string(c, p, "criterion");
-  claim.measured = ojson(r.object(c, p, "measured"));
+  claim.measured = r.object(c, p, "measured");
   if (!r.member(c, p, "holds").is_null()) claim.holds = r.boolean(c, p, "holds");
   claim.note = r.string(c, p, "note");
   claim.informative = r.boolean(c, p, "informative_only");
@@ -58,8 +57,7 @@ ojson quality_json(const Claim& c) {
   return o;
 }
 
-template <typename Json>
-Claim read_quality(const BasicJsonReader<Json>& r, const Json& c, const std::string& p) {
+Claim read_quality(const JsonReader& r, const ojson& c, const std::string& p) {
   if (!c.is_object()) r.wrong_type(c, p, "an object");
   Claim claim;
   claim.text = r.string(c, p, "claim");
@@ -71,7 +69,7 @@ Claim read_quality(const BasicJsonReader<Json>& r, const Json& c, const std::str
   else if (verdict.empty()) r.fail(r.child(p, "verdict"), "is empty");
   else claim.note = verdict;
   for (const auto& [key, value] : c.items())
-    if (!is_quality_key(key)) claim.measured[key] = ojson(value);
+    if (!is_quality_key(key)) claim.measured[key] = value;
   return claim;
 }
 
@@ -91,12 +89,7 @@ nlohmann::ordered_json to_json(const Claim& claim, ClaimLayout layout) {
   return layout == ClaimLayout::kTable ? table_json(claim) : quality_json(claim);
 }
 
-Claim claim_from_json(const OrderedJsonReader& reader, const nlohmann::ordered_json& value, const std::string& path,
-                      ClaimLayout layout) {
-  return layout == ClaimLayout::kTable ? read_table(reader, value, path) : read_quality(reader, value, path);
-}
-
-Claim claim_from_json(const JsonReader& reader, const nlohmann::json& value, const std::string& path,
+Claim claim_from_json(const JsonReader& reader, const nlohmann::ordered_json& value, const std::string& path,
                       ClaimLayout layout) {
   return layout == ClaimLayout::kTable ? read_table(reader, value, path) : read_quality(reader, value, path);
 }

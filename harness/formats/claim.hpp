@@ -8,10 +8,7 @@
 
 namespace vsgl {
 
-template <typename Json>
-class BasicJsonReader;  // core/json_reader.hpp
-using JsonReader = BasicJsonReader<nlohmann::json>;
-using OrderedJsonReader = BasicJsonReader<nlohmann::ordered_json>;
+class JsonReader;  // core/json_reader.hpp
 
 // A claim whose interval straddles its bound is neither held nor refuted: holds = none with this
 // note (or one that starts with the prefix and says why, e.g. too few rounds).
@@ -50,11 +47,9 @@ enum class ClaimLayout {
 // Throws std::invalid_argument for a claim the layout cannot hold (a quality claim with an id, a
 // measured that is not an object, or a member of measured named as one of the layout's keys).
 nlohmann::ordered_json to_json(const Claim& claim, ClaimLayout layout);
-// `value` is what to_json writes, at `path`, in an ordered document (the table's) or a sorted one
-// (the quality document's). Throws InputError naming the pointer of a missing or mistyped field.
-Claim claim_from_json(const OrderedJsonReader& reader, const nlohmann::ordered_json& value, const std::string& path,
-                      ClaimLayout layout);
-Claim claim_from_json(const JsonReader& reader, const nlohmann::json& value, const std::string& path,
+// `value` is what to_json writes, at `path`. Throws InputError naming the pointer of a missing or
+// mistyped field.
+Claim claim_from_json(const JsonReader& reader, const nlohmann::ordered_json& value, const std::string& path,
                       ClaimLayout layout);
 
 }  // namespace vsgl

@@ -23,7 +23,7 @@ json verdict_json(const SupportVerdict& v) { return json{{"runs", v.runs}, {"rea
 // ---- reading ----
 
 // An index that may be -1 for none.
-int64_t index_or_none(const OrderedJsonReader& r, const json& object, const std::string& parent, std::string_view key) {
+int64_t index_or_none(const JsonReader& r, const json& object, const std::string& parent, std::string_view key) {
   const json& v = r.member(object, parent, key);
   const bool fits =
       v.is_number_unsigned() ? v.get<uint64_t>() <= UINT32_MAX : v.is_number_integer() && v.get<int64_t>() >= -1;
@@ -31,13 +31,13 @@ int64_t index_or_none(const OrderedJsonReader& r, const json& object, const std:
   return v.get<int64_t>();
 }
 
-std::optional<std::string> optional_string(const OrderedJsonReader& r, const json& object, const std::string& parent,
+std::optional<std::string> optional_string(const JsonReader& r, const json& object, const std::string& parent,
                                            std::string_view key) {
   if (!object.contains(std::string(key))) return std::nullopt;
   return r.string(object, parent, key);
 }
 
-SupportVerdict read_verdict(const OrderedJsonReader& r, const json& v, const std::string& p) {
+SupportVerdict read_verdict(const JsonReader& r, const json& v, const std::string& p) {
   return {r.boolean(v, p, "runs"), r.string(v, p, "reason")};
 }
 
@@ -69,7 +69,7 @@ nlohmann::ordered_json to_json(const DevicesDocument& doc) {
 }
 
 DeviceSupport support_from_json(const nlohmann::ordered_json& s, const std::string& where, const std::string& p) {
-  const OrderedJsonReader r(where, JsonPathStyle::kPointer);
+  const JsonReader r(where, JsonPathStyle::kPointer);
   if (!s.is_object()) r.wrong_type(s, p, "an object");
   r.only_keys(s, p, {"generators", "mipmapping"});
   DeviceSupport out;
@@ -95,7 +95,7 @@ DeviceSupport support_from_json(const nlohmann::ordered_json& s, const std::stri
 }
 
 DevicesDocument devices_from_json(const nlohmann::ordered_json& doc, const std::string& where) {
-  const OrderedJsonReader r(where, JsonPathStyle::kPointer);
+  const JsonReader r(where, JsonPathStyle::kPointer);
   if (!doc.is_object()) r.wrong_type(doc, "", "an object");
   r.only_keys(doc, "", {"default", "devices"});
   DevicesDocument out;
@@ -125,8 +125,8 @@ DevicesDocument read_devices_file(const std::filesystem::path& path) {
 
 std::string devices_file_text(const DevicesDocument& doc) {
   const json out = to_json(doc);
-  require_conforming(out, nlohmann::json(embedded_json(kDevicesSchemaFile, "the devices schema")),
-                     "the devices document", embedded_file_label(kDevicesSchemaFile));
+  require_conforming(out, embedded_json(kDevicesSchemaFile, "the devices schema"), "the devices document",
+                     embedded_file_label(kDevicesSchemaFile));
   return out.dump(2) + "\n";
 }
 

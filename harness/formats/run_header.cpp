@@ -14,8 +14,7 @@ namespace {
 using ojson = nlohmann::ordered_json;
 
 // An index that may be -1 for none.
-int64_t index_or_none(const OrderedJsonReader& r, const ojson& object, const std::string& parent,
-                      std::string_view key) {
+int64_t index_or_none(const JsonReader& r, const ojson& object, const std::string& parent, std::string_view key) {
   const ojson& v = r.member(object, parent, key);
   const bool fits =
       v.is_number_unsigned() ? v.get<uint64_t>() <= UINT32_MAX : v.is_number_integer() && v.get<int64_t>() >= -1;
@@ -23,7 +22,7 @@ int64_t index_or_none(const OrderedJsonReader& r, const ojson& object, const std
   return v.get<int64_t>();
 }
 
-void require_object(const OrderedJsonReader& r, const ojson& value, const std::string& path) {
+void require_object(const JsonReader& r, const ojson& value, const std::string& path) {
   if (!value.is_object()) r.wrong_type(value, path, "an object");
 }
 
@@ -83,8 +82,7 @@ nlohmann::ordered_json to_json(const RunRecord& r) {
   return out;
 }
 
-DeviceRecord device_record_from_json(const OrderedJsonReader& r, const nlohmann::ordered_json& d,
-                                     const std::string& p) {
+DeviceRecord device_record_from_json(const JsonReader& r, const nlohmann::ordered_json& d, const std::string& p) {
   require_object(r, d, p);
   // clang-format off
   r.only_keys(d, p,
@@ -118,14 +116,14 @@ DeviceRecord device_record_from_json(const OrderedJsonReader& r, const nlohmann:
   return out;
 }
 
-BuildRecord build_record_from_json(const OrderedJsonReader& r, const nlohmann::ordered_json& b, const std::string& p) {
+BuildRecord build_record_from_json(const JsonReader& r, const nlohmann::ordered_json& b, const std::string& p) {
   require_object(r, b, p);
   r.only_keys(b, p, {"vsgl_bench_version", "git_commit", "git_dirty", "compiler", "assertions"});
   return {r.string(b, p, "vsgl_bench_version"), r.string(b, p, "git_commit"), r.boolean(b, p, "git_dirty"),
           r.string(b, p, "compiler"), r.boolean(b, p, "assertions")};
 }
 
-RunRecord run_record_from_json(const OrderedJsonReader& r, const nlohmann::ordered_json& run, const std::string& p) {
+RunRecord run_record_from_json(const JsonReader& r, const nlohmann::ordered_json& run, const std::string& p) {
   require_object(r, run, p);
   r.only_keys(run, p,
               {"started_utc", "validation_layer", "quick", "protocol_compliant", "clocks_locked_claimed", "clocks_note",

@@ -20,9 +20,7 @@
 
 namespace vsgl {
 
-template <typename Json>
-class BasicJsonReader;  // core/json_reader.hpp
-using OrderedJsonReader = BasicJsonReader<nlohmann::ordered_json>;
+class JsonReader;  // core/json_reader.hpp
 
 // One physical device as a run saw it.
 struct DeviceRecord {
@@ -80,11 +78,10 @@ nlohmann::ordered_json to_json(const RunRecord& run);
 // Readers of what to_json writes, the object at `path` in the reader's document. Every member is
 // required (a device's limits excepted, a run's clocks note and slowed generators too) and an
 // unknown one refused: InputError naming its place.
-DeviceRecord device_record_from_json(const OrderedJsonReader& reader, const nlohmann::ordered_json& device,
+DeviceRecord device_record_from_json(const JsonReader& reader, const nlohmann::ordered_json& device,
                                      const std::string& path);
-BuildRecord build_record_from_json(const OrderedJsonReader& reader, const nlohmann::ordered_json& build,
+BuildRecord build_record_from_json(const JsonReader& reader, const nlohmann::ordered_json& build,
                                    const std::string& path);
-RunRecord run_record_from_json(const OrderedJsonReader& reader, const nlohmann::ordered_json& run,
-                               const std::string& path);
+RunRecord run_record_from_json(const JsonReader& reader, const nlohmann::ordered_json& run, const std::string& path);
 
 }  // namespace vsgl

@@ -16,7 +16,7 @@ namespace {
 using ojson = nlohmann::ordered_json;
 
 // Field access that names the file and the JSON pointer of whatever is missing or mistyped.
-using Reader = OrderedJsonReader;  // core/json_reader.hpp, with JSON pointers
+using Reader = JsonReader;  // core/json_reader.hpp, with JSON pointers
 
 // A count or an index into the document (size_t; the reader's non-negative integer).
 std::size_t index(const Reader& r, const ojson& v, const std::string& pointer) {

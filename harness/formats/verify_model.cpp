@@ -1,5 +1,6 @@
 #include "harness/formats/verify_model.hpp"
 
+#include <cmath>
 #include <limits>
 
 #include <nlohmann/json.hpp>
@@ -17,7 +18,7 @@ using json = nlohmann::ordered_json;
 
 const char* kind_name(VerifyCheckKind kind) { return kind == VerifyCheckKind::kMeasurement ? "measurement" : "check"; }
 
-VerifyCheck read_check(const OrderedJsonReader& r, const json& c, const std::string& p) {
+VerifyCheck read_check(const JsonReader& r, const json& c, const std::string& p) {
   if (!c.is_object()) r.wrong_type(c, p, "an object");
   r.only_keys(c, p, {"view", "generator", "check", "kind", "measured", "tolerance", "expected", "passed", "detail"});
   VerifyCheck out;
@@ -30,7 +31,7 @@ VerifyCheck read_check(const OrderedJsonReader& r, const json& c, const std::str
     else if (kind == "measurement") out.kind = VerifyCheckKind::kMeasurement;
     else r.fail(r.child(p, "kind"), "is neither \"check\" nor \"measurement\"");
   }
-  // A non-finite error is written as null (nlohmann::json has no NaN): it reads back as NaN.
+  // A non-finite error is written as null (nlohmann::ordered_json has no NaN): it reads back as NaN.
   const json& measured = r.member(c, p, "measured");
   out.measured =
       measured.is_null() ? std::numeric_limits<double>::quiet_NaN() : r.number(measured, r.child(p, "measured"));
@@ -49,8 +50,10 @@ VerifyCheck read_check(const OrderedJsonReader& r, const json& c, const std::str
 }  // namespace
 
 nlohmann::ordered_json to_json(const VerifyCheck& c) {
-  json out{{"view", c.view},         {"generator", c.generator}, {"check", c.check},
-           {"measured", c.measured}, {"passed", c.passed},       {"detail", c.detail}};
+  // A non-finite error is null in the file (JSON has no NaN), which the schema allows.
+  const json measured = std::isfinite(c.measured) ? json(c.measured) : json(nullptr);
+  json out{{"view", c.view},       {"generator", c.generator}, {"check", c.check},
+           {"measured", measured}, {"passed", c.passed},       {"detail", c.detail}};
   if (c.kind) out["kind"] = kind_name(*c.kind);
   if (c.tolerance) out["tolerance"] = *c.tolerance;
   if (c.expected) out["expected"] = *c.expected;
@@ -65,7 +68,7 @@ nlohmann::ordered_json to_json(const VerifyDocument& doc) {
 }
 
 VerifyDocument verify_from_json(const nlohmann::ordered_json& doc, const std::string& where) {
-  const OrderedJsonReader r(where, JsonPathStyle::kPointer);
+  const JsonReader r(where, JsonPathStyle::kPointer);
   if (!doc.is_object()) r.wrong_type(doc, "", "an object");
   r.only_keys(doc, "", {"capture", "scene", "device", "checks"});
   VerifyDocument out;
@@ -85,7 +88,7 @@ VerifyDocument read_verify_file(const std::filesystem::path& path) {
 
 std::string verify_file_text(const VerifyDocument& doc) {
   const json out = to_json(doc);
-  require_conforming(out, nlohmann::json(embedded_json(kVerifySchemaFile, "the verify schema")), "the verify document",
+  require_conforming(out, embedded_json(kVerifySchemaFile, "the verify schema"), "the verify document",
                      embedded_file_label(kVerifySchemaFile));
   return out.dump(2) + "\n";
 }

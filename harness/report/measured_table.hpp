@@ -39,7 +39,7 @@ struct MeasuredTable {
 // Everything of a run that is not a measurement.
 struct ReportContext {
   DeviceInfo device;
-  nlohmann::json paper;             // results/paper/paper_tables.json
+  nlohmann::ordered_json paper;  // results/paper/paper_tables.json
   std::string paper_path;
   nlohmann::ordered_json config;    // views, N, K, iterations, timing options
   BuildRecord build;                // this_build()

@@ -4,11 +4,12 @@
 
 #include "harness/core/path_text.hpp"
 #include "harness/core/json_reader.hpp"
+#include "harness/core/sorted_json.hpp"
 
 namespace vsgl {
 namespace {
 
-using nlohmann::json;
+using json = nlohmann::ordered_json;
 
 constexpr std::size_t kClaimCount = 6;
 
@@ -57,14 +58,14 @@ void check_paper_tables(const json& doc, const std::string& what) {
   for (std::size_t i = 0; i < claims.size(); ++i) string_value(r, claims[i], r.element("claims", i));
 }
 
-nlohmann::json load_paper_tables(const std::filesystem::path& path) {
-  nlohmann::json doc = read_json_file(path, "the paper's tables", " (use --paper FILE)");
+nlohmann::ordered_json load_paper_tables(const std::filesystem::path& path) {
+  nlohmann::ordered_json doc = read_json_file(path, "the paper's tables", " (use --paper FILE)");
   check_paper_tables(doc, path_text(path));
   return doc;
 }
 
-std::optional<double> paper_number(const nlohmann::json& paper, std::initializer_list<std::string> path) {
-  const nlohmann::json* node = &paper;
+std::optional<double> paper_number(const nlohmann::ordered_json& paper, std::initializer_list<std::string> path) {
+  const nlohmann::ordered_json* node = &paper;
   for (const auto& key : path) {
     if (!node->is_object() || !node->contains(key)) return std::nullopt;
     node = &(*node)[key];
@@ -73,18 +74,21 @@ std::optional<double> paper_number(const nlohmann::json& paper, std::initializer
   return node->get<double>();
 }
 
-std::optional<double> paper_total(const nlohmann::json& paper, int table, const std::string& g) {
+std::optional<double> paper_total(const nlohmann::ordered_json& paper, int table, const std::string& g) {
   return paper_number(paper, {"tables", std::to_string(table), g, "total"});
 }
 
-std::optional<double> paper_view_total(const nlohmann::json& paper, int table, const std::string& g,
+std::optional<double> paper_view_total(const nlohmann::ordered_json& paper, int table, const std::string& g,
                                        const std::string& view) {
   const std::string key = std::to_string(table);
   if (!paper.contains("tables") || !paper["tables"].contains(key) || !paper["tables"][key].contains(g)) return std::nullopt;
   const auto& v = paper["tables"][key][g];
   if (!v.contains(view) || !v[view].is_object()) return std::nullopt;
+  // Summed in the phases' sorted order, the order every committed table's sums were made in
+  // (floating-point addition is not associative: another order may change the last digit).
+  const nlohmann::ordered_json phases = sorted_keys(v[view]);
   double sum = 0;
-  for (const auto& [_, ms] : v[view].items()) sum += ms.get<double>();
+  for (const auto& [_, ms] : phases.items()) sum += ms.get<double>();
   return sum;
 }
 

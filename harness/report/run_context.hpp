@@ -11,7 +11,7 @@ namespace vsgl {
 
 struct RunContext {
   ReportContext report;
-  nlohmann::json schema;  // results/schema/table.schema.json
+  nlohmann::ordered_json schema;  // results/schema/table.schema.json
 };
 
 // Throws InputError for an unreadable paper file, schema or generator source.

@@ -18,7 +18,7 @@ struct SweepContext {
   DeviceRecord device;            // device_record(DeviceInfo)
   BuildRecord build;              // this_build()
   RunRecord run;                  // started, validation, quick, clocks (run_record)
-  nlohmann::json paper;           // results/paper/paper_tables.json (its claim texts); null: none
+  nlohmann::ordered_json paper;   // results/paper/paper_tables.json (its claim texts); null: none
   bool informative = false;       // a CPU device: its timing verdicts say nothing of a GPU
 };
 
