@@ -40,6 +40,7 @@
 #include "bench/cli/gpu_session.hpp"
 #include "bench/cli/timed_generators.hpp"
 #include "harness/core/platform_path.hpp"
+#include "harness/core/sorted_json.hpp"
 #include "harness/capture/capture_files.hpp"
 #include "harness/generators/fis/fis_generator.hpp"
 #include "harness/generators/generator_registry.hpp"
@@ -48,7 +49,7 @@
 #include "harness/report/table_timing.hpp"
 #include "harness/report/tables_run.hpp"
 #include "harness/scene/named_scene.hpp"
-#include "harness/timing/run_provenance.hpp"
+#include "harness/formats/run_header.hpp"
 #include "harness/timing/timing_runner.hpp"
 #include "harness/vk/device.hpp"
 
@@ -107,26 +108,27 @@ TablesOptions timed_options(const Options& o, const DeviceInfo& info) {
 
 // The JSON's "context" for the whole run: device, driver, build and the generator config.
 void add_run_context(const DeviceInfo& info, const Options& o) {
-  const nlohmann::json build = build_json();
+  const BuildRecord build = this_build();
   benchmark::AddCustomContext("vsgl_device", info.name);
   benchmark::AddCustomContext("vsgl_device_type", device_type_name(info.type));
   benchmark::AddCustomContext("vsgl_driver",
                               info.driver_name + " " + driver_version_string(info) + " " + info.driver_info);
   benchmark::AddCustomContext("vsgl_api_version", api_version_string(info.api_version));
   benchmark::AddCustomContext("vsgl_timestamp_period_ns", std::to_string(info.timestamp_period_ns));
-  benchmark::AddCustomContext("vsgl_git_commit", build["git_commit"].get<std::string>());
-  benchmark::AddCustomContext("vsgl_compiler", build["compiler"].get<std::string>());
+  benchmark::AddCustomContext("vsgl_git_commit", build.git_commit);
+  benchmark::AddCustomContext("vsgl_compiler", build.compiler);
   const GeneratorConfig resolved = resolve_fis_config(info, o.generator.config);
-  benchmark::AddCustomContext("vsgl_config",
-                              nlohmann::json{{"camera_vsgls", o.generator.camera_vsgls},
-                                             {"light_vsgls", o.generator.light_vsgls},
-                                             {"K", o.generator.config.K},
-                                             {"bisection_iterations", o.generator.config.bisection_iterations},
-                                             {"kmeans_iterations", o.generator.config.kmeans_iterations},
-                                             {"pyramid", pyramid_path_name(resolved.pyramid)},
-                                             {"mipmapping", mip_strategy_name(*resolved.mipmapping)},
-                                             {"replays", o.replays}}
-                                  .dump());
+  benchmark::AddCustomContext(
+      "vsgl_config",
+      sorted_keys(nlohmann::ordered_json{{"camera_vsgls", o.generator.camera_vsgls},
+                                         {"light_vsgls", o.generator.light_vsgls},
+                                         {"K", o.generator.config.K},
+                                         {"bisection_iterations", o.generator.config.bisection_iterations},
+                                         {"kmeans_iterations", o.generator.config.kmeans_iterations},
+                                         {"pyramid", pyramid_path_name(resolved.pyramid)},
+                                         {"mipmapping", mip_strategy_name(*resolved.mipmapping)},
+                                         {"replays", o.replays}})
+          .dump());
 }
 
 // Everything one input's benchmarks replay; alive until the end of main.

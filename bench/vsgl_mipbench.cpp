@@ -34,7 +34,7 @@
 #include "harness/scene/named_scene.hpp"
 #include "harness/report/tables_run.hpp"
 #include "harness/scene/capture_provisioning.hpp"
-#include "harness/timing/run_provenance.hpp"
+#include "harness/formats/run_header.hpp"
 #include "harness/timing/timing_runner.hpp"
 #include "harness/vk/command_stream.hpp"
 #include "harness/vk/device.hpp"
@@ -101,11 +101,11 @@ int run(int argc, char** argv) {
   require_timestamps(info);
   if (const std::string why = texture_path_unsupported_reason(info); !why.empty())
     throw DeviceError("the texture path cannot run on " + info.name + ": " + why);
-  const nlohmann::json build = build_json();
+  const BuildRecord build = this_build();
   benchmark::AddCustomContext("vsgl_device", info.name);
   benchmark::AddCustomContext("vsgl_device_type", device_type_name(info.type));
   benchmark::AddCustomContext("vsgl_driver", info.driver_name + " " + driver_version_string(info) + " " + info.driver_info);
-  benchmark::AddCustomContext("vsgl_git_commit", build["git_commit"].get<std::string>());
+  benchmark::AddCustomContext("vsgl_git_commit", build.git_commit);
   benchmark::AddCustomContext("vsgl_default_mipmapping", mip_strategy_name(default_mip_strategy(info)));
 
   const SceneLibrary library = default_scene_library(paths_from_utf8(assets));

@@ -11,6 +11,7 @@
 #include "harness/sweep/measured_sweep.hpp"
 #include "harness/sweep/sweep_axis.hpp"
 #include "harness/sweep/sweep_document.hpp"
+#include "synthetic_header.hpp"
 
 namespace vsgl::test {
 
@@ -81,17 +82,9 @@ inline MeasuredSweep synthetic_sweep(const std::vector<SweepAxis>& axes,
 inline SweepContext synthetic_sweep_context(const std::string& device = "synthetic",
                                             const std::string& started_utc = "2026-01-01T00:00:00Z") {
   SweepContext c;
-  c.device = nlohmann::ordered_json{{"name", device},
-                                    {"type", "cpu"},
-                                    {"timestamps", true},
-                                    {"timestamp_valid_bits", 64},
-                                    {"timestamp_period_ns", 1.0}};
-  c.build = nlohmann::ordered_json{{"compiler", "test"}, {"git_commit", "0123456789abcdef"}, {"git_dirty", false}};
-  c.run = nlohmann::ordered_json{{"started_utc", started_utc},
-                                 {"validation_layer", false},
-                                 {"quick", true},
-                                 {"protocol_compliant", false},
-                                 {"clocks_locked_claimed", false}};
+  c.device = synthetic_device(device);
+  c.build = synthetic_build();
+  c.run = synthetic_run(started_utc);
   return c;
 }
 

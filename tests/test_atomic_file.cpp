@@ -106,9 +106,9 @@ bool complete_table_file(const fs::path& p) {
   if (p.extension() == ".md") return text.find("Table") != std::string::npos;
   try {
     std::ifstream in(VSGL_SOURCE_DIR "/results/schema/table.schema.json");
-    const nlohmann::json schema = nlohmann::json::parse(in);
-    return validate_against_schema(nlohmann::json::parse(text), schema).empty();
-  } catch (const nlohmann::json::exception&) {
+    const nlohmann::ordered_json schema = nlohmann::ordered_json::parse(in);
+    return validate_against_schema(nlohmann::ordered_json::parse(text), schema).empty();
+  } catch (const nlohmann::ordered_json::exception&) {
     return false;
   }
 }
@@ -216,8 +216,8 @@ TEST(KillDuringWrite, TablesKeepEachTableTheyFinished) {
   EXPECT_EQ(table("table2.json").table, std::optional<int>(2));
   ASSERT_TRUE(t1.ratios.has_value());
   EXPECT_TRUE(t1.ratios->table1_to_table2.has_value());
-  EXPECT_EQ(nlohmann::json::parse(slurp(out / "table1.json"))["ratios"]["table1_to_table2"],
-            nlohmann::json::parse(slurp(out / "table2.json"))["ratios"]["table1_to_table2"]);
+  EXPECT_EQ(nlohmann::ordered_json::parse(slurp(out / "table1.json"))["ratios"]["table1_to_table2"],
+            nlohmann::ordered_json::parse(slurp(out / "table2.json"))["ratios"]["table1_to_table2"]);
   // Its markdown is rewritten after it: still the one without the change.
   EXPECT_EQ(slurp(out / "table1.md").find("Table 2 / Table 1"), std::string::npos);
 }
@@ -235,10 +235,10 @@ TEST(KillDuringWrite, SweepKeepsThePointsItFinished) {
       out.string() + " --generators fis_modified --quick --no-progress --axis vsgls=8,16,32 --device " + test_device());
   const fs::path notify = root / "paused";
   std::ifstream schema_in(VSGL_SOURCE_DIR "/results/schema/sweep.schema.json");
-  const nlohmann::json schema = nlohmann::json::parse(schema_in);
+  const nlohmann::ordered_json schema = nlohmann::ordered_json::parse(schema_in);
 
   kill_at_pause(start(args, root / "killed.log", "renamed:sweep.json:2", notify), notify);
-  const nlohmann::json doc = nlohmann::json::parse(slurp(out / "sweep.json"));
+  const nlohmann::ordered_json doc = nlohmann::ordered_json::parse(slurp(out / "sweep.json"));
   const auto problems = validate_against_schema(doc, schema);
   EXPECT_TRUE(problems.empty()) << problems.front();
   EXPECT_EQ(doc["complete"], false);
@@ -274,7 +274,7 @@ TEST(KillDuringWrite, RecordOutputsAreOldOrNewNeverPartial) {
   auto complete = [&](const std::string& f) {
     try {
       if (f == "capture.json") {
-        const nlohmann::json doc = nlohmann::json::parse(slurp(dir / f));
+        const nlohmann::ordered_json doc = nlohmann::ordered_json::parse(slurp(dir / f));
         return doc.is_object();
       } else {
         (void)read_exr(dir / f);  // reads every pixel: a partial file fails

@@ -128,9 +128,7 @@ void rewrite_view(const fs::path& dir, const ViewImage& view, bool with_pdf,
   write_exr(dir / view_file_name(view.kind), view.width, view.height, channels);
 }
 
-void write_json(const fs::path& path, const nlohmann::json& doc) {
-  write_text_atomic(path, doc.dump(2));
-}
+void write_json(const fs::path& path, const nlohmann::ordered_json& doc) { write_text_atomic(path, doc.dump(2)); }
 
 void expect_planes_equal(const ViewImage& a, const ViewImage& b) {
   ASSERT_EQ(a.kind, b.kind);
@@ -213,7 +211,7 @@ TEST(CaptureIo, RoundTripIsBitExact) {
   expect_planes_equal(capture.rsm, loaded.rsm);
   expect_meta_equal(written, loaded.meta);
 
-  const nlohmann::json sidecar = read_json(dir / "capture.json");
+  const nlohmann::ordered_json sidecar = read_json(dir / "capture.json");
   EXPECT_EQ(sidecar["format"], "vsgl-capture");
   EXPECT_EQ(sidecar["units"]["intensity"], "W/sr");
   EXPECT_EQ(sidecar["rsm"]["pdf"], "brsm");
@@ -244,7 +242,7 @@ TEST(CaptureIo, RsmWithoutPdfRoundTripsWithoutPdfChannel) {
   const ExrImage rsm = read_exr(temp.path() / "rsm.exr");
   EXPECT_EQ(rsm.find("pdf"), nullptr);
   EXPECT_EQ(rsm.channels.size(), static_cast<std::size_t>(kChannelCount - 1));
-  const nlohmann::json sidecar = read_json(temp.path() / "capture.json");
+  const nlohmann::ordered_json sidecar = read_json(temp.path() / "capture.json");
   EXPECT_EQ(sidecar["rsm"]["has_pdf"], false);
   EXPECT_EQ(sidecar["rsm"]["pdf"], "none");
   EXPECT_FALSE(sidecar["rsm"]["channels"].contains("pdf"));
@@ -298,9 +296,9 @@ TEST(CaptureIo, SidecarMissingKeyOrWrongTypeIsNamed) {
   TempDir temp;
   write_capture(make_capture(), temp.path());
   const fs::path sidecar_path = temp.path() / "capture.json";
-  const nlohmann::json original = read_json(sidecar_path);
+  const nlohmann::ordered_json original = read_json(sidecar_path);
 
-  nlohmann::json doc = original;
+  nlohmann::ordered_json doc = original;
   doc["camera"].erase("fov_y_deg");
   write_json(sidecar_path, doc);
   expect_load_fails(temp.path(), {"capture.json", "\"camera.fov_y_deg\"", "missing"});
@@ -380,7 +378,7 @@ TEST(CaptureIo, GarbageExrIsRejected) {
 TEST(CaptureIo, SizeDifferentFromSidecarIsRejected) {
   TempDir temp;
   write_capture(make_capture(), temp.path());
-  nlohmann::json doc = read_json(temp.path() / "capture.json");
+  nlohmann::ordered_json doc = read_json(temp.path() / "capture.json");
   doc["gbuffer"]["width"] = 65;
   write_json(temp.path() / "capture.json", doc);
   expect_load_fails(temp.path(), {"gbuffer.exr", "64x48", "65x48"});
@@ -572,7 +570,7 @@ TEST(CaptureIo, AtomicWriterRemovesTemporariesOfDeadWriters) {
 TEST(CaptureIo, SceneThatIsNotANameIsRejected) {
   TempDir temp;
   write_capture(make_capture(), temp.path());
-  nlohmann::json doc = read_json(temp.path() / "capture.json");
+  nlohmann::ordered_json doc = read_json(temp.path() / "capture.json");
   doc["scene"] = "../../tmp/x\x1b";
   write_json(temp.path() / "capture.json", doc);
   expect_load_fails(temp.path(), {"capture.json", "key \"scene\"", "\"../../tmp/x\\x1b\"", "a name"});

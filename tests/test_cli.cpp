@@ -37,7 +37,7 @@ TEST(Cli, DevicesListsTheTestDeviceWithTimestampsAndLimits) {
 
   const auto json = run_cli("devices --json");
   ASSERT_EQ(json.exit_code, 0) << json.output;
-  const auto parsed = nlohmann::json::parse(json.output);
+  const auto parsed = nlohmann::ordered_json::parse(json.output);
   bool found = false;
   for (const auto& d : parsed.at("devices")) {
     const std::string name = lower(d.at("name").get<std::string>());

@@ -45,7 +45,7 @@ TEST(QualityCli, TinyCaptureWritesJsonMarkdownAndPictures) {
                         "tiny_coverage_light_view_fis_tok15.png", "tiny_coverage_camera_view_fis_modified.png"})
     EXPECT_TRUE(std::filesystem::exists(dir / f)) << f;
   std::ifstream in(dir / "quality.json");
-  const auto j = nlohmann::json::parse(in);
+  const auto j = nlohmann::ordered_json::parse(in);
   EXPECT_EQ(j["schema"], "vsgl-quality");
   // stdev: sample (n - 1) since 3; flux origin and converged reference since 4; per-frame series since 5
   EXPECT_EQ(j["schema_version"], 5);
@@ -186,9 +186,9 @@ TEST(QualityCli, ReferenceCaptureLendsItsLargerRsm) {
     ADD_FAILURE() << problem;
   EXPECT_EQ(own["reference"]["vpl_source"]["capture"], "the capture itself");
   EXPECT_EQ(lent["reference"]["vpl_source"]["capture"], "reference capture");
-  EXPECT_EQ(lent["reference"]["vpl_source"]["rsm"], nlohmann::json::array({128, 128}));
+  EXPECT_EQ(lent["reference"]["vpl_source"]["rsm"], nlohmann::ordered_json::array({128, 128}));
   EXPECT_EQ(lent["reference"]["reference_rsm_side"], 128);
-  EXPECT_EQ(lent["capture"]["rsm"], nlohmann::json::array({32, 32}));  // the generators' input is unchanged
+  EXPECT_EQ(lent["capture"]["rsm"], nlohmann::ordered_json::array({32, 32}));  // the generators' input is unchanged
   // 16 times the texels: far more VPLs, the same light to within the discretisation.
   EXPECT_GT(lent["reference"]["vpls"].get<double>(), 8.0 * own["reference"]["vpls"].get<double>());
   EXPECT_NEAR(lent["reference"]["power_ratio"].get<double>(), 1.0, 0.1);

@@ -62,9 +62,9 @@ TEST(DeviceLimits, TheDriversLimitsAreTheDocumentsLimitsAndReadBackAsWritten) {
   EXPECT_TRUE(l.rgba32f_optimal_tiling.blit_dst);
   EXPECT_EQ(l.storage_buffer_offset_alignment, 256u);
 
-  const nlohmann::json j = to_json(l);
+  const nlohmann::ordered_json j = to_json(l);
   EXPECT_EQ(j["maxPerStageDescriptorStorageImages"], 16u);
-  EXPECT_EQ(j["maxComputeWorkGroupSize"], nlohmann::json({0u, 0u, 64u}));
+  EXPECT_EQ(j["maxComputeWorkGroupSize"], nlohmann::ordered_json({0u, 0u, 64u}));
   EXPECT_EQ(j["rgba32f_optimal_tiling"]["blit_dst"], true);
   EXPECT_FALSE(j.contains("minStorageBufferOffsetAlignment"));
   const DeviceLimits back = device_limits_from_json(JsonReader("limits", JsonPathStyle::kPointer), j, "/limits");
@@ -73,7 +73,7 @@ TEST(DeviceLimits, TheDriversLimitsAreTheDocumentsLimitsAndReadBackAsWritten) {
   EXPECT_EQ(back.max_memory_allocation_size, 1ull << 32);
   EXPECT_EQ(back.storage_buffer_offset_alignment, 1u);
 
-  nlohmann::json unknown = j;
+  nlohmann::ordered_json unknown = j;
   unknown["maxFramebufferWidth"] = 4096u;
   try {
     device_limits_from_json(JsonReader("limits", JsonPathStyle::kPointer), unknown, "/limits");

@@ -17,7 +17,7 @@ namespace {
 using ojson = nlohmann::ordered_json;
 using test::input_error;
 
-const OrderedJsonReader kReader("doc.json", JsonPathStyle::kPointer);
+const JsonReader kReader("doc.json", JsonPathStyle::kPointer);
 
 std::vector<std::string> keys(const ojson& o) {
   std::vector<std::string> out;

@@ -40,7 +40,7 @@ TEST(EmbeddedFiles, TheDefaultInputsAreBuiltInAndParse) {
   for (const char* name : {kPaperTablesFile, kTableSchemaFile, kSweepSchemaFile, "harness/scene/presets/sponza.json",
                            "harness/scene/presets/conference-room.json"})
     EXPECT_TRUE(embedded_file(name).has_value()) << name;
-  const nlohmann::json paper = paper_tables_or_built_in(std::nullopt);
+  const nlohmann::ordered_json paper = paper_tables_or_built_in(std::nullopt);
   EXPECT_EQ(paper, load_paper_tables(fs::path(VSGL_SOURCE_DIR) / kPaperTablesFile));
   EXPECT_EQ(json_file_or_built_in(std::nullopt, kTableSchemaFile, "the table schema", ""),
             json_file_or_built_in(fs::path(VSGL_SOURCE_DIR) / kTableSchemaFile, kTableSchemaFile, "", ""));

@@ -26,12 +26,12 @@ using test::read_json;
 
 TEST(ExportFormats, GithubActionBenchmarkHasOneEntryPerSeries) {
   const BenchRun run = load_bench_run_path(kRun);
-  const nlohmann::json out = nlohmann::json::parse(export_run(run, ExportFormat::kGithubActionBenchmark).dump());
+  const nlohmann::ordered_json out = export_run(run, ExportFormat::kGithubActionBenchmark);
   const auto problems = validate_against_schema(out, export_schema(ExportFormat::kGithubActionBenchmark));
   EXPECT_TRUE(problems.empty()) << problems.front();
   ASSERT_TRUE(out.is_array());
   ASSERT_EQ(out.size(), run.series.size());
-  const nlohmann::json table1 = read_json(kRun / "table1.json");
+  const nlohmann::ordered_json table1 = read_json(kRun / "table1.json");
   bool found = false;
   for (const auto& e : out) {
     EXPECT_EQ(e.at("unit"), "ms");
@@ -49,11 +49,11 @@ TEST(ExportFormats, GithubActionBenchmarkHasOneEntryPerSeries) {
 
 TEST(ExportFormats, BencherMetricFormatKeysByStableName) {
   const BenchRun run = load_bench_run(kRun / "table2.json");
-  const nlohmann::json out = nlohmann::json::parse(export_run(run, ExportFormat::kBencherMetricFormat).dump());
+  const nlohmann::ordered_json out = export_run(run, ExportFormat::kBencherMetricFormat);
   const auto problems = validate_against_schema(out, export_schema(ExportFormat::kBencherMetricFormat));
   EXPECT_TRUE(problems.empty()) << problems.front();
   EXPECT_EQ(out.size(), run.series.size());
-  const nlohmann::json table2 = read_json(kRun / "table2.json");
+  const nlohmann::ordered_json table2 = read_json(kRun / "table2.json");
   const auto& total = table2["generators"]["kmeans_3d"]["total"];
   const auto& m = out.at("table2/kmeans_3d/total [conference, stand-in]").at("latency");
   EXPECT_DOUBLE_EQ(m.at("value").get<double>(), total["median_ms"].get<double>() * 1e6);  // ns
@@ -68,11 +68,14 @@ TEST(ExportFormats, BencherMetricFormatKeysByStableName) {
 
 TEST(ExportFormats, TheSchemasRejectOtherShapes) {
   const auto gab = export_schema(ExportFormat::kGithubActionBenchmark);
-  EXPECT_FALSE(validate_against_schema(nlohmann::json::parse(R"([{"name": "x", "value": 1}])"), gab).empty());  // no unit
-  EXPECT_FALSE(validate_against_schema(nlohmann::json::parse(R"({"name": "x"})"), gab).empty());
+  EXPECT_FALSE(validate_against_schema(nlohmann::ordered_json::parse(R"([{"name": "x", "value": 1}])"), gab)
+                   .empty());  // no unit
+  EXPECT_FALSE(validate_against_schema(nlohmann::ordered_json::parse(R"({"name": "x"})"), gab).empty());
   const auto bmf = export_schema(ExportFormat::kBencherMetricFormat);
-  EXPECT_FALSE(validate_against_schema(nlohmann::json::parse(R"({"x": {"latency": {"value": "1"}}})"), bmf).empty());
-  EXPECT_TRUE(validate_against_schema(nlohmann::json::parse(R"({"x": {"latency": {"value": 1}}})"), bmf).empty());
+  EXPECT_FALSE(
+      validate_against_schema(nlohmann::ordered_json::parse(R"({"x": {"latency": {"value": "1"}}})"), bmf).empty());
+  EXPECT_TRUE(
+      validate_against_schema(nlohmann::ordered_json::parse(R"({"x": {"latency": {"value": 1}}})"), bmf).empty());
 }
 
 TEST(ExportCli, WritesBothFormatsAndRefusesBadOnes) {

@@ -106,7 +106,7 @@ fs::path write_gltf_room(const fs::path& dir, const RoomOptions& opt = {}) {
     }
   if (!opt.missing_texture) write_png_atomic(dir / "checker.png", checker);
 
-  using nlohmann::json;
+  using json = nlohmann::ordered_json;
   const auto n_vertices = pos.size() / 3;
   json doc = {
       {"asset", {{"version", "2.0"}, {"generator", "vsgl tests"}}},
@@ -305,7 +305,8 @@ TEST(GltfImport, FilesTheTestBreaksNameTheProblem) {
   EXPECT_NE(input_error([&] { import_gltf(dir / "junk.gltf"); }).find("not valid JSON"), std::string::npos);
   EXPECT_NE(input_error([&] { import_gltf(dir / "absent.glb"); }).find("cannot be opened"), std::string::npos);
   // Only lines: no triangles.
-  nlohmann::json lines = nlohmann::json::parse(R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],
+  nlohmann::ordered_json lines =
+      nlohmann::ordered_json::parse(R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],
     "nodes":[{"mesh":0}],"meshes":[{"primitives":[{"attributes":{"POSITION":0},"mode":1}]}],
     "accessors":[{"componentType":5126,"count":2,"type":"VEC3"}]})");
   std::ofstream(dir / "lines.gltf") << lines.dump();
@@ -500,7 +501,7 @@ TEST(GltfRecordCli, RecordsTheRoomWithItsSourceInTheSidecar) {
   ASSERT_EQ(tables.exit_code, 0) << tables.output;
   std::ifstream table_file(dir / "t" / "room.json");
   ASSERT_TRUE(table_file.good());
-  const nlohmann::json table = nlohmann::json::parse(table_file);
+  const nlohmann::ordered_json table = nlohmann::ordered_json::parse(table_file);
   EXPECT_TRUE(table["table"].is_null());
   EXPECT_EQ(table["capture"]["source"]["triangles"], 12);
   EXPECT_EQ(table["capture"]["source"]["content_hash"], cap.meta.source->content_hash);

@@ -14,7 +14,7 @@ namespace {
 using ojson = nlohmann::ordered_json;
 using test::input_error;
 
-const OrderedJsonReader kPointer("doc.json", JsonPathStyle::kPointer);
+const JsonReader kPointer("doc.json", JsonPathStyle::kPointer);
 const JsonReader kDotted("preset.json", JsonPathStyle::kDottedKey);
 
 bool says(const std::string& message, const std::string& part) { return message.find(part) != std::string::npos; }
@@ -26,7 +26,7 @@ TEST(JsonReader, NamesThePlaceInEitherStyle) {
   EXPECT_EQ(kDotted.child("a", "b"), "a.b");
   EXPECT_EQ(kDotted.element("a", 2), "a[2]");
   EXPECT_EQ(input_error([&] { kPointer.string(doc["a"], "/a", "c"); }), "doc.json: /a/c: missing field");
-  EXPECT_TRUE(says(input_error([&] { kDotted.number(nlohmann::json::parse(R"({"a": "x"})"), "", "a"); }),
+  EXPECT_TRUE(says(input_error([&] { kDotted.number(nlohmann::ordered_json::parse(R"({"a": "x"})"), "", "a"); }),
                    "preset.json: key \"a\" has type string, expected a number"));
 }
 

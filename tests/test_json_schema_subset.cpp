@@ -23,7 +23,7 @@ namespace vsgl {
 namespace {
 
 namespace fs = std::filesystem;
-using nlohmann::json;
+using json = nlohmann::ordered_json;
 using test::read_json;
 
 using test::kSource;

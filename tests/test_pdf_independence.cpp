@@ -13,6 +13,7 @@
 #include "harness/sweep/sweep_document.hpp"
 #include "harness/sweep/sweep_markdown.hpp"
 #include "harness/sweep/sweep_plots.hpp"
+#include "synthetic_header.hpp"
 #include "test_support.hpp"
 
 namespace vsgl {
@@ -114,17 +115,9 @@ TEST(PdfIndependence, HoldsWhenFisStaysFlatAndKmeansMovesWithGamma) {
   }
   // The JSON carries it as a claim, valid against the schema; the markdown gives its verdict.
   SweepContext ctx;
-  ctx.device = {{"name", "synthetic"},
-                {"type", "cpu"},
-                {"timestamps", true},
-                {"timestamp_valid_bits", 64},
-                {"timestamp_period_ns", 1.0}};
-  ctx.run = {{"started_utc", "2026-01-01T00:00:00Z"},
-             {"validation_layer", false},
-             {"quick", true},
-             {"protocol_compliant", false},
-             {"clocks_locked_claimed", false}};
-  ctx.build = nlohmann::ordered_json::object();
+  ctx.device = test::synthetic_device();
+  ctx.run = test::synthetic_run();
+  ctx.build = test::synthetic_build();
   ctx.paper = load_paper_tables(kSource / "results/paper/paper_tables.json");
   ctx.informative = true;
   const SweepModel document = sweep_document(s, sweep_fits(s), ctx, claims);
@@ -139,8 +132,8 @@ TEST(PdfIndependence, HoldsWhenFisStaysFlatAndKmeansMovesWithGamma) {
   // The document reads back to the same JSON.
   EXPECT_EQ(to_json(read_sweep_model(doc, "the synthetic sweep")), doc);
   EXPECT_EQ(doc["claims"][0]["text"], ctx.paper["claims"][2]);
-  const auto schema = nlohmann::json::parse(std::ifstream(kSource / "results/schema/sweep.schema.json"));
-  const auto problems = validate_against_schema(nlohmann::json::parse(doc.dump()), schema);
+  const auto schema = nlohmann::ordered_json::parse(std::ifstream(kSource / "results/schema/sweep.schema.json"));
+  const auto problems = validate_against_schema(doc, schema);
   EXPECT_TRUE(problems.empty()) << problems.front();
   EXPECT_NE(sweep_markdown(document).find("## PDF independence: holds"), std::string::npos);
   EXPECT_NE(sweep_markdown(document).find("| equivalent (p "), std::string::npos);
@@ -279,7 +272,7 @@ TEST(PdfIndependence, InconclusiveWhenNothingMovesAndWithoutKmeans) {
 }
 
 TEST(SweepPaperReference, PlotsMarkThePaperAtItsSetupForAPaperScene) {
-  const nlohmann::json paper = load_paper_tables(kSource / "results/paper/paper_tables.json");
+  const nlohmann::ordered_json paper = load_paper_tables(kSource / "results/paper/paper_tables.json");
   EXPECT_EQ(paper_reference_x(paper, SweepParameter::kVsgls, "camera_view"), 2048.0);
   EXPECT_EQ(paper_reference_x(paper, SweepParameter::kVsgls, "light_view"), 1024.0);
   EXPECT_EQ(paper_reference_x(paper, SweepParameter::kGbuffer, "camera_view"), 1920.0 * 1088.0);

@@ -28,9 +28,9 @@ QualityModel minimal_model() {
   QualityModel m;
   m.schema_version = 5;
   m.scene = "made-up";
-  m.gbuffer_size = nlohmann::json::array({16, 8});
-  m.rsm_size = nlohmann::json::array({8, 8});
-  m.capture_hashes = nlohmann::json::object();
+  m.gbuffer_size = nlohmann::ordered_json::array({16, 8});
+  m.rsm_size = nlohmann::ordered_json::array({8, 8});
+  m.capture_hashes = nlohmann::ordered_json::object();
   m.generators = {kTok, kMod, kKm3};
   m.light_vsgls = 16;
   m.camera_vsgls = 16;
@@ -40,8 +40,8 @@ QualityModel minimal_model() {
   m.reference_vpls = 64;
   m.reference_rsm_side = 8;
   m.reference_rsm_stride = 1;
-  m.reference_image = nlohmann::json::array({16, 8});
-  m.flicker_image = nlohmann::json::array({16, 8});
+  m.reference_image = nlohmann::ordered_json::array({16, 8});
+  m.flicker_image = nlohmann::ordered_json::array({16, 8});
   m.flicker_gbuffer_stride = 1;
   for (const auto& g : m.generators) {
     m.reference_error[g] = {};
@@ -52,14 +52,14 @@ QualityModel minimal_model() {
   m.reference_detail = d;
   FrameErrors f;
   f.gbuffer_stride = 1;
-  f.image = nlohmann::json::array({16, 8});
+  f.image = nlohmann::ordered_json::array({16, 8});
   f.reference = "made up";
   m.frames_static = f;
   return m;
 }
 
 // The verdict of the one claim whose measure starts with `measure`.
-std::string verdict_of(const nlohmann::json& doc, const std::string& measure) {
+std::string verdict_of(const nlohmann::ordered_json& doc, const std::string& measure) {
   std::string found;
   int n = 0;
   for (const auto& c : doc.at("claims"))
@@ -84,7 +84,7 @@ TEST(QualityClaims, PairedFramesDecideHoldsDoesNotHoldAndInconclusive) {
   for (std::size_t f = 0; f < 32; ++f) mod["flicker_deviation"][f] *= f % 2 == 0 ? 0.9 : 1.08;  // about 0.99
   tok["light_view_coverage_excess"] = frames_of(0.10, 1.0);
   mod["light_view_coverage_excess"] = frames_of(0.05, 1.0);  // 0.05 lower: below -0.02, holds
-  nlohmann::json doc = m;
+  nlohmann::ordered_json doc = m;
   add_claim_verdicts(doc);
   EXPECT_EQ(verdict_of(doc, "light_view: too-bright"), "holds");
   EXPECT_EQ(verdict_of(doc, "camera_view: too-bright"), "does not hold");
@@ -118,20 +118,20 @@ TEST(QualityClaims, AnErrorClaimWaitsForAConvergedReference) {
   tok["relative_rmse"] = frames_of(0.3, 1.0);
   mod["relative_rmse"] = frames_of(0.3, 1.0);
   km["relative_rmse"] = frames_of(0.3, 1.0);  // modified equal to k-means: within 10 %
-  nlohmann::json converged = m;
+  nlohmann::ordered_json converged = m;
   add_claim_verdicts(converged);
   EXPECT_EQ(verdict_of(converged, "tail error"), "holds");
   EXPECT_EQ(verdict_of(converged, "k-means margin, kmeans_3d"), "holds");
   // The reference's own p99 error 0.05: 10 x 0.05 = 0.5 is not below the distance |1.6 - 2.0| = 0.4.
   m.reference_detail->own_errors["p99_pixel_error"] = 0.05;
-  nlohmann::json unconverged = m;
+  nlohmann::ordered_json unconverged = m;
   add_claim_verdicts(unconverged);
   EXPECT_EQ(verdict_of(unconverged, "tail error").rfind("reference not converged", 0), 0u);
   EXPECT_EQ(verdict_of(unconverged, "k-means margin, kmeans_3d"), "holds");
   // The worst frame must agree with the interval.
   m.reference_detail->own_errors["p99_pixel_error"] = 0.001;
   mod["p99_pixel_error"][3] = 10.0;
-  nlohmann::json worst = m;
+  nlohmann::ordered_json worst = m;
   add_claim_verdicts(worst);
   EXPECT_NE(verdict_of(worst, "tail error"), "holds");
 }
@@ -151,7 +151,7 @@ TEST(QualityClaims, TheKSweepHoldsOnlyWhenEveryStepDoes) {
     return rows;
   };
   m.k_sweep = {{kMod, sweep(0.35)}, {kTok, sweep(0.2)}};  // Tok15's error falls at the last step
-  nlohmann::json doc = m;
+  nlohmann::ordered_json doc = m;
   add_claim_verdicts(doc);
   EXPECT_EQ(verdict_of(doc, "K sweep, fis_modified"), "holds");
   EXPECT_EQ(verdict_of(doc, "K sweep, fis_tok15"), "does not hold");
@@ -160,7 +160,7 @@ TEST(QualityClaims, TheKSweepHoldsOnlyWhenEveryStepDoes) {
 TEST(QualityClaims, ADocumentWithoutFrameSeriesIsNotJudged) {
   QualityModel m = minimal_model();
   m.frames_static.reset();
-  nlohmann::json doc = m;
+  nlohmann::ordered_json doc = m;
   add_claim_verdicts(doc);
   EXPECT_EQ(doc.at("claims")[0].at("verdict").get<std::string>().rfind("not measured here", 0), 0u);
 }

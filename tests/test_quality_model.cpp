@@ -29,7 +29,7 @@ std::vector<fs::path> committed_reports() {
   return files;
 }
 
-nlohmann::json read_report(const fs::path& p) { return nlohmann::json::parse(read_json_file(p, "the report").dump()); }
+nlohmann::ordered_json read_report(const fs::path& p) { return read_json_file(p, "the report"); }
 
 // The markdown without the lines of the picture list.
 std::string without_pictures(const std::string& md) {
@@ -58,8 +58,8 @@ TEST(QualityModel, CommittedReportsRenderAsCommitted) {
 TEST(QualityModel, ClaimVerdictsFromTheModelMatchTheCommittedOnes) {
   for (const fs::path& f : committed_reports()) {
     SCOPED_TRACE(f.string());
-    const nlohmann::json committed = read_report(f);
-    nlohmann::json doc = committed;
+    const nlohmann::ordered_json committed = read_report(f);
+    nlohmann::ordered_json doc = committed;
     doc.erase("claims");
     add_claim_verdicts(doc);
     EXPECT_EQ(doc["claims"], committed["claims"]);
@@ -72,8 +72,8 @@ TEST(QualityModel, ClaimVerdictsFromTheModelMatchTheCommittedOnes) {
 TEST(QualityModel, CommittedReportsRoundTripThroughTheModel) {
   for (const fs::path& f : committed_reports()) {
     SCOPED_TRACE(f.string());
-    const nlohmann::json doc = read_report(f);
-    const nlohmann::json written = quality_model_from_json(doc, f.string());
+    const nlohmann::ordered_json doc = read_report(f);
+    const nlohmann::ordered_json written = quality_model_from_json(doc, f.string());
     EXPECT_EQ(written, doc);
     EXPECT_EQ(written.dump(1), doc.dump(1));
   }
@@ -82,12 +82,12 @@ TEST(QualityModel, CommittedReportsRoundTripThroughTheModel) {
 // The typed fields are what is written, over the raw build and configuration they were read with.
 TEST(QualityModel, TypedFieldsAreWrittenOverTheRawOnes) {
   QualityModel m = quality_model_from_json(read_report(committed_reports().front()), "the report");
-  m.git_commit = "0123";
+  m.build.git_commit = "0123";
   m.generators = {"fis_modified"};
   m.views.at("light_view").generators.at("fis_modified").power.power_ratio = 0.5;
-  const nlohmann::json j = m;
+  const nlohmann::ordered_json j = m;
   EXPECT_EQ(j["build"]["git_commit"], "0123");
-  EXPECT_EQ(j["config"]["generators"], nlohmann::json::array({"fis_modified"}));
+  EXPECT_EQ(j["config"]["generators"], nlohmann::ordered_json::array({"fis_modified"}));
   EXPECT_EQ(j["views"]["light_view"]["generators"]["fis_modified"]["power"]["power_ratio"], 0.5);
 }
 
@@ -108,8 +108,8 @@ TEST(QualityModel, FluxOriginRoundTripsAndRenders) {
       0.03125,
       FluxOriginFrames{
           4, {0.125, 0.0, 0.5, 0.125, 0.0}, {0.01, 0.0, 0.02, 0.0, 0.0}, 0.75, 0.0625, 0.625, 0.875, 0.25}};
-  const nlohmann::json doc = m;
-  const nlohmann::json again = quality_model_from_json(doc, "the report");
+  const nlohmann::ordered_json doc = m;
+  const nlohmann::ordered_json again = quality_model_from_json(doc, "the report");
   EXPECT_EQ(again.dump(1), doc.dump(1));
   EXPECT_TRUE(doc["views"]["light_view"]["flux_by_pdf"]["texels"][0].is_number_integer());
   const std::string md = quality_markdown(m, {});
@@ -122,7 +122,7 @@ TEST(QualityModel, FluxOriginRoundTripsAndRenders) {
 }
 
 TEST(QualityModel, MissingFieldsAreNamedByPointer) {
-  nlohmann::json doc = read_report(committed_reports().front());
+  nlohmann::ordered_json doc = read_report(committed_reports().front());
   doc["views"]["light_view"]["generators"]["fis_tok15"]["coverage"]["excess"]["eq3"].erase("count_error");
   try {
     quality_markdown(doc, {});
@@ -137,10 +137,10 @@ TEST(QualityModel, MissingFieldsAreNamedByPointer) {
 // A per-frame series is summarized (mean, 95th percentile, maximum) by core's summarize, which
 // needs 2 values: a series of one frame is refused by pointer, never summarized as a NaN.
 TEST(QualityModel, AFrameSeriesNeedsTwoFrames) {
-  nlohmann::json doc = read_report(committed_reports().front());
+  nlohmann::ordered_json doc = read_report(committed_reports().front());
   const std::string generator = doc["frames_static"]["generators"].begin().key();
   auto& per_frame = doc["frames_static"]["generators"][generator]["series"]["relative_rmse"]["per_frame"];
-  per_frame = nlohmann::json::array({per_frame[0]});
+  per_frame = nlohmann::ordered_json::array({per_frame[0]});
   try {
     quality_model_from_json(doc, "q.json");
     ADD_FAILURE();

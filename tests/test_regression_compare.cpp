@@ -16,6 +16,7 @@
 #include "harness/compare/regression_compare.hpp"
 #include "harness/compare/regression_run.hpp"
 #include "harness/core/statistics.hpp"
+#include "synthetic_header.hpp"
 #include "test_support.hpp"
 
 namespace vsgl {
@@ -53,17 +54,18 @@ ojson synthetic_table_json(int table, const SampleSource& source, const std::str
     }
     gens[g] = ojson{{"label", g}, {"in_paper", true}, {"views", views}, {"total", stats(gen_total)}};
   }
-  return ojson{{"schema_version", 1},
-               {"table", table},
-               {"device", ojson{{"name", device}, {"type", "discrete"}}},
-               {"build", ojson{{"git_commit", "abc1234"}, {"git_dirty", false}}},
-               {"run", ojson{{"started_utc", "2026-01-02T03:04:05Z"}, {"quick", false}}},
-               {"config", ojson{{"views", ojson{{"camera_view", ojson{{"width", 96}}}, {"light_view", ojson{{"width", 64}}}}},
-                                {"K", K},
-                                {"timing", ojson{{"min_repetitions", 20}}},
-                                {"generators", {"fis_tok15", "fis_modified"}}}},
-               {"capture", ojson{{"hashes", ojson{{"gbuffer", ojson{{"P.X", hash}}}, {"rsm", ojson{{"P.X", hash}}}}}}},
-               {"generators", gens}};
+  return ojson{
+      {"schema_version", 1},
+      {"table", table},
+      {"device", to_json(test::synthetic_device(device, "discrete"))},
+      {"build", to_json(test::synthetic_build("abc1234"))},
+      {"run", to_json(test::synthetic_run("2026-01-02T03:04:05Z", false))},
+      {"config", ojson{{"views", ojson{{"camera_view", ojson{{"width", 96}}}, {"light_view", ojson{{"width", 64}}}}},
+                       {"K", K},
+                       {"timing", ojson{{"min_repetitions", 20}}},
+                       {"generators", {"fis_tok15", "fis_modified"}}}},
+      {"capture", ojson{{"hashes", ojson{{"gbuffer", ojson{{"P.X", hash}}}, {"rsm", ojson{{"P.X", hash}}}}}}},
+      {"generators", gens}};
 }
 
 // n samples around `median` with relative noise `noise`, reproducible per row.

@@ -13,10 +13,9 @@
 
 #include <unistd.h>
 
-#include <nlohmann/json.hpp>
-
 #include "harness/core/build_info.hpp"
-#include "harness/timing/run_provenance.hpp"
+#include "harness/core/version.hpp"
+#include "harness/formats/run_header.hpp"
 #include "cli_runner.hpp"
 #include "test_support.hpp"
 
@@ -116,10 +115,11 @@ TEST(RunProvenance, ATreeWithoutGitIsUnknownAndSaysWhy) {
 // What the runs write is what the build fixed: no git is asked at run time.
 TEST(RunProvenance, TheJsonAndVersionNameTheBuildsCommitAndCompiler) {
   const BuildInfo b = build_info();
-  const nlohmann::json j = build_json();
-  EXPECT_EQ(j.at("git_commit"), b.git_commit);
-  EXPECT_EQ(j.at("git_dirty"), b.git_dirty);
-  EXPECT_EQ(j.at("compiler"), compiler_description());
+  const BuildRecord record = this_build();
+  EXPECT_EQ(record.git_commit, b.git_commit);
+  EXPECT_EQ(record.git_dirty, b.git_dirty);
+  EXPECT_EQ(record.compiler, compiler_description());
+  EXPECT_EQ(record.vsgl_bench_version, kVersionString);
   EXPECT_FALSE(b.git_commit.empty());
   if (b.git_commit == "unknown") {
     EXPECT_FALSE(b.git_note.empty());

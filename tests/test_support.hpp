@@ -64,11 +64,11 @@ inline std::string read_text(const std::filesystem::path& path) {
 }
 
 // The file parsed as JSON; throws naming the path when it cannot be read or parsed.
-inline nlohmann::json read_json(const std::filesystem::path& path) {
+inline nlohmann::ordered_json read_json(const std::filesystem::path& path) {
   const std::string text = read_text(path);
   try {
-    return nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
+    return nlohmann::ordered_json::parse(text);
+  } catch (const nlohmann::ordered_json::parse_error& e) {
     throw std::runtime_error(path.string() + ": " + e.what());
   }
 }

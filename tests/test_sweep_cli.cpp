@@ -28,11 +28,11 @@ TEST(SweepCli, TinySweepOverTwoAxesWritesValidJsonFitsAndPlots) {
   const auto r = test::run_cli(tiny_sweep_args(root) + " --axis vsgls=8,16 --axis K=1,2");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_TRUE(fs::exists(root / "captures/tiny-g96x64-r64/capture.json")) << r.output;  // recorded into the cache
-  const nlohmann::json doc = test::read_json(root / "out/sweep.json");
+  const nlohmann::ordered_json doc = test::read_json(root / "out/sweep.json");
   const auto problems = validate_against_schema(doc, test::read_json(kSchema));
   EXPECT_TRUE(problems.empty()) << problems.front();
   EXPECT_EQ(doc["scene"]["name"], "tiny");
-  EXPECT_EQ(doc["generators"], nlohmann::json::array({"fis_modified"}));
+  EXPECT_EQ(doc["generators"], nlohmann::ordered_json::array({"fis_modified"}));
   EXPECT_EQ(doc["time_budget_s"], 40.0);
   // The product: (8, 1), (8, 2), (16, 1), (16, 2), each with both views' cases and its own cap.
   ASSERT_EQ(doc["points"].size(), 4u);

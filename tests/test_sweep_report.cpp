@@ -18,6 +18,7 @@
 #include "harness/sweep/sweep_document.hpp"
 #include "harness/sweep/sweep_markdown.hpp"
 #include "harness/sweep/sweep_plots.hpp"
+#include "synthetic_header.hpp"
 #include "test_support.hpp"
 
 namespace vsgl {
@@ -85,17 +86,9 @@ MeasuredSweep synthetic_sweep(const std::vector<SweepAxis>& axes) {
 
 SweepContext synthetic_sweep_context() {
   SweepContext c;
-  c.device = nlohmann::ordered_json{{"name", "synthetic"},
-                                    {"type", "cpu"},
-                                    {"timestamps", true},
-                                    {"timestamp_valid_bits", 64},
-                                    {"timestamp_period_ns", 1.0}};
-  c.build = nlohmann::ordered_json{{"compiler", "test"}};
-  c.run = nlohmann::ordered_json{{"started_utc", "2026-01-01T00:00:00Z"},
-                                 {"validation_layer", false},
-                                 {"quick", true},
-                                 {"protocol_compliant", false},
-                                 {"clocks_locked_claimed", false}};
+  c.device = test::synthetic_device();
+  c.build = test::synthetic_build();
+  c.run = test::synthetic_run();
   return c;
 }
 
@@ -143,9 +136,9 @@ TEST(SweepReport, JsonConformsToTheSchemaAndKeepsTheRawSamples) {
   const MeasuredSweep s = synthetic_sweep(axes);
   const auto fits = sweep_fits(s);
   const nlohmann::ordered_json doc = to_json(sweep_document(s, fits, synthetic_sweep_context()));
-  const nlohmann::json schema = test::read_json(kSweepSchemaFile);
+  const nlohmann::ordered_json schema = test::read_json(kSweepSchemaFile);
   ASSERT_TRUE(schema_subset_problems(schema).empty());
-  const auto problems = validate_against_schema(nlohmann::json::parse(doc.dump()), schema);
+  const auto problems = validate_against_schema(doc, schema);
   EXPECT_TRUE(problems.empty()) << problems.front();
   ASSERT_EQ(doc["points"].size(), 6u);
   EXPECT_EQ(doc["points"][3]["values"]["vsgls"], "16");
@@ -159,13 +152,13 @@ TEST(SweepReport, JsonConformsToTheSchemaAndKeepsTheRawSamples) {
   EXPECT_TRUE(flagged);
 
   // The schema can fail: a point without samples, a fit without its verdict, an unknown axis.
-  nlohmann::json broken = nlohmann::json::parse(doc.dump());
+  nlohmann::ordered_json broken = doc;
   broken["points"][0]["cases"][0]["phases"][0].erase("samples_ms");
   EXPECT_FALSE(validate_against_schema(broken, schema).empty());
-  broken = nlohmann::json::parse(doc.dump());
+  broken = doc;
   broken["fits"][0].erase("verdict");
   EXPECT_FALSE(validate_against_schema(broken, schema).empty());
-  broken = nlohmann::json::parse(doc.dump());
+  broken = doc;
   broken["axes"][0]["name"] = "lights";
   EXPECT_FALSE(validate_against_schema(broken, schema).empty());
 }
@@ -226,7 +219,7 @@ TEST(SweepReport, GammaZeroStaysOffTheLogAxis) {
   EXPECT_EQ(f.expected->slope, 0.0);
   const SweepModel document = sweep_document(three, fits, synthetic_sweep_context());
   const auto doc = to_json(document);
-  EXPECT_TRUE(validate_against_schema(nlohmann::json::parse(doc.dump()), test::read_json(kSweepSchemaFile)).empty());
+  EXPECT_TRUE(validate_against_schema(doc, test::read_json(kSweepSchemaFile)).empty());
   EXPECT_EQ(doc["points"][2]["pdf_sharpness"]["pdf_frequency"]["light_view"]["relative_variance"], 2.0);
   EXPECT_NE(sweep_markdown(document).find("## PDF frequency at each"), std::string::npos);
 }

@@ -229,15 +229,15 @@ TEST(OverheadClaim, TableJsonCarriesThePairedAndBandwidthBlocks) {
   const ReportContext ctx = synthetic_context();
   const MeasuredTable t = synthetic_measured_table(25.0, 30.0, 12);
   const nlohmann::ordered_json doc = table_json(t, nullptr, ctx);
-  nlohmann::json schema;
+  nlohmann::ordered_json schema;
   std::ifstream(kSource / "results/schema/table.schema.json") >> schema;
-  const auto sub = [&](const nlohmann::json& part) {
-    nlohmann::json s = part;
+  const auto sub = [&](const nlohmann::ordered_json& part) {
+    nlohmann::ordered_json s = part;
     s["$defs"] = schema["$defs"];
     return s;
   };
-  const nlohmann::json ratios = nlohmann::json::parse(doc["ratios"].dump());
-  const nlohmann::json bandwidth = nlohmann::json::parse(doc["bandwidth"].dump());
+  const nlohmann::ordered_json ratios = doc["ratios"];
+  const nlohmann::ordered_json bandwidth = doc["bandwidth"];
   const auto p1 = validate_against_schema(ratios, sub(schema["properties"]["ratios"]));
   EXPECT_TRUE(p1.empty()) << p1.front();
   const auto p2 = validate_against_schema(bandwidth, sub(schema["properties"]["bandwidth"]));

@@ -13,6 +13,7 @@
 #include "harness/formats/scene_identity.hpp"
 #include "harness/formats/table_model.hpp"
 #include "harness/report/capture_scene_identity.hpp"
+#include "synthetic_header.hpp"
 
 namespace vsgl {
 namespace {
@@ -149,9 +150,9 @@ TEST(SceneIdentity, TableSchemaTwoNamesAreInferredAndWrittenBackAsNames) {
 TEST(SceneIdentity, SchemaOneTablesAreLabelledByTheirCaptureScene) {
   ojson doc = table_doc(1, "unused");
   doc.erase("scene");  // schema 1 named the scene only under /capture
-  doc["device"] = ojson{{"name", "GPU"}, {"type", "discrete"}};
-  doc["build"] = ojson{{"git_commit", "abc1234"}};
-  doc["run"] = ojson{{"started_utc", "2026-11-22T00:00:00Z"}};
+  doc["device"] = to_json(test::synthetic_device("GPU", "discrete"));
+  doc["build"] = to_json(test::synthetic_build("abc1234"));
+  doc["run"] = to_json(test::synthetic_run("2026-11-22T00:00:00Z"));
   doc["config"] = ojson{{"K", 1}};
   doc["capture"] = ojson{{"scene", "atrium"}, {"hashes", ojson{{"gbuffer", ojson::object()}}}};
   const BenchRun run = parse_bench_run(doc, "h100/table1.json");
@@ -168,8 +169,8 @@ BenchRun run_on(const SceneIdentity& scene, const std::string& device, const std
   r.date = date;
   RunTable t;
   t.table = 1;
-  t.capture_hashes = nlohmann::json{{"gbuffer", "h"}};
-  t.workload = nlohmann::json{{"K", 1}};
+  t.capture_hashes = nlohmann::ordered_json{{"gbuffer", "h"}};
+  t.workload = nlohmann::ordered_json{{"K", 1}};
   t.scene = scene;
   r.tables[1] = t;
   for (const char* name : {"table1/fis_tok15/total", "table1/fis_tok15/camera_view/additional"}) {
@@ -218,7 +219,7 @@ TEST(SceneIdentity, ExportNamesCarryTheScene) {
 TEST(SceneIdentity, DashboardKeepsOneSeriesPerDeviceAndScene) {
   const std::vector<BenchRun> runs{run_on(stand_in_atrium(), "GPU", "2026-12-01T00:00:00Z"),
                                    run_on(paper_sponza(), "GPU", "2026-12-02T00:00:00Z")};
-  const std::string html = dashboard_html(runs, nlohmann::json::object(), "results", {});
+  const std::string html = dashboard_html(runs, nlohmann::ordered_json::object(), "results", {});
   EXPECT_NE(html.find("Table 1 (atrium, stand-in; sponza, paper scene)"), std::string::npos);
   EXPECT_NE(html.find("GPU (atrium, stand-in)"), std::string::npos);
   EXPECT_NE(html.find("GPU (sponza, paper scene)"), std::string::npos);

@@ -74,7 +74,7 @@ TEST_F(TablesRunTest, TinyRunProducesCompleteFiniteTablesThatMatchTheSchema) {
             2);
   EXPECT_TRUE(fs::exists(root / "captures/atrium/capture.json"));  // recorded because missing
   EXPECT_TRUE(fs::exists(root / "captures/conference/capture.json"));
-  const nlohmann::json schema = read_json(kTableSchema);
+  const nlohmann::ordered_json schema = read_json(kTableSchema);
   for (int table : {1, 2}) {
     SCOPED_TRACE("table " + std::to_string(table));
     const fs::path json_path = root / "out" / ("table" + std::to_string(table) + ".json");
@@ -85,7 +85,7 @@ TEST_F(TablesRunTest, TinyRunProducesCompleteFiniteTablesThatMatchTheSchema) {
       return std::string(std::istreambuf_iterator<char>(in), {});
     }();
     EXPECT_EQ(text.find("NaN"), std::string::npos);
-    const nlohmann::json doc = nlohmann::json::parse(text);
+    const nlohmann::ordered_json doc = nlohmann::ordered_json::parse(text);
     const auto problems = validate_against_schema(doc, schema);
     EXPECT_TRUE(problems.empty()) << problems.front();
     EXPECT_EQ(doc["table"], table);
@@ -232,7 +232,7 @@ TEST_F(TablesRunTest, UserCapturesGetTheirOwnTables) {
   ASSERT_EQ(out.documents.size(), 1u);
   ASSERT_TRUE(fs::exists(o.out_dir / "tiny.json"));
   EXPECT_TRUE(fs::exists(o.out_dir / "tiny.md"));
-  const nlohmann::json doc = read_json(o.out_dir / "tiny.json");
+  const nlohmann::ordered_json doc = read_json(o.out_dir / "tiny.json");
   EXPECT_TRUE(doc["table"].is_null());
   EXPECT_EQ(doc["scene"]["name"], "tiny");
   EXPECT_EQ(doc["scene"]["kind"], "procedural") << "the tiny scene stands in for no paper table";
@@ -281,17 +281,18 @@ TEST_F(TablesRunTest, BadOptionsAreRefusedBeforeAnyWork) {
 }
 
 TEST(TableSchema, ValidatorReportsViolations) {
-  const nlohmann::json schema = nlohmann::json::parse(R"({
+  const nlohmann::ordered_json schema = nlohmann::ordered_json::parse(R"({
     "type": "object", "required": ["a", "b"], "additionalProperties": false,
     "properties": {"a": {"$ref": "#/$defs/pos"}, "b": {"type": "array", "minItems": 2, "items": {"enum": ["x", "y"]}},
                    "c": {"type": ["number", "null"]}},
     "$defs": {"pos": {"type": "number", "exclusiveMinimum": 0}}})");
-  EXPECT_TRUE(validate_against_schema(nlohmann::json::parse(R"({"a": 1, "b": ["x", "y"], "c": null})"), schema).empty());
-  const auto errors = validate_against_schema(nlohmann::json::parse(R"({"a": 0, "b": ["z"], "d": 1})"), schema);
+  EXPECT_TRUE(validate_against_schema(nlohmann::ordered_json::parse(R"({"a": 1, "b": ["x", "y"], "c": null})"), schema)
+                  .empty());
+  const auto errors = validate_against_schema(nlohmann::ordered_json::parse(R"({"a": 0, "b": ["z"], "d": 1})"), schema);
   ASSERT_EQ(errors.size(), 4u);  // a not > 0, b too short, b/0 not in enum, d not allowed
   EXPECT_NE(errors[0].find("/a"), std::string::npos);
-  EXPECT_FALSE(validate_against_schema(nlohmann::json::parse(R"({"a": "1"})"), schema).empty());
-  EXPECT_THROW(validate_against_schema(nlohmann::json(1), nlohmann::json::parse(R"({"pattern": "x"})")),
+  EXPECT_FALSE(validate_against_schema(nlohmann::ordered_json::parse(R"({"a": "1"})"), schema).empty());
+  EXPECT_THROW(validate_against_schema(nlohmann::ordered_json(1), nlohmann::ordered_json::parse(R"({"pattern": "x"})")),
                std::invalid_argument);  // an unsupported keyword is not silently ignored
   nlohmann::ordered_json with_nan{{"x", {{"y", std::numeric_limits<double>::quiet_NaN()}}}};
   try {

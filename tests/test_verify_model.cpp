@@ -24,7 +24,7 @@ namespace vsgl {
 namespace {
 
 namespace fs = std::filesystem;
-using json = nlohmann::json;
+using json = nlohmann::ordered_json;
 using test::kSource;
 
 std::vector<fs::path> committed_verify_files() {

@@ -83,7 +83,7 @@ TEST(GbenchCli, TimesEveryPhaseOfEveryCaseOfACaptureUnderItsName) {
                             " --vsgl_replays=3 --benchmark_format=json --benchmark_out=" +
                             out.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  const nlohmann::json doc = test::read_json(out);
+  const nlohmann::ordered_json doc = test::read_json(out);
 
   std::multiset<std::string> expected, named;
   for (const char* g : {"fis_modified", "kmeans_3d"})
@@ -100,11 +100,11 @@ TEST(GbenchCli, TimesEveryPhaseOfEveryCaseOfACaptureUnderItsName) {
   }
   EXPECT_EQ(named, expected);
 
-  const nlohmann::json& context = doc.at("context");
+  const nlohmann::ordered_json& context = doc.at("context");
   for (const char* key : {"vsgl_device", "vsgl_driver", "vsgl_git_commit", "vsgl_config", "vsgl_tiny_capture",
                           "vsgl_tiny_capture_hashes", "vsgl_tiny_scene"})
     EXPECT_TRUE(context.contains(key)) << key;
-  EXPECT_EQ(nlohmann::json::parse(context.at("vsgl_config").get<std::string>()).at("replays"), 3);
+  EXPECT_EQ(nlohmann::ordered_json::parse(context.at("vsgl_config").get<std::string>()).at("replays"), 3);
 }
 
 }  // namespace

@@ -49,7 +49,7 @@ Command add_dashboard_command(CLI::App& parent) {
             if (runs.empty() && sweeps.empty())
               throw InputError(o->results +
                                ": no table JSON (the output of `tables`) and no sweep JSON (sweep.json) found");
-            const nlohmann::json paper = paper_tables_or_built_in(
+            const nlohmann::ordered_json paper = paper_tables_or_built_in(
                 o->paper ? std::optional<std::filesystem::path>(path_from_utf8(*o->paper)) : std::nullopt);
             std::filesystem::create_directories(path_from_utf8(o->out));
             const std::filesystem::path page = path_from_utf8(o->out) / "index.html";

@@ -3,7 +3,6 @@
 #include <cstdio>
 #include <memory>
 #include <string>
-#include <nlohmann/json.hpp>
 
 #include "bench/cli/commands.hpp"
 #include "harness/generators/device_support.hpp"
@@ -26,14 +25,9 @@ int run_devices(bool json) {
     default_index = -1;
   }
   if (json) {
-    // Each device object as every document carries it (vk/device_info.hpp), and per generator and
-    // mip strategy whether it runs there (generators/device_support.hpp), typed by the model.
+    // Each device as every document records it, and per generator and mip strategy whether it runs there.
     DevicesDocument doc{default_index, {}};
-    for (const auto& d : devices) {
-      const std::string at = "/devices/" + std::to_string(doc.devices.size());
-      doc.devices.push_back({device_from_json(to_json(d), "the device", at),
-                             support_from_json(device_support_json(d), "the device support", at + "/support")});
-    }
+    for (const auto& d : devices) doc.devices.push_back({device_record(d), device_support(d)});
     std::fputs(devices_file_text(doc).c_str(), stdout);
   } else {
     std::printf("%zu Vulkan device(s):\n%s", devices.size(), describe_devices_text(devices).c_str());

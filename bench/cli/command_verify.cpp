@@ -6,7 +6,6 @@
 #include <optional>
 #include <string>
 #include <vector>
-#include <nlohmann/json.hpp>
 
 #include "bench/cli/commands.hpp"
 #include "bench/cli/generator_options.hpp"
@@ -18,6 +17,7 @@
 #include "harness/formats/verify_model.hpp"
 #include "harness/verify/fis_verification.hpp"
 #include "harness/verify/kmeans_verification.hpp"
+#include "harness/vk/device_info.hpp"
 
 namespace vsgl::cli {
 
@@ -67,11 +67,7 @@ int run_verify(VerifyOptions& o) {
   }
   std::printf("%zu checks, %u failed\n", results.size(), failed);
   if (json_path) {
-    // The device object as every document carries it (vk/device_info.hpp), typed by the model.
-    VerifyDocument doc{*capture_dir,
-                       capture.meta.scene,
-                       device_from_json(to_json(session.device().info()), "the device", "/device"),
-                       {}};
+    VerifyDocument doc{*capture_dir, capture.meta.scene, device_record(session.device().info()), {}};
     for (const auto& r : results) doc.checks.push_back(document_check(r));
     write_text_atomic(*json_path, verify_file_text(doc));
   }

@@ -221,7 +221,7 @@ CaptureMeta write_capture(const Capture& capture, const std::filesystem::path& d
   std::string sidecar;
   try {
     sidecar = sidecar_text(meta, capture);
-  } catch (const nlohmann::json::exception& e) {  // e.g. a scene or device name that is not UTF-8
+  } catch (const nlohmann::ordered_json::exception& e) {  // e.g. a scene or device name that is not UTF-8
     throw InputError(path_text(sidecar_path) + ": cannot write the capture sidecar: " + e.what());
   }
   write_text_atomic(sidecar_path, sidecar);

@@ -16,7 +16,7 @@
 namespace vsgl {
 namespace {
 
-using nlohmann::json;
+using json = nlohmann::ordered_json;
 using nlohmann::ordered_json;
 
 constexpr const char* kFormatName = "vsgl-capture";

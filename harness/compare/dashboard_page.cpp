@@ -138,8 +138,8 @@ std::string run_bars(const BenchRun& run, int table, const Generators& generator
 }
 
 // The paper's chart of one table (the generators the paper timed).
-std::string paper_bars(const nlohmann::json& paper, int table, const Generators& generators) {
-  const nlohmann::json& t = paper.at("tables").at(std::to_string(table));
+std::string paper_bars(const nlohmann::ordered_json& paper, int table, const Generators& generators) {
+  const nlohmann::ordered_json& t = paper.at("tables").at(std::to_string(table));
   std::vector<StackedBar> bars;
   std::vector<LegendEntry> legend;
   std::set<std::string> seen;
@@ -150,10 +150,10 @@ std::string paper_bars(const nlohmann::json& paper, int table, const Generators&
     if (!t.contains(g)) continue;
     StackedBar bar{short_generator(generators, g), {}};
     for (const char* view : kViews) {
-      // paper_tables.json is read unordered; the phases in execution order. A phase the paper's
+      // The phases in execution order, whatever the file's order. A phase the paper's
       // file does not give is left out of its bar (the file is validated for shape, not for
       // which phases each generator has).
-      const nlohmann::json& phases = t.at(g).at(view);
+      const nlohmann::ordered_json& phases = t.at(g).at(view);
       for (const auto& phase : d.phases) {
         if (!phases.contains(phase)) continue;
         const double ms = phases.at(phase).get<double>();
@@ -229,8 +229,9 @@ std::vector<BenchRun> find_table_runs(const std::filesystem::path& results_dir) 
   return runs;
 }
 
-std::string dashboard_html(const std::vector<BenchRun>& runs, const nlohmann::json& paper, const std::string& source,
-                           const std::vector<DashboardGenerator>& generators, const std::vector<SweepRun>& sweeps) {
+std::string dashboard_html(const std::vector<BenchRun>& runs, const nlohmann::ordered_json& paper,
+                           const std::string& source, const std::vector<DashboardGenerator>& generators,
+                           const std::vector<SweepRun>& sweeps) {
   std::map<std::string, std::string> series_colors;
   for (const auto& r : runs)
     for (const auto& [n, t] : r.tables)

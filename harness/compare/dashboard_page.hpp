@@ -43,7 +43,8 @@ struct DashboardGenerator {
 // The page. `paper` is results/paper/paper_tables.json (report/paper_tables.hpp load_paper_tables);
 // `source` names where the runs came from (shown on the page); `sweeps` (find_sweep_runs) fill the
 // scaling section, which with none says so.
-std::string dashboard_html(const std::vector<BenchRun>& runs, const nlohmann::json& paper, const std::string& source,
-                           const std::vector<DashboardGenerator>& generators, const std::vector<SweepRun>& sweeps = {});
+std::string dashboard_html(const std::vector<BenchRun>& runs, const nlohmann::ordered_json& paper,
+                           const std::string& source, const std::vector<DashboardGenerator>& generators,
+                           const std::vector<SweepRun>& sweeps = {});
 
 }  // namespace vsgl

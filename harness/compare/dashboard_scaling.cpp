@@ -18,9 +18,9 @@ std::string ms(double v) { return number_text(v, 4); }
 std::string day(const std::string& date) { return date.substr(0, std::min<std::size_t>(date.size(), 10)); }
 
 std::string short_commit(const SweepModel& m) {
-  const std::optional<std::string> commit = m.git_commit();
-  if (!commit || commit->empty() || *commit == "unknown") return "(no commit)";
-  return commit->substr(0, std::min<std::size_t>(commit->size(), 7)) + (m.git_dirty() ? " (dirty)" : "");
+  const std::string& commit = m.build.git_commit;
+  if (commit.empty() || commit == "unknown") return "(no commit)";
+  return commit.substr(0, std::min<std::size_t>(commit.size(), 7)) + (m.build.git_dirty ? " (dirty)" : "");
 }
 
 // "<generator> <view>" or, with other axes held, "<generator> <view>, K=2".
@@ -170,15 +170,15 @@ std::string sweep_block(const SweepRun& run, std::size_t number) {
 
   std::ostringstream os;
   os << "<section class=\"sweep\" id=\"sweep" << number << "\">\n<h3>" << xml_escape(scene_label(m.scene)) << ": "
-     << xml_escape(m.device_name()) << ", " << xml_escape(day(m.started_utc())) << ", commit "
-     << xml_escape(short_commit(m)) << (m.quick() ? " (quick)" : "") << incomplete_mark(m) << "</h3>\n";
+     << xml_escape(m.device.name) << ", " << xml_escape(day(m.run.started_utc)) << ", commit "
+     << xml_escape(short_commit(m)) << (m.run.quick ? " (quick)" : "") << incomplete_mark(m) << "</h3>\n";
   if (!m.complete)
     os << "<p class=\"incomplete\">This sweep did not finish: its run stopped, or is still running, after "
        << m.reached_points() << " of " << m.planned_points()
        << " points. The fits are over the points timed so far; the paper's claims are judged only on a complete "
           "sweep.</p>\n";
   os << "<p><code>" << xml_escape(run.path) << "</code>: " << xml_escape(axes) << " (" << m.points.size()
-     << " points), " << xml_escape(generators) << ", started " << xml_escape(m.started_utc()) << ". "
+     << " points), " << xml_escape(generators) << ", started " << xml_escape(m.run.started_utc) << ". "
      << (flagged == 0 ? std::string("No fit excludes the growth its algorithm predicts.")
                       : std::to_string(flagged) + " fit(s) exclude the growth their algorithm predicts (highlighted).")
      << "</p>\n";
@@ -214,7 +214,7 @@ std::vector<SweepRun> find_sweep_runs(const std::filesystem::path& results_dir) 
   }
   std::sort(runs.begin(), runs.end(), [](const SweepRun& a, const SweepRun& b) {
     const std::string sa = scene_label(a.model.scene), sb = scene_label(b.model.scene);
-    const std::string da = a.model.started_utc(), db = b.model.started_utc();
+    const std::string da = a.model.run.started_utc, db = b.model.run.started_utc;
     return std::tie(sa, da, a.path) < std::tie(sb, db, b.path);
   });
   return runs;

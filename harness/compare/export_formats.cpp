@@ -62,15 +62,15 @@ ExportFormat parse_export_format(const std::string& name) {
                    "Format), not '" + name + "'");
 }
 
-nlohmann::json export_schema(ExportFormat format) {
+nlohmann::ordered_json export_schema(ExportFormat format) {
   if (format == ExportFormat::kGithubActionBenchmark)
-    return nlohmann::json::parse(R"({
+    return nlohmann::ordered_json::parse(R"({
       "type": "array", "minItems": 1,
       "items": {"type": "object", "required": ["name", "unit", "value"], "additionalProperties": false,
                 "properties": {"name": {"type": "string"}, "unit": {"const": "ms"},
                                "value": {"type": "number", "exclusiveMinimum": 0},
                                "range": {"type": "string"}, "extra": {"type": "string"}}}})");
-  return nlohmann::json::parse(R"({
+  return nlohmann::ordered_json::parse(R"({
       "type": "object",
       "additionalProperties": {
         "type": "object", "required": ["latency"], "additionalProperties": false,
@@ -84,7 +84,7 @@ ojson export_run(const BenchRun& run, ExportFormat format) {
   if (run.series.empty()) throw InputError(run.path + ": no benchmark to export");
   ojson out = format == ExportFormat::kGithubActionBenchmark ? gab(run) : bmf(run);
   require_finite_numbers(out);
-  const auto problems = validate_against_schema(nlohmann::json::parse(out.dump()), export_schema(format));
+  const auto problems = validate_against_schema(out, export_schema(format));
   if (!problems.empty()) throw std::logic_error("export does not have its documented shape: " + problems.front());
   return out;
 }

@@ -25,6 +25,6 @@ nlohmann::ordered_json export_run(const BenchRun& run, ExportFormat format);
 
 // The documented shape of each format as a schema for harness/core/json_schema_subset.hpp; the
 // exporter checks its own output against it before anything is written.
-nlohmann::json export_schema(ExportFormat format);
+nlohmann::ordered_json export_schema(ExportFormat format);
 
 }  // namespace vsgl

@@ -11,15 +11,13 @@
 #include "harness/core/path_text.hpp"
 #include "harness/core/statistics.hpp"
 #include "harness/core/printable_text.hpp"
+#include "harness/core/sorted_json.hpp"
 #include "harness/formats/table_model.hpp"
 
 namespace vsgl {
 namespace {
 
 using json = nlohmann::ordered_json;
-
-// Order-independent copy for equality (capture hashes, workload config).
-nlohmann::json unordered(const json& j) { return nlohmann::json::parse(j.dump()); }
 
 std::string text_or(const json& obj, const std::string& key, const std::string& fallback) {
   const auto it = obj.find(key);
@@ -41,12 +39,12 @@ RunSeries series_of(const TimingStatistics& stats, std::string name, int table, 
 
 // What identifies a run and must be in its file, beyond what the table model itself requires.
 template <typename T>
-const T& required(const OrderedJsonReader& r, const std::optional<T>& v, const std::string& pointer) {
+const T& required(const JsonReader& r, const std::optional<T>& v, const std::string& pointer) {
   if (!v) r.fail(pointer, "missing field");
   return *v;
 }
 
-BenchRun parse_table_json(const json& doc, const OrderedJsonReader& r, CaptureTables capture_tables) {
+BenchRun parse_table_json(const json& doc, const JsonReader& r, CaptureTables capture_tables) {
   const TableModel m = table_model_from_json(doc, r.where());
   BenchRun run;
   run.format = "table";
@@ -58,28 +56,28 @@ BenchRun parse_table_json(const json& doc, const OrderedJsonReader& r, CaptureTa
   if (!m.table && !m.scene) r.fail("/scene", "missing field: a table of no paper table is known by its scene");
   if (m.table && *m.table != 1 && *m.table != 2) r.fail("/table", "is " + std::to_string(*m.table) + ", not 1 or 2");
   const int table = m.table ? *m.table : 0;
-  if (!m.device.fields.is_object()) r.fail("/device", "missing field");
-  run.device = required(r, m.device.name, "/device/name");
-  run.device_type = m.device.type;
-  if (!m.build.fields.is_object()) r.fail("/build", "missing field");
-  run.git_commit = required(r, m.build.git_commit, "/build/git_commit");
-  run.git_dirty = m.build.git_dirty;
-  if (!m.run.fields.is_object()) r.fail("/run", "missing field");
-  run.date = required(r, m.run.started_utc, "/run/started_utc");
-  run.quick = m.run.quick;
-  run.altered_generators = m.run.altered_generators;
+  const DeviceRecord& device = required(r, m.device, "/device");
+  run.device = device.name;
+  run.device_type = device.type;
+  const BuildRecord& build = required(r, m.build, "/build");
+  run.git_commit = build.git_commit;
+  run.git_dirty = build.git_dirty;
+  const RunRecord& header_run = required(r, m.run, "/run");
+  run.date = header_run.started_utc;
+  run.quick = header_run.quick;
+  run.altered_generators = header_run.altered_generators;
 
   RunTable t;
   t.table = table;
   if (!m.capture.fields.is_object()) r.fail("/capture", "missing field");
-  t.capture_hashes = unordered(required(r, m.capture.hashes, "/capture/hashes"));
+  t.capture_hashes = sorted_keys(required(r, m.capture.hashes, "/capture/hashes"));
   // The workload, not the protocol: repetitions, noise target and caps change how long a run
   // measures, not what it measures; the generator list decides which rows exist (compared row
   // by row); kmeans_sum and sampler are descriptions.
   if (!m.config.is_object()) r.fail("/config", "missing field");
   json workload = m.config;
   for (const char* key : {"timing", "generators", "kmeans_sum", "sampler"}) workload.erase(key);
-  t.workload = unordered(workload);
+  t.workload = sorted_keys(workload);
   t.scene = m.timed_scene();
   run.tables[table] = t;
 
@@ -95,7 +93,7 @@ BenchRun parse_table_json(const json& doc, const OrderedJsonReader& r, CaptureTa
   return run;
 }
 
-double to_ms(double value, const std::string& unit, const OrderedJsonReader& r, const std::string& pointer) {
+double to_ms(double value, const std::string& unit, const JsonReader& r, const std::string& pointer) {
   if (unit == "ns") return value * 1e-6;
   if (unit == "us") return value * 1e-3;
   if (unit == "ms") return value;
@@ -103,7 +101,7 @@ double to_ms(double value, const std::string& unit, const OrderedJsonReader& r, 
   r.fail(pointer, "unknown time unit " + quoted_text(unit));
 }
 
-json parse_embedded(const OrderedJsonReader& r, const json& context, const std::string& key) {
+json parse_embedded(const JsonReader& r, const json& context, const std::string& key) {
   const std::string text = r.string(context, "/context", key);
   try {
     return json::parse(text);
@@ -112,7 +110,7 @@ json parse_embedded(const OrderedJsonReader& r, const json& context, const std::
   }
 }
 
-BenchRun parse_gbench_json(const json& doc, const OrderedJsonReader& r) {
+BenchRun parse_gbench_json(const json& doc, const JsonReader& r) {
   BenchRun run;
   run.format = "gbench";
   const json& context = r.object(doc, "", "context");
@@ -163,8 +161,9 @@ BenchRun parse_gbench_json(const json& doc, const OrderedJsonReader& r) {
     if (!run.tables.contains(s.table)) {
       RunTable t;
       t.table = s.table;
-      t.capture_hashes = unordered(parse_embedded(r, context, "vsgl_table" + std::to_string(s.table) + "_capture_hashes"));
-      t.workload = unordered(workload);
+      t.capture_hashes =
+          sorted_keys(parse_embedded(r, context, "vsgl_table" + std::to_string(s.table) + "_capture_hashes"));
+      t.workload = sorted_keys(workload);
       const std::string scene_key = "vsgl_table" + std::to_string(s.table) + "_scene";
       if (context.contains(scene_key))
         t.scene = scene_identity_from_json(parse_embedded(r, context, scene_key), r.where(), "/context/" + scene_key);
@@ -193,7 +192,7 @@ bool is_table_document(const nlohmann::ordered_json& doc) {
 }
 
 BenchRun parse_bench_run(const nlohmann::ordered_json& doc, const std::string& what, CaptureTables capture_tables) {
-  const OrderedJsonReader r(what, JsonPathStyle::kPointer);
+  const JsonReader r(what, JsonPathStyle::kPointer);
   if (!doc.is_object()) r.fail("", "is not a JSON object (neither a table JSON nor Google Benchmark JSON)");
   BenchRun run;
   if (doc.contains("benchmarks") && doc.contains("context")) run = parse_gbench_json(doc, r);

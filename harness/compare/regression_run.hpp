@@ -44,9 +44,10 @@ struct RunSeries {
 
 // What has to be equal for the timings of one paper table in two runs to be comparable.
 struct RunTable {
-  int table = 0;                  // 0: a capture that is not a paper table's, known by its scene
-  nlohmann::json capture_hashes;  // {"gbuffer": {...}, "rsm": {...}}
-  nlohmann::json workload;        // the config minus the timing protocol and the descriptions
+  int table = 0;  // 0: a capture that is not a paper table's, known by its scene
+  // Keys sorted (core/sorted_json.hpp), so that equal objects compare equal whatever their order.
+  nlohmann::ordered_json capture_hashes;  // {"gbuffer": {...}, "rsm": {...}}
+  nlohmann::ordered_json workload;        // the config minus the timing protocol and the descriptions
   // Which scene was timed: a paper scene and its stand-in are different inputs of one table, never
   // compared, exported or charted as one series. None: a Google Benchmark file that predates it.
   std::optional<SceneIdentity> scene;

@@ -5,11 +5,12 @@
 #include <nlohmann/json.hpp>
 
 #include "harness/core/json_reader.hpp"
+#include "harness/core/sorted_json.hpp"
 
 namespace vsgl {
 namespace {
 
-using json = nlohmann::json;
+using json = nlohmann::ordered_json;
 
 // The 32-bit limits, by their key in the file; the three others (two 3-vectors and the 64-bit
 // allocation size) and the format features are written out below.
@@ -71,7 +72,7 @@ std::array<uint32_t, 3> vector3(const JsonReader& r, const json& object, const s
 
 }  // namespace
 
-nlohmann::json to_json(const DeviceLimits& l) {
+nlohmann::ordered_json to_json(const DeviceLimits& l) {
   json out = json::object();
   for (const Limit32& k : kLimits32) out[k.key] = l.*k.field;
   out[kWorkgroupSize] = l.workgroup_size;
@@ -80,7 +81,7 @@ nlohmann::json to_json(const DeviceLimits& l) {
   json features = json::object();
   for (const Feature& f : kFeatures) features[f.key] = l.rgba32f_optimal_tiling.*f.field;
   out[kRgba32f] = features;
-  return out;
+  return sorted_keys(out);
 }
 
 DeviceLimits device_limits_from_json(const JsonReader& r, const json& l, const std::string& p) {

@@ -7,12 +7,11 @@
 #include <cstdint>
 #include <string>
 
-#include <nlohmann/json_fwd.hpp>
+#include <nlohmann/json.hpp>
 
 namespace vsgl {
 
-template <typename Json>
-class BasicJsonReader;  // core/json_reader.hpp
+class JsonReader;  // core/json_reader.hpp
 
 // VK_FORMAT_R32G32B32A32_SFLOAT's optimal tiling features the FIS paths use.
 struct Rgba32fFeatures {
@@ -54,11 +53,12 @@ struct DeviceLimits {
   Rgba32fFeatures rgba32f_optimal_tiling;
 };
 
-// The `limits` object: every member above but the offset alignment, by its Vulkan name.
-nlohmann::json to_json(const DeviceLimits& limits);
+// The `limits` object: every member above but the offset alignment, by its Vulkan name, the keys
+// sorted (core/sorted_json.hpp).
+nlohmann::ordered_json to_json(const DeviceLimits& limits);
 // Reads what to_json writes at `path`; refuses a missing, mistyped or unknown member (InputError
 // naming its pointer).
-DeviceLimits device_limits_from_json(const BasicJsonReader<nlohmann::json>& reader, const nlohmann::json& limits,
+DeviceLimits device_limits_from_json(const JsonReader& reader, const nlohmann::ordered_json& limits,
                                      const std::string& path);
 
 }  // namespace vsgl

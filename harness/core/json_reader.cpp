@@ -19,107 +19,94 @@ nlohmann::ordered_json read_json_file(const std::filesystem::path& path, const s
 nlohmann::ordered_json parse_json_text(std::string_view text, const std::string& name, const std::string& what) {
   try {
     return nlohmann::ordered_json::parse(text);
-  } catch (const nlohmann::json::exception& e) {
+  } catch (const nlohmann::ordered_json::exception& e) {
     throw InputError(name + ": " + what + " is not valid JSON (truncated or corrupt?): " + printable_text(e.what()));
   }
 }
 
-template <typename Json>
-std::string BasicJsonReader<Json>::child(const std::string& parent, std::string_view key) const {
+std::string JsonReader::child(const std::string& parent, std::string_view key) const {
   if (style_ == JsonPathStyle::kPointer) return parent + "/" + std::string(key);
   return parent.empty() ? std::string(key) : parent + "." + std::string(key);
 }
 
-template <typename Json>
-std::string BasicJsonReader<Json>::element(const std::string& parent, std::size_t index) const {
+std::string JsonReader::element(const std::string& parent, std::size_t index) const {
   if (style_ == JsonPathStyle::kPointer) return parent + "/" + std::to_string(index);
   return parent + "[" + std::to_string(index) + "]";
 }
 
-template <typename Json>
-std::string BasicJsonReader<Json>::place(const std::string& path) const {
+std::string JsonReader::place(const std::string& path) const {
   // Paths are made of the file's keys: escaped, as every text from a file in a message.
   if (style_ == JsonPathStyle::kPointer) return path.empty() ? "" : printable_text(path) + ": ";
   return path.empty() ? "" : "key " + quoted_text(path) + " ";
 }
 
-template <typename Json>
-void BasicJsonReader<Json>::fail(const std::string& path, const std::string& problem) const {
+void JsonReader::fail(const std::string& path, const std::string& problem) const {
   throw InputError(where_ + ": " + place(path) + problem);
 }
 
-template <typename Json>
-void BasicJsonReader<Json>::wrong_type(const json& value, const std::string& path, const std::string& expected) const {
+void JsonReader::wrong_type(const json& value, const std::string& path, const std::string& expected) const {
   fail(path, std::string("has type ") + value.type_name() + ", expected " + expected);
 }
 
-template <typename Json>
-const Json& BasicJsonReader<Json>::member(const json& object, const std::string& parent, std::string_view key) const {
+const nlohmann::ordered_json& JsonReader::member(const json& object, const std::string& parent,
+                                                 std::string_view key) const {
   if (!object.is_object()) fail(parent, "is not an object");
   const auto it = object.find(std::string(key));
   if (it == object.end()) fail(child(parent, key), style_ == JsonPathStyle::kPointer ? "missing field" : "is missing");
   return *it;
 }
 
-template <typename Json>
-const Json& BasicJsonReader<Json>::object(const json& object, const std::string& parent, std::string_view key) const {
+const nlohmann::ordered_json& JsonReader::object(const json& object, const std::string& parent,
+                                                 std::string_view key) const {
   const json& value = member(object, parent, key);
   if (!value.is_object()) wrong_type(value, child(parent, key), "an object");
   return value;
 }
 
-template <typename Json>
-std::string BasicJsonReader<Json>::string(const json& object, const std::string& parent, std::string_view key) const {
+std::string JsonReader::string(const json& object, const std::string& parent, std::string_view key) const {
   const json& value = member(object, parent, key);
   if (!value.is_string()) wrong_type(value, child(parent, key), "a string");
-  return value.template get<std::string>();
+  return value.get<std::string>();
 }
 
-template <typename Json>
-bool BasicJsonReader<Json>::boolean(const json& object, const std::string& parent, std::string_view key) const {
+bool JsonReader::boolean(const json& object, const std::string& parent, std::string_view key) const {
   const json& value = member(object, parent, key);
   if (!value.is_boolean()) wrong_type(value, child(parent, key), "a boolean");
-  return value.template get<bool>();
+  return value.get<bool>();
 }
 
-template <typename Json>
-uint64_t BasicJsonReader<Json>::uint64(const json& value, const std::string& path) const {
+uint64_t JsonReader::uint64(const json& value, const std::string& path) const {
   // nlohmann parses every non-negative integer literal as number_unsigned; one set in memory from
   // a signed value is number_integer.
-  if (!value.is_number_integer() || (!value.is_number_unsigned() && value.template get<int64_t>() < 0))
+  if (!value.is_number_integer() || (!value.is_number_unsigned() && value.get<int64_t>() < 0))
     wrong_type(value, path, "a non-negative integer");
-  return value.template get<uint64_t>();
+  return value.get<uint64_t>();
 }
 
-template <typename Json>
-uint64_t BasicJsonReader<Json>::uint64(const json& object, const std::string& parent, std::string_view key) const {
+uint64_t JsonReader::uint64(const json& object, const std::string& parent, std::string_view key) const {
   return uint64(member(object, parent, key), child(parent, key));
 }
 
-template <typename Json>
-uint32_t BasicJsonReader<Json>::uint32(const json& object, const std::string& parent, std::string_view key) const {
+uint32_t JsonReader::uint32(const json& object, const std::string& parent, std::string_view key) const {
   const json& value = member(object, parent, key);
-  if (!value.is_number_integer() || (!value.is_number_unsigned() && value.template get<int64_t>() < 0) ||
-      value.template get<uint64_t>() > std::numeric_limits<uint32_t>::max())
+  if (!value.is_number_integer() || (!value.is_number_unsigned() && value.get<int64_t>() < 0) ||
+      value.get<uint64_t>() > std::numeric_limits<uint32_t>::max())
     wrong_type(value, child(parent, key), "an unsigned 32-bit integer");
-  return static_cast<uint32_t>(value.template get<uint64_t>());
+  return static_cast<uint32_t>(value.get<uint64_t>());
 }
 
-template <typename Json>
-double BasicJsonReader<Json>::number(const json& value, const std::string& path) const {
+double JsonReader::number(const json& value, const std::string& path) const {
   if (!value.is_number()) wrong_type(value, path, "a number");
-  const double number = value.template get<double>();
+  const double number = value.get<double>();
   if (!std::isfinite(number)) fail(path, "is not a finite number");
   return number;
 }
 
-template <typename Json>
-double BasicJsonReader<Json>::number(const json& object, const std::string& parent, std::string_view key) const {
+double JsonReader::number(const json& object, const std::string& parent, std::string_view key) const {
   return number(member(object, parent, key), child(parent, key));
 }
 
-template <typename Json>
-float BasicJsonReader<Json>::number32(const json& value, const std::string& path) const {
+float JsonReader::number32(const json& value, const std::string& path) const {
   const double v = number(value, path);
   if (std::abs(v) > static_cast<double>(std::numeric_limits<float>::max())) {
     fail(path, "(" + number_text(v) + ") is out of float32 range");
@@ -127,28 +114,23 @@ float BasicJsonReader<Json>::number32(const json& value, const std::string& path
   return static_cast<float>(v);
 }
 
-template <typename Json>
-double BasicJsonReader<Json>::non_negative(const json& value, const std::string& path) const {
+double JsonReader::non_negative(const json& value, const std::string& path) const {
   const double x = number(value, path);
   if (x < 0) fail(path, "is negative (" + printable_text(value.dump()) + ")");
   return x;
 }
 
-template <typename Json>
-double BasicJsonReader<Json>::time(const json& value, const std::string& path) const {
+double JsonReader::time(const json& value, const std::string& path) const {
   const double t = number(value, path);
   if (!(t > 0)) fail(path, "is not a positive time (" + printable_text(value.dump()) + ")");
   return t;
 }
 
-template <typename Json>
-double BasicJsonReader<Json>::time(const json& object, const std::string& parent, std::string_view key) const {
+double JsonReader::time(const json& object, const std::string& parent, std::string_view key) const {
   return time(member(object, parent, key), child(parent, key));
 }
 
-template <typename Json>
-std::vector<double> BasicJsonReader<Json>::times(const json& object, const std::string& parent,
-                                                 std::string_view key) const {
+std::vector<double> JsonReader::times(const json& object, const std::string& parent, std::string_view key) const {
   const std::string path = child(parent, key);
   const json& a = member(object, parent, key);
   if (!a.is_array() || a.empty()) fail(path, "is not a non-empty array");
@@ -157,9 +139,7 @@ std::vector<double> BasicJsonReader<Json>::times(const json& object, const std::
   return out;
 }
 
-template <typename Json>
-std::vector<double> BasicJsonReader<Json>::numbers(const json& object, const std::string& parent,
-                                                   std::string_view key) const {
+std::vector<double> JsonReader::numbers(const json& object, const std::string& parent, std::string_view key) const {
   const std::string path = child(parent, key);
   const json& a = array(object, parent, key);
   std::vector<double> out;
@@ -167,9 +147,8 @@ std::vector<double> BasicJsonReader<Json>::numbers(const json& object, const std
   return out;
 }
 
-template <typename Json>
-std::vector<std::pair<std::string, std::string>> BasicJsonReader<Json>::string_map(const json& value,
-                                                                                   const std::string& path) const {
+std::vector<std::pair<std::string, std::string>> JsonReader::string_map(const json& value,
+                                                                        const std::string& path) const {
   if (!value.is_object()) wrong_type(value, path, "an object");
   std::vector<std::pair<std::string, std::string>> out;
   for (auto it = value.begin(); it != value.end(); ++it) {
@@ -179,64 +158,56 @@ std::vector<std::pair<std::string, std::string>> BasicJsonReader<Json>::string_m
   return out;
 }
 
-template <typename Json>
-std::optional<std::string> BasicJsonReader<Json>::optional_string(const json& object, const std::string& parent,
-                                                                  std::string_view key) const {
+std::optional<std::string> JsonReader::optional_string(const json& object, const std::string& parent,
+                                                       std::string_view key) const {
   const auto it = object.find(std::string(key));
   if (it == object.end() || it->is_null()) return std::nullopt;
   return string(object, parent, key);
 }
 
-template <typename Json>
-std::optional<double> BasicJsonReader<Json>::optional_number(const json& object, const std::string& parent,
-                                                             std::string_view key) const {
+std::optional<double> JsonReader::optional_number(const json& object, const std::string& parent,
+                                                  std::string_view key) const {
   const auto it = object.find(std::string(key));
   if (it == object.end() || it->is_null()) return std::nullopt;
   return number(*it, child(parent, key));
 }
 
-template <typename Json>
-std::optional<uint64_t> BasicJsonReader<Json>::optional_uint64(const json& object, const std::string& parent,
-                                                               std::string_view key) const {
+std::optional<uint64_t> JsonReader::optional_uint64(const json& object, const std::string& parent,
+                                                    std::string_view key) const {
   const auto it = object.find(std::string(key));
   if (it == object.end() || it->is_null()) return std::nullopt;
   return uint64(*it, child(parent, key));
 }
 
-template <typename Json>
-const Json* BasicJsonReader<Json>::optional_object(const json& object, const std::string& parent,
-                                                   std::string_view key) const {
+const nlohmann::ordered_json* JsonReader::optional_object(const json& object, const std::string& parent,
+                                                          std::string_view key) const {
   const auto it = object.find(std::string(key));
   if (it == object.end() || it->is_null()) return nullptr;
   return &this->object(object, parent, key);
 }
 
-template <typename Json>
-bool BasicJsonReader<Json>::flag(const json& object, const std::string& parent, std::string_view key,
-                                 bool fallback) const {
+bool JsonReader::flag(const json& object, const std::string& parent, std::string_view key, bool fallback) const {
   const auto it = object.find(std::string(key));
   if (it == object.end()) return fallback;
   return boolean(object, parent, key);
 }
 
-template <typename Json>
-const Json& BasicJsonReader<Json>::array(const json& object, const std::string& parent, std::string_view key) const {
+const nlohmann::ordered_json& JsonReader::array(const json& object, const std::string& parent,
+                                                std::string_view key) const {
   const json& value = member(object, parent, key);
   if (!value.is_array()) wrong_type(value, child(parent, key), "an array");
   return value;
 }
 
-template <typename Json>
-const Json& BasicJsonReader<Json>::nonempty_array(const json& object, const std::string& parent,
-                                                  std::string_view key) const {
+const nlohmann::ordered_json& JsonReader::nonempty_array(const json& object, const std::string& parent,
+                                                         std::string_view key) const {
   const json& value = array(object, parent, key);
   if (value.empty()) fail(child(parent, key), "is empty");
   return value;
 }
 
-template <typename Json>
-const Json& BasicJsonReader<Json>::array(const json& object, const std::string& parent, std::string_view key,
-                                        std::size_t count) const {
+const nlohmann::ordered_json& JsonReader::array(const json& object, const std::string& parent, std::string_view key,
+                                                std::size_t count) const {
   const std::string path = child(parent, key);
   const json& value = member(object, parent, key);
   const std::string expected = "an array of " + std::to_string(count) + " numbers";
@@ -246,9 +217,8 @@ const Json& BasicJsonReader<Json>::array(const json& object, const std::string& 
   return value;
 }
 
-template <typename Json>
-void BasicJsonReader<Json>::only_keys(const json& object, const std::string& parent,
-                                      std::initializer_list<std::string_view> known) const {
+void JsonReader::only_keys(const json& object, const std::string& parent,
+                           std::initializer_list<std::string_view> known) const {
   for (auto it = object.begin(); it != object.end(); ++it) {
     if (std::find(known.begin(), known.end(), std::string_view(it.key())) != known.end()) continue;
     std::string names;
@@ -256,8 +226,5 @@ void BasicJsonReader<Json>::only_keys(const json& object, const std::string& par
     fail(child(parent, printable_text(it.key(), 80)), "is not a known key (known: " + names + ")");
   }
 }
-
-template class BasicJsonReader<nlohmann::json>;
-template class BasicJsonReader<nlohmann::ordered_json>;
 
 }  // namespace vsgl

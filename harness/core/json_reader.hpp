@@ -28,13 +28,11 @@ nlohmann::ordered_json parse_json_text(std::string_view text, const std::string&
 // the sidecar's) or JSON pointers (`/generators/fis_tok15/total`, the runs').
 enum class JsonPathStyle { kDottedKey, kPointer };
 
-// For nlohmann::json and nlohmann::ordered_json alike (explicitly instantiated for both), so a
-// document is read in the type it was parsed into, never copied into the other.
-template <typename Json>
-class BasicJsonReader {
+// Every document is an nlohmann::ordered_json (the one flavour: a file's keys keep their order).
+class JsonReader {
  public:
-  using json = Json;
-  BasicJsonReader(std::string where, JsonPathStyle style) : where_(std::move(where)), style_(style) {}
+  using json = nlohmann::ordered_json;
+  JsonReader(std::string where, JsonPathStyle style) : where_(std::move(where)), style_(style) {}
 
   const std::string& where() const { return where_; }
   std::string child(const std::string& parent, std::string_view key) const;
@@ -93,10 +91,5 @@ class BasicJsonReader {
   std::string where_;
   JsonPathStyle style_;
 };
-
-extern template class BasicJsonReader<nlohmann::json>;
-extern template class BasicJsonReader<nlohmann::ordered_json>;
-using JsonReader = BasicJsonReader<nlohmann::json>;
-using OrderedJsonReader = BasicJsonReader<nlohmann::ordered_json>;
 
 }  // namespace vsgl

@@ -9,7 +9,7 @@
 namespace vsgl {
 namespace {
 
-using json = nlohmann::json;
+using json = nlohmann::ordered_json;
 
 const std::set<std::string> kKnownKeywords = {
     "$schema", "$id", "$defs", "$ref", "title", "description", "type", "properties", "required",
@@ -194,13 +194,14 @@ std::string problem_lines(const std::vector<std::string>& problems) {
 
 }  // namespace
 
-std::vector<std::string> schema_subset_problems(const nlohmann::json& schema) {
+std::vector<std::string> schema_subset_problems(const nlohmann::ordered_json& schema) {
   SchemaWalker w(schema);
   w.walk(schema, "", true);
   return w.problems;
 }
 
-std::vector<std::string> validate_against_schema(const nlohmann::json& doc, const nlohmann::json& schema) {
+std::vector<std::string> validate_against_schema(const nlohmann::ordered_json& doc,
+                                                 const nlohmann::ordered_json& schema) {
   if (const auto problems = schema_subset_problems(schema); !problems.empty())
     throw std::invalid_argument("the schema asks for what the validator cannot check:" + problem_lines(problems));
   Validator v(schema);
@@ -208,9 +209,9 @@ std::vector<std::string> validate_against_schema(const nlohmann::json& doc, cons
   return v.errors;
 }
 
-void require_conforming(const nlohmann::ordered_json& doc, const nlohmann::json& schema, const std::string& what,
-                        const std::string& schema_name) {
-  const auto problems = validate_against_schema(nlohmann::json::parse(doc.dump()), schema);
+void require_conforming(const nlohmann::ordered_json& doc, const nlohmann::ordered_json& schema,
+                        const std::string& what, const std::string& schema_name) {
+  const auto problems = validate_against_schema(doc, schema);
   if (!problems.empty())
     throw std::logic_error(what + " does not conform to " + schema_name + ":" + problem_lines(problems));
 }

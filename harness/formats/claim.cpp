@@ -74,14 +74,13 @@ ojson table_json(const Claim& c) {
                {"informative_only", c.informative}};
 }
 
-template <typename Json>
-Claim read_table(const BasicJsonReader<Json>& r, const Json& c, const std::string& p) {
+Claim read_table(const JsonReader& r, const ojson& c, const std::string& p) {
   if (!c.is_object()) r.wrong_type(c, p, "an object");
   Claim claim;
   claim.id = r.string(c, p, "id");
   claim.text = r.string(c, p, "claim");
   claim.criterion = r.string(c, p, "criterion");
-  claim.measured = ojson(r.object(c, p, "measured"));
+  claim.measured = r.object(c, p, "measured");
   const std::optional<bool> holds =
       r.member(c, p, "holds").is_null() ? std::nullopt : std::optional<bool>(r.boolean(c, p, "holds"));
   set_verdict(claim, holds, r.string(c, p, "note"));
@@ -119,15 +118,14 @@ ojson quality_json(const Claim& c) {
   return o;
 }
 
-template <typename Json>
-Claim read_quality(const BasicJsonReader<Json>& r, const Json& c, const std::string& p) {
+Claim read_quality(const JsonReader& r, const ojson& c, const std::string& p) {
   if (!c.is_object()) r.wrong_type(c, p, "an object");
   Claim claim;
   claim.text = r.string(c, p, "claim");
   claim.source = r.string(c, p, "source");
   claim.criterion = r.string(c, p, "measure");
   for (const auto& [key, value] : c.items())
-    if (!is_quality_key(key)) claim.measured[key] = ojson(value);
+    if (!is_quality_key(key)) claim.measured[key] = value;
   const std::string verdict = r.string(c, p, "verdict");
   if (verdict.empty()) r.fail(r.child(p, "verdict"), "is empty");
   if (starts_with(verdict, kNotMeasuredPrefix)) {
@@ -162,12 +160,7 @@ nlohmann::ordered_json to_json(const Claim& claim, ClaimLayout layout) {
   return layout == ClaimLayout::kTable ? table_json(claim) : quality_json(claim);
 }
 
-Claim claim_from_json(const OrderedJsonReader& reader, const nlohmann::ordered_json& value, const std::string& path,
-                      ClaimLayout layout) {
-  return layout == ClaimLayout::kTable ? read_table(reader, value, path) : read_quality(reader, value, path);
-}
-
-Claim claim_from_json(const JsonReader& reader, const nlohmann::json& value, const std::string& path,
+Claim claim_from_json(const JsonReader& reader, const nlohmann::ordered_json& value, const std::string& path,
                       ClaimLayout layout) {
   return layout == ClaimLayout::kTable ? read_table(reader, value, path) : read_quality(reader, value, path);
 }

@@ -10,10 +10,7 @@
 
 namespace vsgl {
 
-template <typename Json>
-class BasicJsonReader;  // core/json_reader.hpp
-using JsonReader = BasicJsonReader<nlohmann::json>;
-using OrderedJsonReader = BasicJsonReader<nlohmann::ordered_json>;
+class JsonReader;  // core/json_reader.hpp
 
 // How the table and sweep documents word an inconclusive verdict's reason: this note, or one that
 // starts with the prefix and says why (e.g. too few rounds). Their "holds" is null both for an
@@ -74,11 +71,9 @@ enum class ClaimLayout {
 // a held or refuted quality claim with a reason, or an inconclusive reason the layout would read
 // as something else.
 nlohmann::ordered_json to_json(const Claim& claim, ClaimLayout layout);
-// `value` is what to_json writes, at `path`, in an ordered document (the table's) or a sorted one
-// (the quality document's). Throws InputError naming the pointer of a missing or mistyped field.
-Claim claim_from_json(const OrderedJsonReader& reader, const nlohmann::ordered_json& value, const std::string& path,
-                      ClaimLayout layout);
-Claim claim_from_json(const JsonReader& reader, const nlohmann::json& value, const std::string& path,
+// `value` is what to_json writes, at `path`. Throws InputError naming the pointer of a missing or
+// mistyped field.
+Claim claim_from_json(const JsonReader& reader, const nlohmann::ordered_json& value, const std::string& path,
                       ClaimLayout layout);
 
 }  // namespace vsgl

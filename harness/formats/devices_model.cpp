@@ -9,11 +9,12 @@
 #include "harness/core/embedded_files.hpp"
 #include "harness/core/json_reader.hpp"
 #include "harness/core/json_schema_subset.hpp"
+#include "harness/core/sorted_json.hpp"
 
 namespace vsgl {
 namespace {
 
-using json = nlohmann::json;
+using json = nlohmann::ordered_json;
 
 // ---- writing ----
 
@@ -42,32 +43,7 @@ SupportVerdict read_verdict(const JsonReader& r, const json& v, const std::strin
 
 }  // namespace
 
-nlohmann::json to_json(const DeviceRecord& d) {
-  json out{{"index", d.index},
-           {"name", d.name},
-           {"type", d.type},
-           {"vendor_id", d.vendor_id},
-           {"device_id", d.device_id},
-           {"api_version", d.api_version},
-           {"driver_version", d.driver_version},
-           {"driver_name", d.driver_name},
-           {"driver_info", d.driver_info},
-           {"queue_family", d.queue_family},
-           {"graphics", d.graphics},
-           {"timestamps", d.timestamps},
-           {"timestamp_valid_bits", d.timestamp_valid_bits},
-           {"timestamp_period_ns", d.timestamp_period_ns},
-           {"pipeline_statistics", d.pipeline_statistics},
-           {"subgroup_size", d.subgroup_size},
-           {"max_compute_shared_memory", d.max_compute_shared_memory},
-           {"device_local_bytes", d.device_local_bytes},
-           {"usable", d.usable},
-           {"unusable_reason", d.unusable_reason}};
-  if (d.limits) out["limits"] = to_json(*d.limits);
-  return out;
-}
-
-nlohmann::json to_json(const DeviceSupport& s) {
+nlohmann::ordered_json to_json(const DeviceSupport& s) {
   json generators = json::object();
   for (const auto& [name, g] : s.generators) {
     json j = verdict_json(g.verdict);
@@ -82,52 +58,17 @@ nlohmann::json to_json(const DeviceSupport& s) {
   return json{{"generators", generators}, {"mipmapping", mipmapping}};
 }
 
-nlohmann::json to_json(const DevicesDocument& doc) {
+nlohmann::ordered_json to_json(const DevicesDocument& doc) {
   json devices = json::array();
   for (const DeviceEntry& e : doc.devices) {
     json d = to_json(e.device);
     if (e.support) d["support"] = to_json(*e.support);
     devices.push_back(std::move(d));
   }
-  return json{{"default", doc.default_index}, {"devices", devices}};
+  return sorted_keys(json{{"default", doc.default_index}, {"devices", devices}});
 }
 
-DeviceRecord device_from_json(const nlohmann::json& d, const std::string& where, const std::string& p) {
-  const JsonReader r(where, JsonPathStyle::kPointer);
-  if (!d.is_object()) r.wrong_type(d, p, "an object");
-  // clang-format off
-  r.only_keys(d, p,
-              {"index", "name", "type", "vendor_id", "device_id", "api_version", "driver_version", "driver_name",
-               "driver_info", "queue_family", "graphics", "timestamps", "timestamp_valid_bits",
-               "timestamp_period_ns", "pipeline_statistics", "subgroup_size", "max_compute_shared_memory",
-               "device_local_bytes", "limits", "usable", "unusable_reason"});
-  // clang-format on
-  DeviceRecord out;
-  out.index = r.uint32(d, p, "index");
-  out.name = r.string(d, p, "name");
-  out.type = r.string(d, p, "type");
-  out.vendor_id = r.uint32(d, p, "vendor_id");
-  out.device_id = r.uint32(d, p, "device_id");
-  out.api_version = r.string(d, p, "api_version");
-  out.driver_version = r.string(d, p, "driver_version");
-  out.driver_name = r.string(d, p, "driver_name");
-  out.driver_info = r.string(d, p, "driver_info");
-  out.queue_family = index_or_none(r, d, p, "queue_family");
-  out.graphics = r.boolean(d, p, "graphics");
-  out.timestamps = r.boolean(d, p, "timestamps");
-  out.timestamp_valid_bits = r.uint32(d, p, "timestamp_valid_bits");
-  out.timestamp_period_ns = r.number(d, p, "timestamp_period_ns");
-  out.pipeline_statistics = r.boolean(d, p, "pipeline_statistics");
-  out.subgroup_size = r.uint32(d, p, "subgroup_size");
-  out.max_compute_shared_memory = r.uint32(d, p, "max_compute_shared_memory");
-  out.device_local_bytes = r.uint64(d, p, "device_local_bytes");
-  if (d.contains("limits")) out.limits = device_limits_from_json(r, r.object(d, p, "limits"), r.child(p, "limits"));
-  out.usable = r.boolean(d, p, "usable");
-  out.unusable_reason = r.string(d, p, "unusable_reason");
-  return out;
-}
-
-DeviceSupport support_from_json(const nlohmann::json& s, const std::string& where, const std::string& p) {
+DeviceSupport support_from_json(const nlohmann::ordered_json& s, const std::string& where, const std::string& p) {
   const JsonReader r(where, JsonPathStyle::kPointer);
   if (!s.is_object()) r.wrong_type(s, p, "an object");
   r.only_keys(s, p, {"generators", "mipmapping"});
@@ -153,7 +94,7 @@ DeviceSupport support_from_json(const nlohmann::json& s, const std::string& wher
   return out;
 }
 
-DevicesDocument devices_from_json(const nlohmann::json& doc, const std::string& where) {
+DevicesDocument devices_from_json(const nlohmann::ordered_json& doc, const std::string& where) {
   const JsonReader r(where, JsonPathStyle::kPointer);
   if (!doc.is_object()) r.wrong_type(doc, "", "an object");
   r.only_keys(doc, "", {"default", "devices"});
@@ -169,9 +110,9 @@ DevicesDocument devices_from_json(const nlohmann::json& doc, const std::string& 
       e.support = support_from_json(d.at("support"), where, r.child(p, "support"));
       json rest = d;
       rest.erase("support");
-      e.device = device_from_json(rest, where, p);
+      e.device = device_record_from_json(r, rest, p);
     } else {
-      e.device = device_from_json(d, where, p);
+      e.device = device_record_from_json(r, d, p);
     }
     out.devices.push_back(std::move(e));
   }
@@ -179,13 +120,13 @@ DevicesDocument devices_from_json(const nlohmann::json& doc, const std::string& 
 }
 
 DevicesDocument read_devices_file(const std::filesystem::path& path) {
-  return devices_from_json(json(read_json_file(path, "the devices document")), path_text(path));
+  return devices_from_json(read_json_file(path, "the devices document"), path_text(path));
 }
 
 std::string devices_file_text(const DevicesDocument& doc) {
   const json out = to_json(doc);
-  require_conforming(nlohmann::ordered_json(out), json(embedded_json(kDevicesSchemaFile, "the devices schema")),
-                     "the devices document", embedded_file_label(kDevicesSchemaFile));
+  require_conforming(out, embedded_json(kDevicesSchemaFile, "the devices schema"), "the devices document",
+                     embedded_file_label(kDevicesSchemaFile));
   return out.dump(2) + "\n";
 }
 

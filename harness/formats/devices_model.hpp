@@ -1,13 +1,10 @@
 #pragma once
 // The devices document (`vsgl-bench devices --json`, results/schema/devices.schema.json, DESIGN.md
-// §10) as one typed model, and the device object every other document carries as it is written
-// there (the verify document's `device`; a table's and a sweep's, passed on whole).
-//
-// The device object is written by the vk layer (vk/device_info.hpp, to_json) and the support by
-// the generators layer (generators/device_support.hpp), neither of which sees this layer: a
-// command reads them into the model with device_from_json and support_from_json, and the model
-// writes the file. Files written before the limits and the support existed have neither; they are
+// §10) as one typed model: each device as every document records it (formats/run_header.hpp,
+// built by the vk layer's device_record) with what runs on it (built by the generators layer's
+// device_support). Files written before the limits and the support existed have neither; they are
 // absent in the model then and not written back, so every committed file round-trips unchanged.
+// The document's keys are sorted, as they always were (core/sorted_json.hpp).
 #include <cstdint>
 #include <filesystem>
 #include <map>
@@ -15,38 +12,13 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json_fwd.hpp>
+#include <nlohmann/json.hpp>
 
-#include "harness/core/device_limits.hpp"
+#include "harness/formats/run_header.hpp"
 
 namespace vsgl {
 
 inline constexpr const char* kDevicesSchemaFile = "results/schema/devices.schema.json";
-
-// One physical device as a run saw it.
-struct DeviceRecord {
-  uint32_t index = 0;
-  std::string name;
-  std::string type;  // "discrete", "integrated", "virtual", "cpu", "other"
-  uint32_t vendor_id = 0;
-  uint32_t device_id = 0;
-  std::string api_version;     // "1.3.230"
-  std::string driver_version;  // as the vendor numbers it
-  std::string driver_name;
-  std::string driver_info;
-  int64_t queue_family = -1;  // the compute family chosen; -1: none
-  bool graphics = false;
-  bool timestamps = false;
-  uint32_t timestamp_valid_bits = 0;
-  double timestamp_period_ns = 0;
-  bool pipeline_statistics = false;
-  uint32_t subgroup_size = 0;
-  uint32_t max_compute_shared_memory = 0;
-  uint64_t device_local_bytes = 0;
-  std::optional<DeviceLimits> limits;  // absent in older files
-  bool usable = false;
-  std::string unusable_reason;  // empty when usable
-};
 
 // Whether something runs on the device, and why not.
 struct SupportVerdict {
@@ -79,15 +51,14 @@ struct DevicesDocument {
   std::vector<DeviceEntry> devices;
 };
 
-nlohmann::json to_json(const DeviceRecord& device);
-nlohmann::json to_json(const DeviceSupport& support);
-nlohmann::json to_json(const DevicesDocument& doc);
+nlohmann::ordered_json to_json(const DeviceSupport& support);
+nlohmann::ordered_json to_json(const DevicesDocument& doc);
 
 // Readers: every failure an InputError "<where>: <JSON pointer>: <problem>"; `pointer` is where
-// the object sits in its document ("" for a document, "/device" in the verify one).
-DeviceRecord device_from_json(const nlohmann::json& device, const std::string& where, const std::string& pointer);
-DeviceSupport support_from_json(const nlohmann::json& support, const std::string& where, const std::string& pointer);
-DevicesDocument devices_from_json(const nlohmann::json& doc, const std::string& where);
+// the object sits in its document ("" for a document).
+DeviceSupport support_from_json(const nlohmann::ordered_json& support, const std::string& where,
+                                const std::string& pointer);
+DevicesDocument devices_from_json(const nlohmann::ordered_json& doc, const std::string& where);
 DevicesDocument read_devices_file(const std::filesystem::path& path);
 
 // The file's text as `devices --json` prints it (2-space indent, a final newline), once the

@@ -3,12 +3,13 @@
 #include <algorithm>
 
 #include "harness/core/json_reader.hpp"
+#include "harness/core/sorted_json.hpp"
 #include "harness/core/statistics.hpp"
 
 namespace vsgl {
 namespace {
 
-using nlohmann::json;
+using json = nlohmann::ordered_json;
 
 CoverageCountsSummary read_counts(const JsonReader& r, const json& o, const std::string& p) {
   return {r.number(o, p, "gap"), r.number(o, p, "surplus"), r.number(o, p, "count_error"), r.number(o, p, "mean_count"),
@@ -333,10 +334,6 @@ json k_sweep_json(const std::vector<std::pair<std::string, std::vector<KSweepRow
 }  // namespace
 
 void to_json(json& j, const QualityModel& m) {
-  json build = m.build;
-  build["vsgl_bench_version"] = m.version;
-  build["git_commit"] = m.git_commit;
-  build["git_dirty"] = m.git_dirty;
   json config = m.config_rest;
   config["generators"] = m.generators;
   config["light_vsgls"] = m.light_vsgls;
@@ -350,7 +347,7 @@ void to_json(json& j, const QualityModel& m) {
       {"capture",
        json{{"path", m.capture_path}, {"gbuffer", m.gbuffer_size}, {"rsm", m.rsm_size}, {"hashes", m.capture_hashes}}},
       {"device", json{{"name", m.device_name}, {"driver", m.device_driver}}},
-      {"build", build},
+      {"build", to_json(m.build)},
       {"config", config},
       {"views", json::object()},
       {"reference", json{{"rsm_stride", m.reference_rsm_stride},
@@ -383,12 +380,13 @@ void to_json(json& j, const QualityModel& m) {
   if (m.frames_animated) j["frames_animated"] = frame_errors_json(*m.frames_animated);
   if (m.claims) {
     json claims = json::array();
-    for (const Claim& c : *m.claims) claims.push_back(json(to_json(c, ClaimLayout::kQuality)));
+    for (const Claim& c : *m.claims) claims.push_back(to_json(c, ClaimLayout::kQuality));
     j["claims"] = claims;
   }
   json timings = json::object();
   for (const auto& [k, v] : m.timings_s) timings[k] = v;
   j["timings_s"] = timings;
+  j = sorted_keys(j);  // as the document was always written
 }
 
 namespace {
@@ -406,11 +404,7 @@ void read_header(const JsonReader& r, const json& doc, QualityModel& m) {
   const json& device = r.object(doc, "", "device");
   m.device_name = r.string(device, "/device", "name");
   m.device_driver = r.string(device, "/device", "driver");
-  const json& build = r.object(doc, "", "build");
-  m.build = build;
-  m.version = r.string(build, "/build", "vsgl_bench_version");
-  m.git_commit = r.string(build, "/build", "git_commit");
-  m.git_dirty = r.boolean(build, "/build", "git_dirty");
+  m.build = build_record_from_json(r, r.member(doc, "", "build"), "/build");
   const json& config = r.object(doc, "", "config");
   const json& gens = r.member(config, "/config", "generators");
   if (!gens.is_array()) r.wrong_type(gens, "/config/generators", "an array");

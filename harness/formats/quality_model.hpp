@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "harness/formats/claim.hpp"
+#include "harness/formats/run_header.hpp"
 
 namespace vsgl {
 
@@ -82,7 +83,7 @@ struct PdfFrequencySummary {
 };
 
 struct ViewQuality {
-  nlohmann::json vsgls;  // N, printed as written
+  nlohmann::ordered_json vsgls;  // N, printed as written
   double total_flux = 0;
   std::optional<PdfFrequencySummary> pdf_frequency;
   std::optional<FluxByPdfSummary> flux_by_pdf;  // schema 4
@@ -111,7 +112,7 @@ using FrameSeries = std::map<std::string, std::vector<double>>;
 // the animated sequence's.
 struct FrameErrors {
   uint32_t gbuffer_stride = 0;
-  nlohmann::json image;   // [w, h]
+  nlohmann::ordered_json image;  // [w, h]
   std::string reference;  // what each frame is compared with
   double flip_exposure = 0, flip_pixels_per_degree = 0;
   std::map<std::string, FrameSeries> generators;
@@ -154,36 +155,34 @@ struct ReferenceDetail {
 
 struct QualityModel {
   std::string schema = "vsgl-quality";
-  nlohmann::json schema_version;
+  nlohmann::ordered_json schema_version;
   std::string scene;
   std::string capture_path;
-  nlohmann::json gbuffer_size, rsm_size;  // [w, h] and [side, side]
-  nlohmann::json capture_hashes;          // provenance, raw
+  nlohmann::ordered_json gbuffer_size, rsm_size;  // [w, h] and [side, side]
+  nlohmann::ordered_json capture_hashes;          // provenance, raw
   std::string device_name, device_driver;
-  // The build's provenance, raw (build_json); to_json writes the three typed fields over it.
-  nlohmann::json build = nlohmann::json::object();
-  std::string version, git_commit;
-  bool git_dirty = false;
+  BuildRecord build;  // the header every document shares (formats/run_header.hpp)
   std::vector<std::string> generators;
-  nlohmann::json light_vsgls, camera_vsgls, K, frames;  // printed as written
+  nlohmann::ordered_json light_vsgls, camera_vsgls, K, frames;  // printed as written
   // The rest of "config" (iterations, strides, the sweep's K, definitions), raw; to_json writes
   // the typed configuration fields over it.
-  nlohmann::json config_rest = nlohmann::json::object();
+  nlohmann::ordered_json config_rest = nlohmann::ordered_json::object();
   std::map<std::string, ViewQuality> views;  // "camera_view", "light_view"
-  nlohmann::json reference_vpls, reference_rsm_side, reference_rsm_stride, reference_image;  // printed as written
+  nlohmann::ordered_json reference_vpls, reference_rsm_side, reference_rsm_stride,
+      reference_image;  // printed as written
   // Which capture's RSM the reference's VPLs come from (schema 5, optional): {capture, path, rsm,
   // rsm_hashes}; null in documents written before it.
-  nlohmann::json reference_vpl_source;
+  nlohmann::ordered_json reference_vpl_source;
   double reference_power_ratio = 0;
   std::string reference_method;
   std::map<std::string, ImageErrorSummary> reference_error;
   std::optional<ReferenceDetail> reference_detail;                   // schema 4
   std::map<std::string, ImageErrorSummary> reference_error_support;  // schema 4: against the PDF-support reference
-  nlohmann::json flicker_image;
+  nlohmann::ordered_json flicker_image;
   uint32_t flicker_gbuffer_stride = 0;
   std::map<std::string, StaticFlicker> flicker_static;
   struct Animated {
-    nlohmann::json frames;
+    nlohmann::ordered_json frames;
     std::string sequence, note, scene;
     std::vector<std::string> frame_content_hashes;
     uint32_t gbuffer_stride = 0, reference_rsm_stride = 0;
@@ -201,10 +200,10 @@ struct QualityModel {
 };
 
 // Throws InputError ("<what>: <pointer>: <problem>").
-QualityModel quality_model_from_json(const nlohmann::json& doc, const std::string& what);
+QualityModel quality_model_from_json(const nlohmann::ordered_json& doc, const std::string& what);
 
 // The document of `m`: quality_model_from_json(to_json(m)) == m, field for field, and for a
 // document the writer wrote, to_json(quality_model_from_json(doc)) == doc.
-void to_json(nlohmann::json& j, const QualityModel& m);
+void to_json(nlohmann::ordered_json& j, const QualityModel& m);
 
 }  // namespace vsgl

@@ -54,7 +54,7 @@ nlohmann::ordered_json to_json(const SceneIdentity& s) {
 }
 
 SceneIdentity scene_identity_from_json(const nlohmann::ordered_json& o, const std::string& what, const std::string& p) {
-  const OrderedJsonReader r(what, JsonPathStyle::kPointer);
+  const JsonReader r(what, JsonPathStyle::kPointer);
   if (!o.is_object()) r.wrong_type(o, p, "an object");
   r.only_keys(o, p, {"name", "kind", "preset", "model_file", "content_hash", "triangles"});
   SceneIdentity s;

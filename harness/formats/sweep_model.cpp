@@ -18,7 +18,7 @@ namespace {
 using ojson = nlohmann::ordered_json;
 
 // Field access that names the file and the JSON pointer of whatever is missing or mistyped.
-using Reader = OrderedJsonReader;  // core/json_reader.hpp, with JSON pointers
+using Reader = JsonReader;  // core/json_reader.hpp, with JSON pointers
 
 // A count or an index into the document (size_t; the reader's non-negative integer).
 std::size_t index(const Reader& r, const ojson& v, const std::string& pointer) {
@@ -496,19 +496,6 @@ const SweepCase* SweepPoint::find(const std::string& generator, const std::strin
   return nullptr;
 }
 
-std::string SweepModel::device_name() const { return device.at("name").get<std::string>(); }
-
-std::optional<std::string> SweepModel::git_commit() const {
-  if (!build.contains("git_commit")) return std::nullopt;
-  return build.at("git_commit").get<std::string>();
-}
-
-bool SweepModel::git_dirty() const { return build.contains("git_dirty") && build.at("git_dirty").get<bool>(); }
-
-std::string SweepModel::started_utc() const { return run.at("started_utc").get<std::string>(); }
-
-bool SweepModel::quick() const { return run.at("quick").get<bool>(); }
-
 std::size_t SweepModel::planned_points() const {
   std::size_t n = axes.empty() ? 0 : 1;
   for (const SweepAxisModel& a : axes) n *= a.values.size();
@@ -546,14 +533,9 @@ SweepModel read_sweep_model(const nlohmann::ordered_json& doc, const std::string
   if (const std::string unit = r.string(doc, "", "unit"); unit != "ms")
     r.fail("/unit", "is " + quoted_text(unit) + ", not \"ms\"");
 
-  m.device = r.object(doc, "", "device");
-  (void)r.string(m.device, "/device", "name");
-  m.build = r.object(doc, "", "build");
-  (void)r.optional_string(m.build, "/build", "git_commit");
-  if (m.build.contains("git_dirty")) (void)r.boolean(m.build, "/build", "git_dirty");
-  m.run = r.object(doc, "", "run");
-  (void)r.string(m.run, "/run", "started_utc");
-  (void)r.boolean(m.run, "/run", "quick");
+  m.device = device_record_from_json(r, r.member(doc, "", "device"), "/device");
+  m.build = build_record_from_json(r, r.member(doc, "", "build"), "/build");
+  m.run = run_record_from_json(r, r.member(doc, "", "run"), "/run");
   m.scene = scene_identity_from_json(r.object(doc, "", "scene"), what, "/scene");
 
   const ojson& generators = r.nonempty_array(doc, "", "generators");
@@ -608,9 +590,9 @@ ojson to_json(const SweepModel& m) {
   ojson doc{{"schema_version", m.schema_version}, {"kind", "sweep"}};
   if (m.complete_stated) doc["complete"] = m.complete;
   doc["unit"] = "ms";
-  doc["device"] = m.device;
-  doc["build"] = m.build;
-  doc["run"] = m.run;
+  doc["device"] = to_json(m.device);
+  doc["build"] = to_json(m.build);
+  doc["run"] = to_json(m.run);
   doc["scene"] = to_json(m.scene);
   doc["generators"] = m.generators;
   ojson axes = ojson::array();

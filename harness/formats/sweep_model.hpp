@@ -19,6 +19,7 @@
 #include <nlohmann/json.hpp>
 
 #include "harness/formats/claim.hpp"
+#include "harness/formats/run_header.hpp"
 #include "harness/formats/scene_identity.hpp"
 #include "harness/formats/timing_statistics.hpp"
 
@@ -208,9 +209,10 @@ struct SweepModel {
   // over them, no claims. A complete sweep has at least 2 points.
   bool complete = true;
   bool complete_stated = true;  // whether the file says so (to_json writes the key only then)
-  nlohmann::ordered_json device = nlohmann::ordered_json::object();  // has "name"
-  nlohmann::ordered_json build = nlohmann::ordered_json::object();
-  nlohmann::ordered_json run = nlohmann::ordered_json::object();  // has "started_utc" and "quick"
+  // The header every document shares (formats/run_header.hpp).
+  DeviceRecord device;
+  BuildRecord build;
+  RunRecord run;
   SceneIdentity scene;
   std::vector<std::string> generators;
   std::vector<SweepAxisModel> axes;
@@ -222,13 +224,6 @@ struct SweepModel {
   std::vector<SweepBeyondDevice> beyond_device;
   std::vector<SweepFitModel> fits;
   std::optional<std::vector<SweepClaim>> claims;  // none: the file has no "claims"
-
-  // Read off the objects kept whole (the reader checked they are there).
-  std::string device_name() const;
-  std::optional<std::string> git_commit() const;
-  bool git_dirty() const;
-  std::string started_utc() const;
-  bool quick() const;
 
   // The points of the axes' product, and those the run reached: timed, or wholly beyond the device.
   std::size_t planned_points() const;

@@ -154,12 +154,11 @@ namespace {
 
 // ---- reading ----
 
-TimingStatistics read_stats(const OrderedJsonReader& r, const ojson& s, const std::string& p) {
+TimingStatistics read_stats(const JsonReader& r, const ojson& s, const std::string& p) {
   return timing_statistics_from_json(r, s, p, StatisticsLayout::kTable);
 }
 
-GeneratorTiming read_generator(const OrderedJsonReader& r, const std::string& name, const ojson& gj,
-                               const std::string& gp) {
+GeneratorTiming read_generator(const JsonReader& r, const std::string& name, const ojson& gj, const std::string& gp) {
   if (!gj.is_object()) r.wrong_type(gj, gp, "an object");
   GeneratorTiming g;
   g.name = name;
@@ -184,18 +183,18 @@ GeneratorTiming read_generator(const OrderedJsonReader& r, const std::string& na
   return g;
 }
 
-MeasuredVsPaper read_measured_paper(const OrderedJsonReader& r, const ojson& o, const std::string& p) {
+MeasuredVsPaper read_measured_paper(const JsonReader& r, const ojson& o, const std::string& p) {
   if (!o.is_object()) r.wrong_type(o, p, "an object");
   return {r.number(o, p, "measured"), r.optional_number(o, p, "paper")};
 }
 
-KeyedRatios read_keyed(const OrderedJsonReader& r, const ojson& o, const std::string& p) {
+KeyedRatios read_keyed(const JsonReader& r, const ojson& o, const std::string& p) {
   KeyedRatios rows;
   for (const auto& [k, v] : o.items()) rows.emplace_back(k, read_measured_paper(r, v, p + "/" + k));
   return rows;
 }
 
-PairedDifference read_paired(const OrderedJsonReader& r, const ojson& o, const std::string& p) {
+PairedDifference read_paired(const JsonReader& r, const ojson& o, const std::string& p) {
   PairedDifference d;
   d.rounds = r.uint64(o, p, "rounds");
   d.median_us = r.number(o, p, "median_us");
@@ -209,7 +208,7 @@ PairedDifference read_paired(const OrderedJsonReader& r, const ojson& o, const s
   return d;
 }
 
-TableRatios read_ratios(const OrderedJsonReader& r, const ojson& o, const std::string& p) {
+TableRatios read_ratios(const JsonReader& r, const ojson& o, const std::string& p) {
   TableRatios out;
   if (const ojson* m = r.optional_object(o, p, "modified_minus_tok15_us")) out.modified_minus_tok15_us = read_keyed(r, *m, p + "/modified_minus_tok15_us");
   if (const ojson* po = r.optional_object(o, p, "paired_modified_minus_tok15")) {
@@ -232,7 +231,7 @@ TableRatios read_ratios(const OrderedJsonReader& r, const ojson& o, const std::s
   return out;
 }
 
-PassTraffic read_pass(const OrderedJsonReader& r, const ojson& o, const std::string& p) {
+PassTraffic read_pass(const JsonReader& r, const ojson& o, const std::string& p) {
   if (!o.is_object()) r.wrong_type(o, p, "an object");
   PassTraffic t;
   t.min_bytes_read = r.uint64(o, p, "min_bytes_read");
@@ -246,7 +245,7 @@ PassTraffic read_pass(const OrderedJsonReader& r, const ojson& o, const std::str
   return t;
 }
 
-TableBandwidth read_bandwidth(const OrderedJsonReader& r, const ojson& o, const std::string& p) {
+TableBandwidth read_bandwidth(const JsonReader& r, const ojson& o, const std::string& p) {
   TableBandwidth b;
   const ojson& c = r.object(o, p, "copy");
   const std::string cp = p + "/copy";
@@ -273,7 +272,7 @@ TableBandwidth read_bandwidth(const OrderedJsonReader& r, const ojson& o, const 
   return b;
 }
 
-std::vector<Table3Row> read_table3(const OrderedJsonReader& r, const ojson& o, const std::string& p) {
+std::vector<Table3Row> read_table3(const JsonReader& r, const ojson& o, const std::string& p) {
   std::vector<Table3Row> rows;
   for (const auto& [g, v] : o.items()) {
     const std::string gp = p + "/" + g;
@@ -312,7 +311,7 @@ std::vector<Table3Row> read_table3(const OrderedJsonReader& r, const ojson& o, c
   return rows;
 }
 
-std::vector<Claim> read_claims(const OrderedJsonReader& r, const ojson& a) {
+std::vector<Claim> read_claims(const JsonReader& r, const ojson& a) {
   if (!a.is_array()) r.wrong_type(a, "/claims", "an array");
   std::vector<Claim> out;
   for (std::size_t i = 0; i < a.size(); ++i)
@@ -320,7 +319,7 @@ std::vector<Claim> read_claims(const OrderedJsonReader& r, const ojson& a) {
   return out;
 }
 
-CaptureSummary read_capture(const OrderedJsonReader& r, const ojson& c) {
+CaptureSummary read_capture(const JsonReader& r, const ojson& c) {
   CaptureSummary out;
   out.fields = c;
   if (const ojson* h = r.optional_object(c, "/capture", "hashes")) out.hashes = *h;
@@ -351,7 +350,7 @@ SceneIdentity name_only_scene(const std::string& name, const TableModel& m) {
 }
 
 // Schema 3's object; schema 2's plain name.
-std::optional<SceneIdentity> read_scene(const OrderedJsonReader& r, const ojson& doc, const TableModel& m) {
+std::optional<SceneIdentity> read_scene(const JsonReader& r, const ojson& doc, const TableModel& m) {
   const auto it = doc.find("scene");
   if (it == doc.end()) return std::nullopt;
   if (it->is_string()) {
@@ -385,7 +384,7 @@ int TableModel::vsgl_count(const std::string& view) const {
 }
 
 CaptureSummary capture_summary_from_json(const nlohmann::ordered_json& capture, const std::string& what) {
-  const OrderedJsonReader r(what, JsonPathStyle::kPointer);
+  const JsonReader r(what, JsonPathStyle::kPointer);
   if (!capture.is_object()) r.wrong_type(capture, "/capture", "an object");
   return read_capture(r, capture);
 }
@@ -397,13 +396,13 @@ nlohmann::ordered_json to_json(const TableModel& m) {
   if (m.title) doc["title"] = *m.title;
   if (m.scene) doc["scene"] = to_json(*m.scene);
   if (m.unit) doc["unit"] = *m.unit;
-  doc["device"] = m.device.fields;
+  if (m.device) doc["device"] = to_json(*m.device);
   if (m.driver) doc["driver"] = ojson{{"name", m.driver->name}, {"info", m.driver->info}, {"version", m.driver->version}};
   if (m.api_version) doc["api_version"] = *m.api_version;
   if (m.timestamp_period_ns) doc["timestamp_period_ns"] = *m.timestamp_period_ns;
   if (m.timestamp_valid_bits) doc["timestamp_valid_bits"] = *m.timestamp_valid_bits;
-  doc["build"] = m.build.fields;
-  doc["run"] = m.run.fields;
+  if (m.build) doc["build"] = to_json(*m.build);
+  if (m.run) doc["run"] = to_json(*m.run);
   doc["config"] = m.config;
   doc["capture"] = m.capture.fields;
   if (m.paper) doc["paper"] = ojson{{"source", m.paper->source}, {"file", m.paper->file}, {"gpu", m.paper->gpu}};
@@ -432,7 +431,7 @@ nlohmann::ordered_json to_json(const TableModel& m) {
 }
 
 TableModel table_model_from_json(const nlohmann::ordered_json& doc, const std::string& what) {
-  const OrderedJsonReader r(what, JsonPathStyle::kPointer);
+  const JsonReader r(what, JsonPathStyle::kPointer);
   if (!doc.is_object()) r.fail("", "is not a JSON object");
   TableModel m;
   const ojson& version = r.member(doc, "", "schema_version");
@@ -446,41 +445,16 @@ TableModel table_model_from_json(const nlohmann::ordered_json& doc, const std::s
   m.title = r.optional_string(doc, "", "title");
   m.unit = r.optional_string(doc, "", "unit");
 
-  if (const ojson* device = r.optional_object(doc, "", "device")) {
-    m.device.fields = *device;
-    m.device.name = r.optional_string(*device, "/device", "name");
-    m.device.type = device->contains("type") && (*device)["type"].is_string() ? (*device)["type"].get<std::string>() : "";
-  } else {
-    m.device.fields = nullptr;
-  }
+  if (const ojson* device = r.optional_object(doc, "", "device"))
+    m.device = device_record_from_json(r, *device, "/device");
   if (const ojson* d = r.optional_object(doc, "", "driver"))
     m.driver = DriverSummary{r.string(*d, "/driver", "name"), r.string(*d, "/driver", "info"), r.string(*d, "/driver", "version")};
   m.api_version = r.optional_string(doc, "", "api_version");
   m.timestamp_period_ns = r.optional_number(doc, "", "timestamp_period_ns");
   m.timestamp_valid_bits = r.optional_uint64(doc, "", "timestamp_valid_bits");
 
-  if (const ojson* build = r.optional_object(doc, "", "build")) {
-    m.build.fields = *build;
-    m.build.git_commit = r.optional_string(*build, "/build", "git_commit");
-    m.build.git_dirty = r.flag(*build, "/build", "git_dirty", false);
-  } else {
-    m.build.fields = nullptr;
-  }
-  if (const ojson* run = r.optional_object(doc, "", "run")) {
-    m.run.fields = *run;
-    m.run.started_utc = r.optional_string(*run, "/run", "started_utc");
-    m.run.quick = r.flag(*run, "/run", "quick", false);
-    if (const auto altered = run->find("altered_generators"); altered != run->end()) {
-      if (!altered->is_array()) r.fail("/run/altered_generators", "is not an array");
-      for (std::size_t i = 0; i < altered->size(); ++i) {
-        if (!(*altered)[i].is_string())
-          r.fail("/run/altered_generators/" + std::to_string(i), "is not a generator name");
-        m.run.altered_generators.push_back((*altered)[i].get<std::string>());
-      }
-    }
-  } else {
-    m.run.fields = nullptr;
-  }
+  if (const ojson* build = r.optional_object(doc, "", "build")) m.build = build_record_from_json(r, *build, "/build");
+  if (const ojson* run = r.optional_object(doc, "", "run")) m.run = run_record_from_json(r, *run, "/run");
   if (const ojson* config = r.optional_object(doc, "", "config")) m.config = *config;
   else m.config = nullptr;
   if (const ojson* capture = r.optional_object(doc, "", "capture")) m.capture = read_capture(r, *capture);

@@ -7,9 +7,10 @@
 // timings (per generator, view and phase the samples, median and quartiles); every other field is
 // optional here, absent in the model when absent in the file, and written back only when
 // present, so a file round-trips unchanged. A reader that needs more says so (compare needs the
-// table number, device name, build commit, run start and capture hashes). Objects the harness writes from elsewhere and only passes on
-// (device, build, run, config, capture, a claim's measurements) are kept whole as JSON, with the
-// few fields a reader needs parsed out beside them.
+// table number, device, build, run and capture hashes). The device, build and run are the header
+// every document shares (formats/run_header.hpp), read whole when present. Objects the harness
+// writes from elsewhere and only passes on (config, capture, a claim's measurements) are kept
+// whole as JSON, with the few fields a reader needs parsed out beside them.
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -19,6 +20,7 @@
 #include <nlohmann/json.hpp>
 
 #include "harness/formats/claim.hpp"
+#include "harness/formats/run_header.hpp"
 #include "harness/formats/scene_identity.hpp"
 #include "harness/formats/timing_statistics.hpp"
 
@@ -188,38 +190,19 @@ struct CaptureSummary {
   std::optional<Source> source;  // a glTF scene's
 };
 
-// `fields` null: the file has none (a test's synthetic table); compare requires them.
-struct DeviceSummary {
-  nlohmann::ordered_json fields = nlohmann::ordered_json::object();  // as `devices --json` writes it
-  std::optional<std::string> name;
-  std::string type;  // "discrete", "cpu", ... ("" when absent)
-};
-
-struct BuildSummary {
-  nlohmann::ordered_json fields = nlohmann::ordered_json::object();
-  std::optional<std::string> git_commit;
-  bool git_dirty = false;
-};
-
-struct RunSummary {
-  nlohmann::ordered_json fields = nlohmann::ordered_json::object();
-  std::optional<std::string> started_utc;
-  bool quick = false;
-  std::vector<std::string> altered_generators;  // timings altered on purpose: not a measurement
-};
-
 struct TableModel {
   int schema_version = kTableSchemaVersion;
   std::optional<int> table;  // 1, 2; none: a user's capture (no paper numbers)
   std::optional<std::string> title, unit;
   std::optional<SceneIdentity> scene;  // a writer always sets it; schema 1-2 files: name_only
-  DeviceSummary device;
+  // None: the file has none (a test's synthetic table); compare requires them.
+  std::optional<DeviceRecord> device;
   std::optional<DriverSummary> driver;
   std::optional<std::string> api_version;
   std::optional<double> timestamp_period_ns;
   std::optional<uint64_t> timestamp_valid_bits;
-  BuildSummary build;
-  RunSummary run;
+  std::optional<BuildRecord> build;
+  std::optional<RunRecord> run;
   nlohmann::ordered_json config = nlohmann::ordered_json::object();  // views, N, K, timing options
   CaptureSummary capture;
   std::optional<PaperSource> paper;

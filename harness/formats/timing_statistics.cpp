@@ -45,13 +45,13 @@ ojson sweep_json(const TimingStatistics& s) {
   return ojson{{"stats", stats}, {"samples_ms", s.samples_ms}};
 }
 
-void check_quartiles(const OrderedJsonReader& r, const TimingStatistics& s, const std::string& path) {
+void check_quartiles(const JsonReader& r, const TimingStatistics& s, const std::string& path) {
   if (!(s.q1_ms <= s.median_ms && s.median_ms <= s.q3_ms))
     r.fail(path, "has quartiles that do not enclose the median (q1 " + number_text(s.q1_ms, 6) + ", median " +
                      number_text(s.median_ms, 6) + ", q3 " + number_text(s.q3_ms, 6) + ")");
 }
 
-TimingStatistics read_table(const OrderedJsonReader& r, const ojson& s, const std::string& p) {
+TimingStatistics read_table(const JsonReader& r, const ojson& s, const std::string& p) {
   if (!s.is_object()) r.wrong_type(s, p, "an object");
   TimingStatistics out;
   out.samples_ms = r.times(s, p, "samples_ms");
@@ -69,7 +69,7 @@ TimingStatistics read_table(const OrderedJsonReader& r, const ojson& s, const st
   return out;
 }
 
-TimingStatistics read_sweep(const OrderedJsonReader& r, const ojson& series, const std::string& p) {
+TimingStatistics read_sweep(const JsonReader& r, const ojson& series, const std::string& p) {
   if (!series.is_object()) r.wrong_type(series, p, "an object");
   const ojson& stats = r.object(series, p, "stats");
   const std::string sp = r.child(p, "stats");
@@ -110,7 +110,7 @@ nlohmann::ordered_json to_json(const TimingStatistics& statistics, StatisticsLay
   return layout == StatisticsLayout::kTable ? table_json(statistics) : sweep_json(statistics);
 }
 
-TimingStatistics timing_statistics_from_json(const OrderedJsonReader& reader, const nlohmann::ordered_json& value,
+TimingStatistics timing_statistics_from_json(const JsonReader& reader, const nlohmann::ordered_json& value,
                                              const std::string& path, StatisticsLayout layout) {
   return layout == StatisticsLayout::kTable ? read_table(reader, value, path) : read_sweep(reader, value, path);
 }

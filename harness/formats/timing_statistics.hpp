@@ -12,9 +12,7 @@
 
 namespace vsgl {
 
-template <typename Json>
-class BasicJsonReader;  // core/json_reader.hpp
-using OrderedJsonReader = BasicJsonReader<nlohmann::ordered_json>;
+class JsonReader;  // core/json_reader.hpp
 
 struct TimingStatistics {
   std::vector<double> samples_ms;  // every timed round, positive
@@ -48,7 +46,7 @@ enum class StatisticsLayout {
 nlohmann::ordered_json to_json(const TimingStatistics& statistics, StatisticsLayout layout);
 // `value` is what to_json writes, at `path`. Throws InputError naming the pointer of a missing or
 // mistyped field, a time that is not positive, and quartiles that do not enclose the median.
-TimingStatistics timing_statistics_from_json(const OrderedJsonReader& reader, const nlohmann::ordered_json& value,
+TimingStatistics timing_statistics_from_json(const JsonReader& reader, const nlohmann::ordered_json& value,
                                              const std::string& path, StatisticsLayout layout);
 
 }  // namespace vsgl

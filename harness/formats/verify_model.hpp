@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json_fwd.hpp>
+#include <nlohmann/json.hpp>
 
 #include "harness/formats/devices_model.hpp"
 
@@ -44,15 +44,16 @@ struct VerifyCheck {
 struct VerifyDocument {
   std::string capture;  // the capture directory as given on the command line
   std::string scene;    // the capture's scene name
-  DeviceRecord device;
+  DeviceRecord device;  // formats/run_header.hpp
   std::vector<VerifyCheck> checks;  // in the order run: FIS, then k-means
 };
 
-nlohmann::json to_json(const VerifyCheck& check);
-nlohmann::json to_json(const VerifyDocument& doc);
+// The keys sorted, as the files always had them (core/sorted_json.hpp).
+nlohmann::ordered_json to_json(const VerifyCheck& check);
+nlohmann::ordered_json to_json(const VerifyDocument& doc);
 
 // Every failure an InputError "<where>: <JSON pointer>: <problem>".
-VerifyDocument verify_from_json(const nlohmann::json& doc, const std::string& where);
+VerifyDocument verify_from_json(const nlohmann::ordered_json& doc, const std::string& where);
 VerifyDocument read_verify_file(const std::filesystem::path& path);
 
 // The file's text (2-space indent, a final newline), once the document conforms to the built-in

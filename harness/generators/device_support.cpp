@@ -1,7 +1,6 @@
 #include "harness/generators/device_support.hpp"
 
 #include <algorithm>
-#include <nlohmann/json.hpp>
 
 #include "harness/core/error.hpp"
 #include "harness/generators/fis/fis_generator.hpp"
@@ -45,40 +44,38 @@ std::vector<PipelineNeeds> generator_pipeline_needs(const std::string& generator
   return out;
 }
 
-nlohmann::json device_support_json(const DeviceInfo& info) {
-  nlohmann::json out{{"generators", nlohmann::json::object()}, {"mipmapping", nlohmann::json::object()}};
+DeviceSupport device_support(const DeviceInfo& info) {
+  DeviceSupport out;
   if (!info.usable()) return out;
   for (MipStrategy m : {MipStrategy::kSinglePass, MipStrategy::kBlit, MipStrategy::kPerLevel}) {
     const std::string why = fis_unfit_reason(info, PyramidPath::kTexture, m);
-    out["mipmapping"][mip_strategy_name(m)] = {{"runs", why.empty()}, {"reason", why}};
+    out.mipmapping[mip_strategy_name(m)] = {why.empty(), why};
   }
   for (const auto& g : generator_names()) {
-    nlohmann::json j{{"runs", true}, {"reason", ""}};
+    GeneratorSupport s{{true, ""}, {}, {}, {}, {}};
     if (generator_descriptor(g).family == GeneratorFamily::kFis) {
       try {
         std::string path_reason, mip_reason;
         const PyramidPath path = effective_pyramid_path(info, PyramidPath::kTexture, &path_reason);
-        j["pyramid"] = pyramid_path_name(path);
-        if (!path_reason.empty()) j["pyramid_fallback_reason"] = path_reason;
+        s.pyramid = pyramid_path_name(path);
+        if (!path_reason.empty()) s.pyramid_fallback_reason = path_reason;
         if (path == PyramidPath::kTexture) {
-          j["mipmapping"] = mip_strategy_name(effective_mip_strategy(info, std::nullopt, &mip_reason));
-          if (!mip_reason.empty()) j["mipmapping_fallback_reason"] = mip_reason;
+          s.mipmapping = mip_strategy_name(effective_mip_strategy(info, std::nullopt, &mip_reason));
+          if (!mip_reason.empty()) s.mipmapping_fallback_reason = mip_reason;
         }
       } catch (const DeviceError& e) {
-        j["runs"] = false;
-        j["reason"] = e.what();
+        s.verdict = {false, e.what()};
       }
     } else {
       for (const auto& n : generator_pipeline_needs(g)) {
         const std::string why = does_not_fit_reason(info.limits, n);
         if (!why.empty()) {
-          j["runs"] = false;
-          j["reason"] = why;
+          s.verdict = {false, why};
           break;
         }
       }
     }
-    out["generators"][g] = j;
+    out.generators[g] = s;
   }
   return out;
 }

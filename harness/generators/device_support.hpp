@@ -4,10 +4,10 @@
 // the pipelines it creates (fis_pipelines); a k-means generator on its kernels' SPIR-V with the
 // work-group size its host passes bounded by the largest k-means group (kernels/include/
 // interface/kmeans.h), so "runs" there means every kernel fits that bound.
-#include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <vector>
 
+#include "harness/formats/devices_model.hpp"
 #include "harness/vk/device_info.hpp"
 #include "harness/vk/device_limits.hpp"
 
@@ -19,7 +19,8 @@ PipelineNeeds kernel_needs_bound(const std::string& kernel);
 // path and every mip strategy's pipelines; k-means: kernel_needs_bound of each kernel).
 std::vector<PipelineNeeds> generator_pipeline_needs(const std::string& generator);
 
-// {"generators": {name: {"runs", "reason", ...}}, "mipmapping": {strategy: {"runs", "reason"}}}
-nlohmann::json device_support_json(const DeviceInfo& info);
+// Per generator and FIS mip strategy whether it runs on `info` (both empty for an unusable device),
+// as the devices document records it (formats/devices_model.hpp).
+DeviceSupport device_support(const DeviceInfo& info);
 
 }  // namespace vsgl

@@ -12,13 +12,14 @@
 #include "harness/core/claim_verdict.hpp"
 #include "harness/core/generator_ids.hpp"
 #include "harness/core/paired_comparison.hpp"
+#include "harness/core/sorted_json.hpp"
 #include "harness/formats/quality_model.hpp"
 #include "harness/quality/quality_reference.hpp"
 
 namespace vsgl {
 namespace {
 
-using nlohmann::json;
+using json = nlohmann::ordered_json;
 using ojson = nlohmann::ordered_json;
 
 const std::string kTok15(kFisTok15), kModified(kFisModified);
@@ -288,8 +289,9 @@ void add_claim_verdicts(json& r) {
                                       "a timing/code-size claim: see `vsgl-bench tables`", "not measured here"));
   }
   json document = json::array();
-  for (const Claim& c : claims) document.push_back(json(to_json(c, ClaimLayout::kQuality)));
+  for (const Claim& c : claims) document.push_back(to_json(c, ClaimLayout::kQuality));
   r["claims"] = document;
+  r = sorted_keys(r);  // the quality document's keys are sorted, as it was always written
 }
 
 }  // namespace vsgl

@@ -10,6 +10,6 @@ namespace vsgl {
 // verdicts can be recomputed from a committed file). A document without per-frame series (schema
 // 4 and older) gets its claims as "not measured here". Throws InputError for a document the model
 // cannot read.
-void add_claim_verdicts(nlohmann::json& result);
+void add_claim_verdicts(nlohmann::ordered_json& result);
 
 }  // namespace vsgl

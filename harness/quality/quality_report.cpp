@@ -16,7 +16,7 @@
 namespace vsgl {
 namespace {
 
-using nlohmann::json;
+using json = nlohmann::ordered_json;
 using ojson = nlohmann::ordered_json;
 
 // The two FIS generators every quality claim compares (core/generator_ids.hpp).
@@ -35,9 +35,9 @@ namespace {
 void write_heading(std::ostringstream& md, const QualityModel& m) {
   md << "# Quality: " << m.scene << "\n\n";
   md << "Capture `" << m.capture_path << "` (G-buffer " << m.gbuffer_size[0] << "x" << m.gbuffer_size[1] << ", RSM "
-     << m.rsm_size[0] << "^2), device " << m.device_name << ", vsgl-bench " << m.version << " (commit " << m.git_commit
-     << (m.git_dirty ? ", dirty" : "") << "). N = " << m.light_vsgls << " (light view), " << m.camera_vsgls
-     << " (camera view), K = " << m.K << ". Schema `vsgl-quality` v" << m.schema_version
+     << m.rsm_size[0] << "^2), device " << m.device_name << ", vsgl-bench " << m.build.vsgl_bench_version << " (commit "
+     << m.build.git_commit << (m.build.git_dirty ? ", dirty" : "") << "). N = " << m.light_vsgls << " (light view), "
+     << m.camera_vsgls << " (camera view), K = " << m.K << ". Schema `vsgl-quality` v" << m.schema_version
      << "; every number is in `quality.json`.\n\n";
 }
 
@@ -210,7 +210,7 @@ void write_flux_origin(std::ostringstream& md, const QualityModel& m) {
 }
 
 // Whose RSM the reference's VPLs come from: the capture's, or a reference capture's larger one.
-std::string vpl_source_text(const nlohmann::json& source) {
+std::string vpl_source_text(const nlohmann::ordered_json& source) {
   if (source.is_null()) return "RSM";  // schema 5 documents written before vpl_source
   if (source.value("capture", "") != "reference capture") return "the capture's RSM";
   const auto& rsm = source.at("rsm");

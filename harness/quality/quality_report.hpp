@@ -15,6 +15,6 @@ namespace vsgl {
 // reference error, per-frame error, flicker and K sweep tables; the claims with verdicts; the pictures.
 // Throws InputError naming a missing or mistyped field of the document.
 std::string quality_markdown(const QualityModel& result, const std::vector<QualityPicture>& pictures);
-std::string quality_markdown(const nlohmann::json& result, const std::vector<QualityPicture>& pictures);
+std::string quality_markdown(const nlohmann::ordered_json& result, const std::vector<QualityPicture>& pictures);
 
 }  // namespace vsgl

@@ -27,13 +27,13 @@
 #include "harness/quality/quality_pictures.hpp"
 #include "harness/quality/quality_reference.hpp"
 #include "harness/quality/reference_capture.hpp"
-#include "harness/timing/run_provenance.hpp"
+#include "harness/formats/run_header.hpp"
 #include "harness/quality/shading_pass.hpp"
 
 namespace vsgl {
 namespace {
 
-using nlohmann::json;
+using json = nlohmann::ordered_json;
 using Clock = std::chrono::steady_clock;
 
 // FIS VSGLs have kernel footprints (a level per kernel); coverage and the K sweep are about them.
@@ -709,12 +709,11 @@ void write_header(QualityModel& out, Device& device, const Capture& capture, con
   out.gbuffer_size = json::array({capture.gbuffer.width, capture.gbuffer.height});
   out.rsm_size = json::array({capture.rsm.width, capture.rsm.height});
   out.capture_hashes = capture_hashes_json(capture);
-  out.device_name = device.info().name;
-  out.device_driver = device.info().driver_name + " " + device.info().driver_info;
-  out.build = build_json();
-  out.version = out.build.at("vsgl_bench_version").get<std::string>();
-  out.git_commit = out.build.at("git_commit").get<std::string>();
-  out.git_dirty = out.build.at("git_dirty").get<bool>();
+  // The quality document's device: the name and the driver of the header's.
+  const DeviceRecord header_device = device_record(device.info());
+  out.device_name = header_device.name;
+  out.device_driver = header_device.driver_name + " " + header_device.driver_info;
+  out.build = this_build();
   out.generators = config.generators;
   out.light_vsgls = config.light_vsgls;
   out.camera_vsgls = config.camera_vsgls;

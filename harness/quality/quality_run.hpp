@@ -74,7 +74,7 @@ struct QualityPicture {
 };
 
 struct QualityResult {
-  nlohmann::json json;
+  nlohmann::ordered_json json;
   std::vector<QualityPicture> pictures;
 };
 

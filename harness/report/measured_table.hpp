@@ -39,11 +39,11 @@ struct MeasuredTable {
 // Everything of a run that is not a measurement.
 struct ReportContext {
   DeviceInfo device;
-  nlohmann::json paper;             // results/paper/paper_tables.json
+  nlohmann::ordered_json paper;  // results/paper/paper_tables.json
   std::string paper_path;
   nlohmann::ordered_json config;    // views, N, K, iterations, timing options
-  nlohmann::ordered_json build;     // build_json()
-  nlohmann::ordered_json run;       // started, validation, quick, ...
+  BuildRecord build;                // this_build()
+  RunRecord run;                    // started, validation, quick, ... (run_record)
   std::map<std::string, GeneratorLines> lines;   // per generator
   std::map<std::string, uint32_t> shaders;       // per generator: kernels (pipelines) it dispatches
 };

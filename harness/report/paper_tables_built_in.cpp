@@ -4,9 +4,9 @@
 
 namespace vsgl {
 
-nlohmann::json paper_tables_or_built_in(const std::optional<std::filesystem::path>& file) {
+nlohmann::ordered_json paper_tables_or_built_in(const std::optional<std::filesystem::path>& file) {
   if (file) return load_paper_tables(*file);
-  nlohmann::json doc = embedded_json(kPaperTablesFile, "the paper's tables");
+  nlohmann::ordered_json doc = embedded_json(kPaperTablesFile, "the paper's tables");
   check_paper_tables(doc, embedded_file_label(kPaperTablesFile));
   return doc;
 }

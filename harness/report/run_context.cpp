@@ -8,7 +8,6 @@
 #include "harness/generators/fis/fis_generator.hpp"
 #include "harness/generators/generator_registry.hpp"
 #include "harness/report/paper_tables.hpp"
-#include "harness/timing/run_provenance.hpp"
 #include "harness/vk/device_info.hpp"
 
 namespace vsgl {
@@ -27,16 +26,17 @@ std::string utc_now() {
 
 }  // namespace
 
-nlohmann::ordered_json run_json(const TablesOptions& o) {
-  ojson run{{"started_utc", utc_now()},
-            {"validation_layer", o.validation},
-            {"quick", o.quick},
-            {"protocol_compliant", o.timing.warmup >= 2 && o.timing.min_repetitions >= 10},
-            {"clocks_locked_claimed", o.clocks_locked},
-            {"clocks_note",
-             "Vulkan cannot lock GPU clocks: lock them outside (e.g. `nvidia-smi -lgc <MHz>` on "
-             "NVIDIA, `rocm-smi --setperfdeterminism <MHz>` on AMD) and pass --clocks-locked"}};
-  if (!o.altered_generators.empty()) run["altered_generators"] = o.altered_generators;  // not a measurement
+RunRecord run_record(const TablesOptions& o) {
+  RunRecord run;
+  run.started_utc = utc_now();
+  run.validation_layer = o.validation;
+  run.quick = o.quick;
+  run.protocol_compliant = o.timing.warmup >= 2 && o.timing.min_repetitions >= 10;
+  run.clocks_locked_claimed = o.clocks_locked;
+  run.clocks_note =
+      "Vulkan cannot lock GPU clocks: lock them outside (e.g. `nvidia-smi -lgc <MHz>` on NVIDIA, `rocm-smi "
+      "--setperfdeterminism <MHz>` on AMD) and pass --clocks-locked";
+  run.altered_generators = o.altered_generators;  // not a measurement
   return run;
 }
 
@@ -47,8 +47,8 @@ RunContext make_run_context(const DeviceInfo& device, const TablesOptions& o) {
   ctx.paper = paper_tables_or_built_in(o.paper_tables);
   ctx.paper_path = file_or_built_in_name(o.paper_tables, kPaperTablesFile);
   out.schema = json_file_or_built_in(o.schema, kTableSchemaFile, "the table schema", " (use --schema FILE)");
-  ctx.build = build_json();
-  ctx.run = run_json(o);
+  ctx.build = this_build();
+  ctx.run = run_record(o);
   // Table 3 counts the sources of the path this run takes (FIS: pyramid path and mip strategy).
   const GeneratorConfig resolved = resolve_fis_config(device, o.generator);
   const SourceTree sources = o.source_dir ? checkout_source_tree(*o.source_dir) : built_in_source_tree();

@@ -11,7 +11,7 @@ namespace vsgl {
 
 struct RunContext {
   ReportContext report;
-  nlohmann::json schema;  // results/schema/table.schema.json
+  nlohmann::ordered_json schema;  // results/schema/table.schema.json
 };
 
 // Throws InputError for an unreadable paper file, schema or generator source.
@@ -19,7 +19,7 @@ RunContext make_run_context(const DeviceInfo& device, const TablesOptions& optio
 
 // The "run" block: when it started (UTC), the validation layer, --quick, whether the protocol is
 // DESIGN.md §9's, the clocks claim, and TEST-ONLY slowed generators. `sweep` writes the same.
-nlohmann::ordered_json run_json(const TablesOptions& options);
+RunRecord run_record(const TablesOptions& options);
 
 // The table JSON's "config" block for one capture.
 nlohmann::ordered_json config_json(const TablesOptions& options, const Capture& capture, const DeviceInfo& device);

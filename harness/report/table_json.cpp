@@ -214,7 +214,6 @@ Table3Counting table3_counting(const ReportContext& ctx) {
 std::string generator_label(const std::string& g) { return generator_descriptor(g).label; }
 
 TableModel table_model(const MeasuredTable& t, const MeasuredTable* other, const ReportContext& ctx) {
-  const DeviceInfo& d = ctx.device;
   TableModel m;
   m.schema_version = kTableSchemaVersion;
   if (t.number != 0) {
@@ -225,23 +224,15 @@ TableModel table_model(const MeasuredTable& t, const MeasuredTable* other, const
   }
   m.scene = t.identity;
   m.unit = "ms";
-  m.device.fields = to_json(d);
-  m.device.name = d.name;
-  m.device.type = m.device.fields.value("type", "");
-  m.driver = DriverSummary{d.driver_name, d.driver_info, driver_version_string(d)};
-  m.api_version = api_version_string(d.api_version);
-  m.timestamp_period_ns = d.timestamp_period_ns;
-  m.timestamp_valid_bits = d.timestamp_valid_bits;
-  m.build.fields = ctx.build;
-  if (ctx.build.is_object()) {
-    m.build.git_commit = ctx.build.value("git_commit", "");
-    m.build.git_dirty = ctx.build.value("git_dirty", false);
-  }
-  m.run.fields = ctx.run;
-  if (ctx.run.is_object()) {
-    m.run.started_utc = ctx.run.value("started_utc", "");
-    m.run.quick = ctx.run.value("quick", false);
-  }
+  // The driver, API version and timestamps the table states beside its device are the device's.
+  const DeviceRecord device = device_record(ctx.device);
+  m.driver = DriverSummary{device.driver_name, device.driver_info, device.driver_version};
+  m.api_version = device.api_version;
+  m.timestamp_period_ns = device.timestamp_period_ns;
+  m.timestamp_valid_bits = device.timestamp_valid_bits;
+  m.device = device;
+  m.build = ctx.build;
+  m.run = ctx.run;
   m.config = ctx.config;
   nlohmann::ordered_json capture{{"scene", t.scene}, {"dir", t.capture_dir}, {"recorded_now", t.recorded_now}};
   for (const auto& [k, v] : t.capture.items()) capture[k] = v;

@@ -77,8 +77,8 @@ void write_heading(std::ostringstream& os, const TableModel& t, bool paper) {
   const DriverSummary& driver = need(t.driver, "driver");
   // Schema 3 names the scene's kind: a stand-in's numbers are not the paper scene's.
   const std::string kind = t.scene && !t.scene->name_only ? std::string(" (") + scene_label_kind(*t.scene) + ")" : "";
-  os << "Scene `" << scene << "`" << kind << " on **" << need(t.device.name, "device name") << "** (" << driver.name
-     << " " << driver.version << ", Vulkan " << need(t.api_version, "api_version") << ")";
+  os << "Scene `" << scene << "`" << kind << " on **" << need(t.device, "device").name << "** (" << driver.name << " "
+     << driver.version << ", Vulkan " << need(t.api_version, "api_version") << ")";
   if (paper) os << "; paper: " << need(t.paper, "paper").gpu;
   if (const auto& src = t.capture.source)
     os << "; from " << src->format << " file `" << src->file << "` (" << src->triangles << " triangles, " << src->content_hash << ")";

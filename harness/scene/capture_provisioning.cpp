@@ -6,6 +6,7 @@
 #include "harness/capture/capture_files.hpp"
 #include "harness/capture/capture_sidecar.hpp"
 #include "harness/core/error.hpp"
+#include "harness/core/sorted_json.hpp"
 #include "harness/scene/brsm_pdf.hpp"
 #include "harness/scene/scene.hpp"
 
@@ -85,10 +86,10 @@ ProvidedCapture provide_capture(Device& device, const NamedScene& scene, const R
   return out;
 }
 
-nlohmann::json capture_hashes_json(const Capture& capture) {
-  nlohmann::json out = nlohmann::json::object();
+nlohmann::ordered_json capture_hashes_json(const Capture& capture) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::object();
   const auto add = [&](ViewKind kind, const std::array<std::string, kChannelCount>& hashes, bool has_pdf) {
-    nlohmann::json view = nlohmann::json::object();
+    nlohmann::ordered_json view = nlohmann::ordered_json::object();
     const auto names = channel_names(kind);
     for (int c = 0; c < kChannelCount; ++c) {
       if (c == kPdf && !has_pdf) continue;
@@ -98,7 +99,7 @@ nlohmann::json capture_hashes_json(const Capture& capture) {
   };
   add(ViewKind::kCamera, capture.meta.gbuffer_hashes, capture.gbuffer.has_pdf);
   add(ViewKind::kLight, capture.meta.rsm_hashes, capture.rsm.has_pdf);
-  return out;
+  return sorted_keys(out);
 }
 
 }  // namespace vsgl

@@ -55,7 +55,8 @@ struct ProvidedCapture {
 ProvidedCapture provide_capture(Device& device, const NamedScene& scene, const RecordSizes& sizes,
                                 const std::filesystem::path& dir);
 
-// Every channel hash of both views, as the sidecar has them: {"gbuffer": {channel: hash}, "rsm": ...}.
-nlohmann::json capture_hashes_json(const Capture& capture);
+// Every channel hash of both views, as the sidecar has them: {"gbuffer": {channel: hash}, "rsm": ...},
+// the keys sorted, as the tables, quality reports and their hashes of it always had them.
+nlohmann::ordered_json capture_hashes_json(const Capture& capture);
 
 }  // namespace vsgl

@@ -13,7 +13,7 @@
 namespace vsgl {
 namespace {
 
-using json = nlohmann::json;
+using json = nlohmann::ordered_json;
 
 constexpr const char* kBuiltInPresetDir = "harness/scene/presets/";
 
@@ -101,7 +101,7 @@ void read_motion(const JsonReader& r, const json& doc, ScenePreset& p) {
 
 ScenePreset parse_scene_preset(const ScenePresetFile& file) {
   const std::string origin = printable_text(file.origin, std::string_view::npos);
-  const json doc = json::parse(parse_json_text(file.text, origin, "the scene preset").dump());
+  const json doc = parse_json_text(file.text, origin, "the scene preset");
   const JsonReader r("scene preset " + origin, JsonPathStyle::kDottedKey);
   if (!doc.is_object()) r.wrong_type(doc, "", "an object");
   r.only_keys(doc, "",

@@ -79,7 +79,7 @@ SweepFitModel fit_model(const SweepFit& f, const SweepAxis& axis) {
 }
 
 // The paper's claim as its tables file words it (its third claim), else in the harness's words.
-std::string pdf_independence_text(const nlohmann::json& paper) {
+std::string pdf_independence_text(const nlohmann::ordered_json& paper) {
   if (paper.is_object() && paper.contains("claims") && paper["claims"].size() > 2)
     return paper["claims"][2].get<std::string>();
   return "FIS cost is almost independent of the PDF, k-means cost is not";

@@ -15,10 +15,10 @@ namespace vsgl {
 
 // Everything of the run that is not a measurement.
 struct SweepContext {
-  nlohmann::ordered_json device;  // to_json(DeviceInfo)
-  nlohmann::ordered_json build;   // build_json()
-  nlohmann::ordered_json run;     // started, validation, quick, clocks
-  nlohmann::json paper;           // results/paper/paper_tables.json (its claim texts); null: none
+  DeviceRecord device;            // device_record(DeviceInfo)
+  BuildRecord build;              // this_build()
+  RunRecord run;                  // started, validation, quick, clocks (run_record)
+  nlohmann::ordered_json paper;   // results/paper/paper_tables.json (its claim texts); null: none
   bool informative = false;       // a CPU device: its timing verdicts say nothing of a GPU
 };
 

@@ -8,7 +8,6 @@
 #include "harness/core/json_schema_subset.hpp"
 #include "harness/report/paper_tables.hpp"
 #include "harness/report/run_context.hpp"
-#include "harness/timing/run_provenance.hpp"
 #include "harness/vk/device_info.hpp"
 
 namespace vsgl {
@@ -22,9 +21,9 @@ std::string sweep_json_text(const SweepModel& document) { return to_json(documen
 SweepWriter::SweepWriter(const SweepOptions& options, const DeviceInfo& device)
     : options_(options),
       schema_(json_file_or_built_in(options.schema, kSweepSchemaFile, "the sweep schema", " (use --schema FILE)")) {
-  context_.device = to_json(device);
-  context_.build = build_json();
-  context_.run = run_json(options.tables);
+  context_.device = device_record(device);
+  context_.build = this_build();
+  context_.run = run_record(options.tables);
   context_.paper = paper_tables_or_built_in(options.tables.paper_tables);
   context_.informative = device.type == VK_PHYSICAL_DEVICE_TYPE_CPU;
 }

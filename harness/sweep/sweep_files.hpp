@@ -47,7 +47,7 @@ class SweepWriter {
 
  private:
   const SweepOptions& options_;
-  nlohmann::json schema_;
+  nlohmann::ordered_json schema_;
   SweepContext context_;
 };
 

@@ -25,7 +25,7 @@ SweepParameter parameter_of(const SweepAxisModel& axis) {
 
 // Whether a fit's series was timed at the paper's setup in everything but the plotted axis (read
 // off its first point's config: the view's size, N and K, and γ), so the paper's time belongs on it.
-bool at_paper_setup(const SweepModel& s, const SweepFitModel& f, const nlohmann::json& paper) {
+bool at_paper_setup(const SweepModel& s, const SweepFitModel& f, const nlohmann::ordered_json& paper) {
   const SweepParameter plotted = parameter_of(s.axes[f.axis]);
   const SweepPoint& p = s.points[f.points.front()];
   const auto& view = p.config.at("views").at(f.view);
@@ -45,8 +45,8 @@ bool at_paper_setup(const SweepModel& s, const SweepFitModel& f, const nlohmann:
 }
 
 // The paper's time of the fit's case and phase, where the series is at the paper's setup.
-std::optional<LogLogReference> paper_mark(const SweepModel& s, const SweepFitModel& f, const nlohmann::json& paper,
-                                          int paper_table) {
+std::optional<LogLogReference> paper_mark(const SweepModel& s, const SweepFitModel& f,
+                                          const nlohmann::ordered_json& paper, int paper_table) {
   if (paper_table <= 0 || !at_paper_setup(s, f, paper)) return std::nullopt;
   const std::optional<double> x = paper_reference_x(paper, parameter_of(s.axes[f.axis]), f.view);
   if (!x) return std::nullopt;
@@ -58,7 +58,8 @@ std::optional<LogLogReference> paper_mark(const SweepModel& s, const SweepFitMod
   return LogLogReference{*x, *ms, "paper, Table " + table, {}};
 }
 
-LogLogSeries fit_series(const SweepModel& s, const SweepFitModel& f, const nlohmann::json* paper, int paper_table) {
+LogLogSeries fit_series(const SweepModel& s, const SweepFitModel& f, const nlohmann::ordered_json* paper,
+                        int paper_table) {
   LogLogSeries ser;
   ser.name = f.generator + " " + f.view + (f.slice.empty() ? "" : ", " + sweep_slice_text(f.slice));
   for (std::size_t k = 0; k < f.points.size(); ++k) {
@@ -75,16 +76,17 @@ LogLogSeries fit_series(const SweepModel& s, const SweepFitModel& f, const nlohm
 
 }  // namespace
 
-std::optional<double> paper_reference_x(const nlohmann::json& paper, SweepParameter p, const std::string& view) {
+std::optional<double> paper_reference_x(const nlohmann::ordered_json& paper, SweepParameter p,
+                                        const std::string& view) {
   if (!parameter_touches_view(p, view) || !paper.is_object() || !paper.contains("setup")) return std::nullopt;
-  const nlohmann::json& setup = paper.at("setup");
+  const nlohmann::ordered_json& setup = paper.at("setup");
   const auto number = [&](const char* key) -> std::optional<double> {
     if (!setup.contains(key) || !setup.at(key).is_number()) return std::nullopt;
     return setup.at(key).get<double>();
   };
   const auto area = [&](const char* key) -> std::optional<double> {
     if (!setup.contains(key) || !setup.at(key).is_array() || setup.at(key).size() != 2) return std::nullopt;
-    const nlohmann::json& wh = setup.at(key);
+    const nlohmann::ordered_json& wh = setup.at(key);
     if (!wh[0].is_number() || !wh[1].is_number()) return std::nullopt;
     return wh[0].get<double>() * wh[1].get<double>();
   };
@@ -101,7 +103,7 @@ std::optional<double> paper_reference_x(const nlohmann::json& paper, SweepParame
   return std::nullopt;
 }
 
-std::vector<std::pair<std::string, std::string>> sweep_plots(const SweepModel& s, const nlohmann::json* paper,
+std::vector<std::pair<std::string, std::string>> sweep_plots(const SweepModel& s, const nlohmann::ordered_json* paper,
                                                              int paper_table) {
   std::vector<std::pair<std::string, std::string>> out;
   for (std::size_t a = 0; a < s.axes.size(); ++a) {

@@ -1,27 +1,8 @@
 #include "harness/timing/run_provenance.hpp"
 
 #include <cctype>
-#include <nlohmann/json.hpp>
-
-#include "harness/core/build_info.hpp"
-#include "harness/core/version.hpp"
 
 namespace vsgl {
-
-nlohmann::json build_json() {
-  const BuildInfo b = build_info();
-  return nlohmann::json{
-      {"vsgl_bench_version", kVersionString},
-      {"git_commit", b.git_commit},
-      {"git_dirty", b.git_dirty},
-      {"compiler", compiler_description()},
-#ifdef NDEBUG
-      {"assertions", false},
-#else
-      {"assertions", true},
-#endif
-  };
-}
 
 std::string device_slug(const std::string& device_name) {
   std::string slug;

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "harness/core/error.hpp"
@@ -167,30 +166,30 @@ const DeviceInfo& select_device(const std::vector<DeviceInfo>& devices, const st
   return *chosen;
 }
 
-nlohmann::json to_json(const DeviceInfo& d) {
-  return nlohmann::json{
-      {"index", d.index},
-      {"name", d.name},
-      {"type", device_type_name(d.type)},
-      {"vendor_id", d.vendor_id},
-      {"device_id", d.device_id},
-      {"api_version", api_version_string(d.api_version)},
-      {"driver_version", driver_version_string(d)},
-      {"driver_name", d.driver_name},
-      {"driver_info", d.driver_info},
-      {"queue_family", d.compute_queue_family == UINT32_MAX ? -1 : static_cast<int64_t>(d.compute_queue_family)},
-      {"graphics", d.graphics},
-      {"timestamps", d.timestamps()},
-      {"timestamp_valid_bits", d.timestamp_valid_bits},
-      {"timestamp_period_ns", d.timestamp_period_ns},
-      {"pipeline_statistics", d.pipeline_statistics},
-      {"subgroup_size", d.subgroup_size},
-      {"max_compute_shared_memory", d.max_shared_memory},
-      {"device_local_bytes", d.device_local_bytes},
-      {"limits", to_json(d.limits)},
-      {"usable", d.usable()},
-      {"unusable_reason", d.unusable_reason},
-  };
+DeviceRecord device_record(const DeviceInfo& d) {
+  DeviceRecord r;
+  r.index = d.index;
+  r.name = d.name;
+  r.type = device_type_name(d.type);
+  r.vendor_id = d.vendor_id;
+  r.device_id = d.device_id;
+  r.api_version = api_version_string(d.api_version);
+  r.driver_version = driver_version_string(d);
+  r.driver_name = d.driver_name;
+  r.driver_info = d.driver_info;
+  r.queue_family = d.compute_queue_family == UINT32_MAX ? -1 : static_cast<int64_t>(d.compute_queue_family);
+  r.graphics = d.graphics;
+  r.timestamps = d.timestamps();
+  r.timestamp_valid_bits = d.timestamp_valid_bits;
+  r.timestamp_period_ns = d.timestamp_period_ns;
+  r.pipeline_statistics = d.pipeline_statistics;
+  r.subgroup_size = d.subgroup_size;
+  r.max_compute_shared_memory = d.max_shared_memory;
+  r.device_local_bytes = d.device_local_bytes;
+  r.limits = d.limits;
+  r.usable = d.usable();
+  r.unusable_reason = d.unusable_reason;
+  return r;
 }
 
 std::string describe_devices_text(const std::vector<DeviceInfo>& devices) {

@@ -3,9 +3,9 @@
 // Selection is explicit about why: an unusable device carries the reason it was rejected.
 #include <vulkan/vulkan.h>
 
+#include "harness/formats/run_header.hpp"
 #include "harness/vk/device_limits.hpp"
 
-#include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -57,7 +57,9 @@ std::vector<DeviceInfo> enumerate_devices(VkInstance instance);
 // the device name. Throws DeviceError naming the candidates when nothing matches.
 const DeviceInfo& select_device(const std::vector<DeviceInfo>& devices, const std::string& spec);
 
-nlohmann::json to_json(const DeviceInfo& info);
+// The device as every output document records it (formats/run_header.hpp): the one place a
+// DeviceInfo becomes a document's device.
+DeviceRecord device_record(const DeviceInfo& info);
 std::string describe_devices_text(const std::vector<DeviceInfo>& devices);
 
 }  // namespace vsgl

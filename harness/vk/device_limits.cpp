@@ -43,16 +43,16 @@ DeviceLimits read_device_limits(const VkPhysicalDeviceProperties& props, uint64_
   return d;
 }
 
-nlohmann::json to_json(const PipelineNeeds& n) {
-  return nlohmann::json{{"kernel", n.name},
-                        {"storage_images", n.storage_images},
-                        {"sampled_images", n.sampled_images},
-                        {"samplers", n.samplers},
-                        {"storage_buffers", n.storage_buffers},
-                        {"uniform_buffers", n.uniform_buffers},
-                        {"push_constant_bytes", n.push_constant_bytes},
-                        {"shared_memory_bytes", n.shared_memory_bytes},
-                        {"workgroup_size", {n.workgroup_size[0], n.workgroup_size[1], n.workgroup_size[2]}}};
+nlohmann::ordered_json to_json(const PipelineNeeds& n) {
+  return nlohmann::ordered_json{{"kernel", n.name},
+                                {"storage_images", n.storage_images},
+                                {"sampled_images", n.sampled_images},
+                                {"samplers", n.samplers},
+                                {"storage_buffers", n.storage_buffers},
+                                {"uniform_buffers", n.uniform_buffers},
+                                {"push_constant_bytes", n.push_constant_bytes},
+                                {"shared_memory_bytes", n.shared_memory_bytes},
+                                {"workgroup_size", {n.workgroup_size[0], n.workgroup_size[1], n.workgroup_size[2]}}};
 }
 
 std::string LimitShortfall::message(const std::string& what) const {

@@ -34,7 +34,7 @@ struct PipelineNeeds {
   uint32_t resources() const { return storage_images + sampled_images + storage_buffers + uniform_buffers; }
   uint32_t invocations() const { return workgroup_size[0] * workgroup_size[1] * workgroup_size[2]; }
 };
-nlohmann::json to_json(const PipelineNeeds& needs);
+nlohmann::ordered_json to_json(const PipelineNeeds& needs);
 
 // One limit a need exceeds, e.g. {"maxPerStageDescriptorStorageImages", 16, 17}.
 struct LimitShortfall {

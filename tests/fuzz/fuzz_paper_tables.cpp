@@ -26,7 +26,7 @@ const vsgl::BenchRun& committed_run() {
 
 // The page's generators as the loaded file names them (so the fuzzed names and phases reach the
 // paper's bars): each generator of Table 1 with the phases of its camera view.
-std::vector<vsgl::DashboardGenerator> generators_of(const nlohmann::json& paper) {
+std::vector<vsgl::DashboardGenerator> generators_of(const nlohmann::ordered_json& paper) {
   std::vector<vsgl::DashboardGenerator> out;
   for (const auto& [name, entry] : paper["tables"]["1"].items()) {
     vsgl::DashboardGenerator g{name, name, true, {}};
@@ -42,7 +42,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string_view input(reinterpret_cast<const char*>(data), size);
   const auto file = scratch().write("paper_tables.json", input);
   try {
-    const nlohmann::json paper = vsgl::load_paper_tables(file);
+    const nlohmann::ordered_json paper = vsgl::load_paper_tables(file);
     (void)vsgl::dashboard_html({committed_run()}, paper, "fuzz", generators_of(paper));
   } catch (const vsgl::InputError&) {
   }

@@ -24,8 +24,8 @@ const vsgl::fuzz::ScratchDir& scratch() {
   return dir;
 }
 
-const nlohmann::json& paper() {
-  static const nlohmann::json doc =
+const nlohmann::ordered_json& paper() {
+  static const nlohmann::ordered_json doc =
       vsgl::load_paper_tables(std::filesystem::path(VSGL_SOURCE_DIR) / "results/paper/paper_tables.json");
   return doc;
 }

@@ -89,7 +89,7 @@ void require_gltf2(const std::vector<unsigned char>& bytes, const Reporter& r) {
   } else {
     json_text.assign(bytes.begin(), bytes.end());
   }
-  const nlohmann::json doc = nlohmann::json::parse(json_text, nullptr, /*allow_exceptions=*/false);
+  const nlohmann::ordered_json doc = nlohmann::ordered_json::parse(json_text, nullptr, /*allow_exceptions=*/false);
   if (doc.is_discarded()) r.fail("is not valid JSON (neither a .gltf nor a .glb file)");
   if (!doc.is_object()) r.fail("is not a glTF document (top level is not a JSON object)");
   const auto asset = doc.find("asset");
