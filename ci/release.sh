@@ -72,17 +72,18 @@ dist=$src/dist
 rm -rf "$dist"
 mkdir -p "$dist"
 work=$src/build/release-dist
+mkdir -p "$work"
 common=(-G Ninja -DCMAKE_BUILD_TYPE=Release -DVSGL_WERROR=ON -DVSGL_BUILD_TESTS=OFF
         "-DVSGL_PACKAGE_VERSION=$version")
 
 # 1. Linux: the programs and their manual pages, then the .deb and the .tar.gz of one install tree.
 t0=$SECONDS
-cmake -S "$src" -B "$work/linux" "${common[@]}" -DVSGL_MAN_PAGES=ON >"$work.linux-configure.log" 2>&1 ||
-  { cat "$work.linux-configure.log" >&2; die "configuring the Linux build failed"; }
+cmake -S "$src" -B "$work/linux" "${common[@]}" -DVSGL_MAN_PAGES=ON >"$work/linux-configure.log" 2>&1 ||
+  { cat "$work/linux-configure.log" >&2; die "configuring the Linux build failed"; }
 nice -n 10 cmake --build "$work/linux" || die "the Linux build failed"
 rm -rf "$work/linux/package"
-cpack --config "$work/linux/CPackConfig.cmake" -B "$work/linux/package" -G "DEB;TGZ" >"$work.cpack.log" 2>&1 ||
-  { cat "$work.cpack.log" >&2; die "cpack failed"; }
+cpack --config "$work/linux/CPackConfig.cmake" -B "$work/linux/package" -G "DEB;TGZ" >"$work/cpack.log" 2>&1 ||
+  { cat "$work/cpack.log" >&2; die "cpack failed"; }
 deb=$(find "$work/linux/package" -maxdepth 1 -name "vsgl-bench_${version}_*.deb")
 tgz=$(find "$work/linux/package" -maxdepth 1 -name "vsgl-bench-${version}-*.tar.gz")
 [[ -f $deb && -f $tgz ]] || die "cpack made no vsgl-bench_${version}_*.deb and vsgl-bench-${version}-*.tar.gz in $work/linux/package"
@@ -113,8 +114,8 @@ t0=$SECONDS
 deps=${VSGL_WINDOWS_DEPS:-$src/build/windows-deps}
 nice -n 10 bash ci/windows-deps.sh "$deps" || die "ci/windows-deps.sh $deps failed"
 cmake -S "$src" -B "$work/windows" "${common[@]}" --toolchain "$src/cmake/toolchains/mingw-w64-x86_64.cmake" \
-  "-DVSGL_WINDOWS_DEPS=$deps" >"$work.windows-configure.log" 2>&1 ||
-  { cat "$work.windows-configure.log" >&2; die "configuring the Windows build failed"; }
+  "-DVSGL_WINDOWS_DEPS=$deps" >"$work/windows-configure.log" 2>&1 ||
+  { cat "$work/windows-configure.log" >&2; die "configuring the Windows build failed"; }
 nice -n 10 cmake --build "$work/windows" --target vsgl_windows_zip || die "the Windows build failed"
 zip=$work/windows/vsgl-bench-$version-windows-x86_64.zip
 [[ -f $zip ]] || die "the Windows build made no $zip"
