@@ -10,7 +10,8 @@
 #     snapshot., archive., ports., httpredir., mirror(s). under debian or ubuntu), or an apt
 #     repository's (apt., ppa., packages.).
 # Reserved example names (RFC 2606/6761: *.example, *.invalid, *.test, localhost) are allowed.
-# First it checks itself on lines it writes at run time, so a pattern that stopped matching fails.
+# First it checks itself on lines it writes at run time (their URLs are assembled there, so this
+# file names none), so a pattern that stopped matching fails.
 # Usage: bash tests/archive_urls.sh SOURCE_DIR        (exit 77, skipped: not a git checkout)
 set -euo pipefail
 src=$1
@@ -41,21 +42,21 @@ scan() {
 # 1. The checker on lines made here: each must be found, the allowed ones must not.
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-s=http
+s=http t=https d=debian
 {
-  printf 'deb %s://mirror.vsgl-selftest.net/repo bookworm main\n' "$s"
-  printf '  deb-src [signed-by=/k.gpg] %s://mirror.vsgl-selftest.net/repo bookworm main\n' "$s"
-  printf 'URIs: %s://mirror.vsgl-selftest.net/repo\n' "$s"
-  printf 'see %s://files.vsgl-selftest.net/debian/pool/main/\n' "$s"
-  printf 'see %s://files.vsgl-selftest.net/ubuntu\n' "$s"
-  printf 'curl %s://deb.%s.org/x\n' "$s" debian
-  printf 'curl %ss://apt.vsgl-selftest.net/gpg\n' "$s"
+  echo "deb ${s}://mirror.vsgl-selftest.net/repo bookworm main"
+  echo "  deb-src [signed-by=/k.gpg] ${s}://mirror.vsgl-selftest.net/repo bookworm main"
+  echo "URIs: ${s}://mirror.vsgl-selftest.net/repo"
+  echo "see ${s}://files.vsgl-selftest.net/debian/pool/main/"
+  echo "see ${s}://files.vsgl-selftest.net/ubuntu"
+  echo "curl ${s}://deb.${d}.org/x"
+  echo "curl ${t}://apt.vsgl-selftest.net/gpg"
 } >"$work/bad.txt"
 {
-  printf 'deb %s://mirror.example/debian bookworm main\n' "$s"
-  printf 'Format: %ss://www.%s.org/doc/packaging-manuals/copyright-format/1.0/\n' "$s" debian
-  printf 'see %s://files.vsgl-selftest.net/debianutils/\n' "$s"
-  printf 'the deb file, deb822 format\n'
+  echo "deb ${s}://mirror.example/debian bookworm main"
+  echo "Format: ${t}://www.${d}.org/doc/packaging-manuals/copyright-format/1.0/"
+  echo "see ${s}://files.vsgl-selftest.net/debianutils/"
+  echo "the deb file, deb822 format"
 } >"$work/good.txt"
 found=$(scan "$work/bad.txt" | cut -d: -f2 | sort -un | tr '\n' ' ')
 expected=$(seq 1 "$(wc -l <"$work/bad.txt")" | tr '\n' ' ')
