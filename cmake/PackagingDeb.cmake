@@ -30,8 +30,8 @@ Copyright: ${CPACK_VSGL_COPYRIGHT_YEARS} the ${CPACK_PACKAGE_NAME} authors
 License: Apache-2.0
 Comment: The programs also hold code of header-only libraries compiled into
  them: nlohmann-json (MIT), GLM (MIT), CLI11 (BSD-3-Clause) and the Vulkan
- headers (Apache-2.0 or MIT); each one's Debian package's copyright file has
- its licence. The paper's scenes are not in this package (docs/scenes.md).
+ headers (Apache-2.0); each one's Debian package's copyright file has its
+ licence. The paper's scenes are not in this package (docs/scenes.md).
 
 License: Apache-2.0
  Licensed under the Apache License, Version 2.0 (the \"License\");
