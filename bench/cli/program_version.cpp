@@ -11,7 +11,7 @@ std::string vulkan_header_version() { return api_version_string(VK_HEADER_VERSIO
 
 std::string program_version_text(const std::string& program) {
   return version_text(program) + "\nVulkan headers " + vulkan_header_version() + "\nlicence " + kLicence +
-         " (Apache License, Version 2.0; see LICENSE and NOTICE)";
+         " (the Apache License, Version 2.0)";
 }
 
 }  // namespace vsgl::cli

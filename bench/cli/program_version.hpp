@@ -5,7 +5,8 @@
 
 namespace vsgl::cli {
 
-// The licence every program is distributed under (SPDX identifier): LICENSE and NOTICE.
+// The licence every program is distributed under (SPDX identifier); its text is LICENSE (in the
+// .deb, /usr/share/doc/vsgl-bench/copyright).
 inline constexpr const char* kLicence = "Apache-2.0";
 
 // "1.3.239": VK_HEADER_VERSION_COMPLETE of the headers this build included; a driver may offer
