@@ -31,12 +31,16 @@ packages=(
   assimp-testmodels                       # sample glTF and OBJ files the tests import
   python3-jsonschema                      # second validator of the committed results (tests/validate_results.py)
   clang-format                            # ci/check-format.sh: the changed lines follow .clang-format
+  help2man                                # the manual pages, made from each program's --help at build time
+  dpkg-dev                                # dpkg-shlibdeps: the .deb's dependencies (cpack, the package_deb test)
+  lintian                                 # ci/release.sh checks the .deb
+  debootstrap                             # ci/package-trial.sh: a minimal Debian to install the .deb on
 )
 if $windows; then
   packages+=(
     # The Windows build (windows-cross preset, ci/windows-deps.sh) and its run under Wine (ci/windows-test.sh)
     g++-mingw-w64-x86-64-posix mingw-w64-tools libz-mingw-w64-dev  # cross compiler, gendef, zlib
-    dpkg-dev                              # apt-get source unpacks OpenEXR, Imath, Benchmark
+    # (dpkg-dev, above, also unpacks the OpenEXR, Imath and Benchmark sources apt-get source fetches)
     wine wine64 xvfb xauth                # Wine runs the .exe files; its Vulkan needs an X display
   )
 fi
@@ -71,12 +75,21 @@ for p in "${packages[@]}"; do
   [[ "$status" == "install ok installed" ]] || missing+=("$p")
 done
 # ci/windows-deps.sh builds OpenEXR, Imath and Google Benchmark for Windows from Debian's source
-# packages, which `apt-get source` fetches only with a deb-src line for Debian's main archive.
+# packages, which `apt-get source` fetches only with a deb-src source for Debian's main archive.
+# It is added for the mirror this machine's apt already uses (ci/debian-mirror.sh), never another.
 deb_src_file=/etc/apt/sources.list.d/vsgl-deb-src.sources
 need_deb_src=false
 if $windows && [[ "$os_id" == "debian" ]] &&
-   ! grep -rqsE '^(Types:.*deb-src|deb-src )' /etc/apt/sources.list /etc/apt/sources.list.d/; then
+   ! grep -rqsE '^[[:space:]]*(Types:.*deb-src|deb-src )' /etc/apt/sources.list /etc/apt/sources.list.d/; then
   need_deb_src=true
+  mirror=$(bash "$(dirname "$0")/debian-mirror.sh") || {
+    echo "ci/install-deps.sh: the Windows build needs Debian's source packages (a deb-src source), and" >&2
+    echo "  this machine's apt sources name no Debian archive to take them from (see above). Add a deb-src" >&2
+    echo "  source for your mirror by hand, or run with --no-windows." >&2
+    exit 1
+  }
+  keyring=$(bash "$(dirname "$0")/debian-mirror.sh" --signed-by)
+  [[ -n $keyring ]] || keyring=/usr/share/keyrings/debian-archive-keyring.gpg
 fi
 if [[ ${#missing[@]} -eq 0 && $need_deb_src == false ]]; then
   echo "ci/install-deps.sh: all ${#packages[@]} packages are installed."
@@ -95,9 +108,9 @@ else
 fi
 if [[ $need_deb_src == true ]]; then
   codename=$(. /etc/os-release && echo "${VERSION_CODENAME:-bookworm}")
-  echo "ci/install-deps.sh: adding $deb_src_file (Debian's source packages, for ci/windows-deps.sh)"
-  printf 'Types: deb-src\nURIs: http://deb.debian.org/debian\nSuites: %s\nComponents: main\nSigned-By: /usr/share/keyrings/debian-archive-keyring.gpg\n' \
-    "$codename" | "${sudo[@]}" tee "$deb_src_file" >/dev/null
+  echo "ci/install-deps.sh: adding $deb_src_file (Debian's source packages from $mirror, for ci/windows-deps.sh)"
+  printf 'Types: deb-src\nURIs: %s\nSuites: %s\nComponents: main\nSigned-By: %s\n' \
+    "$mirror" "$codename" "$keyring" | "${sudo[@]}" tee "$deb_src_file" >/dev/null
 fi
 export DEBIAN_FRONTEND=noninteractive
 "${sudo[@]}" apt-get update -qq

@@ -6,21 +6,27 @@
 # programs run: `vsgl-bench devices`, `vsgl-bench record --scene tiny`, `vsgl-bench tables --quick`.
 # Prints the figures: package size, chroot size before and after, install time, packages pulled in.
 #
-# Usage (as root, with network access to Debian's archive; not part of ci/test.sh):
+# Usage (as root, with network access to the Debian mirror; not part of ci/test.sh):
 #   cmake --preset ci && cmake --build --preset ci
 #   cpack --config build/ci/CPackConfig.cmake -B build/ci/package      # needs dpkg-dev
 #   bash ci/package-trial.sh [build/ci/package/vsgl-bench_*.deb]
 # Without an argument it takes the one .deb under build/ci/package.
-# Environment: VSGL_TRIAL_MIRROR (default http://deb.debian.org/debian), VSGL_TRIAL_SUITE
-# (default bookworm), VSGL_TRIAL_KEEP=1 keeps the chroot (its path is printed) instead of removing it.
+# Environment: VSGL_TRIAL_MIRROR (no default: without it, the mirror this machine's apt uses for
+# the suite, found by ci/debian-mirror.sh), VSGL_TRIAL_SUITE (default bookworm), VSGL_TRIAL_KEEP=1
+# keeps the chroot (its path is printed) instead of removing it.
 # Needs debootstrap (apt-get install debootstrap). Exit 0 only when every step passed.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 
-mirror=${VSGL_TRIAL_MIRROR:-http://deb.debian.org/debian}
 suite=${VSGL_TRIAL_SUITE:-bookworm}
 
 die() { echo "ci/package-trial.sh: $*" >&2; exit 2; }
+if [[ -n ${VSGL_TRIAL_MIRROR:-} ]]; then
+  mirror=$VSGL_TRIAL_MIRROR
+else
+  mirror=$(bash ci/debian-mirror.sh --suite "$suite") ||
+    die "no Debian mirror for $suite in this machine's apt sources: set VSGL_TRIAL_MIRROR=<archive URI>"
+fi
 [[ $(id -u) -eq 0 ]] || die "needs root (debootstrap, chroot, mount)"
 command -v debootstrap >/dev/null || die "needs debootstrap: apt-get install debootstrap"
 if [[ $# -ge 1 ]]; then

@@ -1,7 +1,8 @@
 # Install rules and packages (DESIGN.md §13): `cmake --install` puts the three programs in
-# <prefix>/bin and the README in <prefix>/share/doc/vsgl-bench; `cpack` turns the same tree into a
-# .tar.gz and, on Linux, a Debian package whose run-time dependencies dpkg-shlibdeps computes
-# from the binaries (Debian package dpkg-dev).
+# <prefix>/bin, their manual pages in <prefix>/share/man/man1 (cmake/ManPages.cmake) and the README,
+# LICENSE and NOTICE in <prefix>/share/doc/vsgl-bench; `cpack` turns the same tree into a .tar.gz
+# and, on Linux, a Debian package whose run-time dependencies dpkg-shlibdeps computes from the
+# binaries (Debian package dpkg-dev).
 include(GNUInstallDirs)
 
 set(VSGL_PACKAGE_NAME vsgl-bench)
@@ -13,8 +14,20 @@ if(TARGET vsgl-gbench)
   list(APPEND VSGL_INSTALLED_PROGRAMS vsgl-gbench vsgl-mipbench)
 endif()
 install(TARGETS ${VSGL_INSTALLED_PROGRAMS} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-# The repository has no licence file; the README is the only document to install.
-install(FILES ${PROJECT_SOURCE_DIR}/README.md DESTINATION ${VSGL_INSTALL_DOCDIR})
+install(FILES ${PROJECT_SOURCE_DIR}/README.md ${PROJECT_SOURCE_DIR}/NOTICE DESTINATION ${VSGL_INSTALL_DOCDIR})
+# The licence text in a component of its own: the .deb leaves it out (cmake/PackagingDeb.cmake),
+# as Debian's copyright file carries the licence there.
+install(FILES ${PROJECT_SOURCE_DIR}/LICENSE DESTINATION ${VSGL_INSTALL_DOCDIR} COMPONENT licence_text)
+include(${CMAKE_CURRENT_LIST_DIR}/ManPages.cmake)
+
+# The version the packages carry: the project's, or what ci/release.sh stamps (the latest tag, or
+# the project's version plus the commit). A Debian upstream version without a hyphen (a native
+# package): it starts with a digit and holds letters, digits and . + ~ only.
+set(VSGL_PACKAGE_VERSION ${PROJECT_VERSION} CACHE STRING "the version in the packages' names and metadata")
+if(NOT VSGL_PACKAGE_VERSION MATCHES "^[0-9][A-Za-z0-9.+~]*$")
+  message(FATAL_ERROR "VSGL_PACKAGE_VERSION '${VSGL_PACKAGE_VERSION}': expected a version that starts with a "
+                      "digit and holds letters, digits and . + ~ only (e.g. 0.1.0 or 0.1.0+g1a2b3c4)")
+endif()
 
 # A placeholder address (RFC 2606): whoever publishes the package sets their own.
 set(VSGL_PACKAGE_MAINTAINER "vsgl-bench maintainers <maintainers@vsgl-bench.example>"
@@ -22,7 +35,7 @@ set(VSGL_PACKAGE_MAINTAINER "vsgl-bench maintainers <maintainers@vsgl-bench.exam
 
 set(CPACK_PACKAGE_NAME ${VSGL_PACKAGE_NAME})
 set(CPACK_PACKAGE_VENDOR "vsgl-bench")
-set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
+set(CPACK_PACKAGE_VERSION ${VSGL_PACKAGE_VERSION})
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "Vulkan benchmark of virtual spherical Gaussian light generation")
 # Lines of at most 80 characters (Debian's extended description).
 set(CPACK_PACKAGE_DESCRIPTION
@@ -59,6 +72,13 @@ set(CPACK_DEBIAN_COMPRESSION_TYPE xz)
 # them to the .deb alone.
 set(CPACK_PROJECT_CONFIG_FILE ${CMAKE_CURRENT_LIST_DIR}/PackagingDeb.cmake)
 set(CPACK_VSGL_WORK_DIR ${PROJECT_BINARY_DIR}/package-doc)
+set(CPACK_VSGL_BUILD_DIR ${PROJECT_BINARY_DIR})
+set(CPACK_VSGL_PROJECT_NAME ${PROJECT_NAME})
 set(CPACK_VSGL_COPYRIGHT_YEARS 2026)  # the years of the repository's commits
 
 include(CPack)
+
+# The Windows zip of the three programs (windows-cross preset), named with the same version.
+if(WIN32 AND VSGL_BUILD_BENCHMARKS)
+  include(${CMAKE_CURRENT_LIST_DIR}/WindowsZip.cmake)
+endif()

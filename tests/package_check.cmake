@@ -1,11 +1,13 @@
 # `cpack -G TGZ` of the build (DESIGN.md §13), then what the archive lists: one top directory
-# holding the programs in <bindir> and the README in <docdir>, and neither the .deb's copyright
-# file nor its changelog, which cmake/PackagingDeb.cmake adds to the .deb alone.
+# holding the programs in <bindir>, the README, LICENSE and NOTICE in <docdir>, the manual pages
+# in <mandir>/man1 where the build made them, and neither the .deb's copyright file nor its
+# changelog, which cmake/PackagingDeb.cmake adds to the .deb alone.
 # Run by ctest: cmake -DCPACK=cpack -DBUILD_DIR=... -DOUT=... -DBINDIR=bin
-#                     -DDOCDIR=share/doc/vsgl-bench -DPROGRAMS=a,b -P package_check.cmake
+#                     -DDOCDIR=share/doc/vsgl-bench -DMANDIR=share/man -DMAN_PAGES=a.1.gz,b.1.gz
+#                     -DPROGRAMS=a,b -P package_check.cmake        (MAN_PAGES empty: none made)
 cmake_minimum_required(VERSION 3.25)  # script mode: today's policies (IN_LIST)
 
-foreach(var CPACK BUILD_DIR OUT BINDIR DOCDIR PROGRAMS)
+foreach(var CPACK BUILD_DIR OUT BINDIR DOCDIR MANDIR MAN_PAGES PROGRAMS)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "package_check.cmake: -D${var}=... is missing")
   endif()
@@ -38,9 +40,17 @@ foreach(expected IN LISTS programs)
     string(APPEND failures "missing ${top}/${BINDIR}/${expected}\n")
   endif()
 endforeach()
-if(NOT "${top}/${DOCDIR}/README.md" IN_LIST entries)
-  string(APPEND failures "missing ${top}/${DOCDIR}/README.md\n")
-endif()
+foreach(doc README.md LICENSE NOTICE)
+  if(NOT "${top}/${DOCDIR}/${doc}" IN_LIST entries)
+    string(APPEND failures "missing ${top}/${DOCDIR}/${doc}\n")
+  endif()
+endforeach()
+string(REPLACE "," ";" man_pages "${MAN_PAGES}")
+foreach(page IN LISTS man_pages)
+  if(NOT "${top}/${MANDIR}/man1/${page}" IN_LIST entries)
+    string(APPEND failures "missing the manual page ${top}/${MANDIR}/man1/${page}\n")
+  endif()
+endforeach()
 foreach(entry IN LISTS entries)
   if(entry MATCHES "/(copyright|changelog\\.gz)$")
     string(APPEND failures "the .deb's ${entry} is in the .tar.gz\n")

@@ -13,6 +13,9 @@
 
 #include <unistd.h>
 
+#include <vulkan/vulkan.h>
+
+#include "bench/cli/program_version.hpp"
 #include "harness/core/build_info.hpp"
 #include "harness/core/version.hpp"
 #include "harness/formats/run_header.hpp"
@@ -129,13 +132,23 @@ TEST(RunProvenance, TheJsonAndVersionNameTheBuildsCommitAndCompiler) {
   EXPECT_NE(v.find("compiler " + compiler_description()), std::string::npos) << v;
 }
 
-// `vsgl-bench --version`, without a device: the version, the build's commit and the compiler.
-TEST(VersionUsage, VersionNamesTheCommitAndTheCompiler) {
+// `vsgl-bench --version`, without a device: the version, the build's commit, the compiler, the
+// Vulkan headers it was compiled against and the licence, one a line.
+TEST(VersionUsage, VersionNamesTheCommitCompilerVulkanHeadersAndLicence) {
   const auto r = test::run_cli_without_vulkan("--version");
   EXPECT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_NE(r.output.find("vsgl-bench 0."), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("commit " + build_info().git_commit), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("compiler " + compiler_description()), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("vsgl-bench " + std::string(kVersionString) + "\n"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("\ncommit " + build_info().git_commit), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("\ncompiler " + compiler_description() + "\n"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("\nVulkan headers " + cli::vulkan_header_version() + "\n"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("\nlicence Apache-2.0 "), std::string::npos) << r.output;
+}
+
+// The Vulkan header version is the one this file was compiled against, as "major.minor.patch".
+TEST(VersionUsage, VulkanHeaderVersionIsTheIncludedHeaders) {
+  EXPECT_EQ(cli::vulkan_header_version(), std::to_string(VK_API_VERSION_MAJOR(VK_HEADER_VERSION_COMPLETE)) + "." +
+                                              std::to_string(VK_API_VERSION_MINOR(VK_HEADER_VERSION_COMPLETE)) + "." +
+                                              std::to_string(VK_HEADER_VERSION));
 }
 
 }  // namespace

@@ -10,16 +10,16 @@
 #include "bench/cli/command_summaries.hpp"
 #include "bench/cli/commands.hpp"
 #include "bench/cli/exit_codes.hpp"
-#include "harness/core/build_info.hpp"
+#include "bench/cli/program_version.hpp"
 #include "harness/core/error.hpp"
 
 namespace vsgl::cli {
 
 int vsgl_bench_command_line(int argc, char** argv, const TablesExtension& tables_extension) {
   CLI::App app("vsgl-bench: GPU timing of VSGL generators (Tokuyoshi 2016, Tables 1-3)", "vsgl-bench");
-  // The version, the commit the build was made from (and whether it was dirty) and the compiler,
-  // as fixed at build time (harness/core/build_info.hpp): true wherever the binary was copied.
-  app.set_version_flag("--version", version_text("vsgl-bench"));
+  // The version, the commit the build was made from (and whether it was dirty), the compiler and
+  // the Vulkan headers, as fixed at build time: true wherever the binary was copied; the licence.
+  app.set_version_flag("--version", program_version_text("vsgl-bench"));
   app.footer(exit_codes_help());  // inherited by every command's help
   // CLI11 takes "/name" for an option on Windows by default; here it is a path, as elsewhere.
   app.allow_windows_style_options(false);

@@ -22,8 +22,9 @@ BuildInfo build_info();
 // "GCC 12.2.0", "Clang 16.0.6", ... from the compiler's predefined macros.
 std::string compiler_description();
 
-// The `--version` text: "vsgl-bench 0.1.0, commit <id>[ (dirty)], built with <compiler>", with
-// the reason when the commit is unknown.
+// The build's part of the `--version` text (bench/cli/program_version.hpp adds the Vulkan headers
+// and the licence): "<program> 0.1.0", "commit <id>[ (dirty)]" with the reason when the commit is
+// unknown, "compiler <compiler>", one a line.
 std::string version_text(const std::string& program);
 
 }  // namespace vsgl
