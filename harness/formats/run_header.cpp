@@ -3,10 +3,8 @@
 #include <cstdint>
 #include <string_view>
 
-#include "harness/core/build_info.hpp"
 #include "harness/core/json_reader.hpp"
 #include "harness/core/sorted_json.hpp"
-#include "harness/core/version.hpp"
 
 namespace vsgl {
 namespace {
@@ -27,16 +25,6 @@ void require_object(const JsonReader& r, const ojson& value, const std::string& 
 }
 
 }  // namespace
-
-BuildRecord this_build() {
-  const BuildInfo b = build_info();
-#ifdef NDEBUG
-  constexpr bool kAssertions = false;
-#else
-  constexpr bool kAssertions = true;
-#endif
-  return {kVersionString, b.git_commit, b.git_dirty, compiler_description(), kAssertions};
-}
 
 nlohmann::ordered_json to_json(const DeviceRecord& d) {
   ojson out{{"index", d.index},
