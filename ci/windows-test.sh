@@ -92,8 +92,10 @@ gpu_suites='*Test.*:*Cli.*:DeviceProbe.*:ValidationLayer.*'
 # The tests that cannot hold under Wine or on a Windows file system, each with why.
 not_here=(
   # VK_ICD_FILENAMES does not reach the host's loader behind Wine's vulkan-1.dll: the device is
-  # still there, so the driver-less controls cannot be made.
+  # still there, so the driver-less controls cannot be made (the last one's test build would run
+  # a whole table instead of stopping at "no driver").
   CliUsage.ControlWithoutADriverAnyCommandReachingTheDeviceExitsFour CliUsage.DocumentedOptionsAreAccepted
+  CliUsage.DebugSlowIsAnOptionOfTheTestBuildOnly
   # Two file names that differ only in case, and a control character in a file name: Windows'
   # file systems refuse both.
   ObjImport.ModelImportChoosesByExtension ObjImport.BadFilesNameTheFileAndLine
