@@ -7,8 +7,10 @@
 layout(std430, binding = 1) writeonly buffer Pyramid { vec4 pyramid_texels[]; };
 #include "fis_additional.glsl"
 
-void store_moments(uvec2 p, uint i, vec4 m0, vec4 m1, vec4 m2) {
+void store_moments(uvec2 p, uint i, vec4 m0, vec4 m1, vec4 m2, vec4 m3, vec4 m4) {
   pyramid_texels[i] = m0;
   pyramid_texels[pc.pyramid_total + i] = m1;
   pyramid_texels[2u * pc.pyramid_total + i] = m2;
+  pyramid_texels[3u * pc.pyramid_total + i] = m3;
+  pyramid_texels[4u * pc.pyramid_total + i] = m4;
 }

@@ -17,7 +17,7 @@ void main() {
   if (p.x >= pyramid_level_width(dst) || p.y >= pyramid_level_height(dst)) return;
   ivec2 c = ivec2(p) * 2;
   uint out_index = pyramid_offset[dst] + p.y * pyramid_level_width(dst) + p.x;
-  for (uint layer = 0u; layer < 3u; ++layer) {
+  for (uint layer = 0u; layer < kMomentLayers; ++layer) {
     pyramid_texels[layer * pyramid_total + out_index] =
         mip_average(pyramid_texel(layer, pc.source_level, c), pyramid_texel(layer, pc.source_level, c + ivec2(1, 0)),
                     pyramid_texel(layer, pc.source_level, c + ivec2(0, 1)),

@@ -23,7 +23,7 @@ void main() {
   uvec2 p = gl_GlobalInvocationID.xy;
   if (p.x >= pyramid_level_width(dst) || p.y >= pyramid_level_height(dst)) return;
   ivec2 c = ivec2(p) * 2;
-  for (uint layer = 0u; layer < 3u; ++layer)
+  for (uint layer = 0u; layer < kMomentLayers; ++layer)
     imageStore(destination, ivec3(p, int(layer)),
                mip_average(child(layer, c), child(layer, c + ivec2(1, 0)), child(layer, c + ivec2(0, 1)),
                            child(layer, c + ivec2(1, 1))));

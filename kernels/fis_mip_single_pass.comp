@@ -15,7 +15,7 @@
 #include "fis_spd_mid.glsl"
 layout(local_size_x_id = 0, local_size_y_id = 1) in;
 
-// Level-6 (and coarser) texels of the 3 layers, level after level (in-bounds extents only).
+// Level-6 (and coarser) texels of the kMomentLayers layers, level after level (in-bounds extents only).
 layout(std430, binding = 0) writeonly buffer Mid { vec4 mid[]; };
 layout(binding = 1, rgba32f) uniform readonly image2DArray level0;
 // Levels 1..6 (entries above L repeat level L and are never written).
@@ -59,7 +59,7 @@ void main() {
   uvec2 g = gl_WorkGroupID.xy;
   uint stride = spd_mid_layer_texels();  // one layer's part of `mid`
 
-  for (uint layer = 0u; layer < 3u; ++layer) {
+  for (uint layer = 0u; layer < kMomentLayers; ++layer) {
     // Levels 1 and 2 in registers: this thread's 4x4 texels of level 0.
     ivec2 b0 = ivec2(g * 64u + tl * 4u);
     vec4 l1[4];

@@ -41,7 +41,7 @@ void main() {
   uint stride = spd_mid_layer_texels();
   for (uint k = kFisSpdTileLevels + 1u; k <= pyramid_levels; ++k) {
     uint w = pyramid_level_width(k), h = pyramid_level_height(k);
-    for (uint layer = 0u; layer < 3u; ++layer)
+    for (uint layer = 0u; layer < kMomentLayers; ++layer)
       for (uint idx = t; idx < w * h; idx += threads) {
         ivec2 p = ivec2(idx % w, idx / w);
         ivec2 c = p * 2;

@@ -29,9 +29,9 @@ void main() {
     vec4 t1 = view_normal_pdf(i);
     vec4 t2 = view_diffuse_roughness(i);
     vec4 t3 = view_specular(i);
-    vec4 m0, m1, m2;
+    vec4 m0, m1, m2, m3, m4;
     texel_moments(t0.w > 0.5, t0.xyz, t1.xyz, t2.xyz, t3.xyz, t2.w, t1.w, pc.source_position.xyz,
-                  pc.camera_view != 0u, m0, m1, m2);
+                  pc.camera_view != 0u, m0, m1, m2, m3, m4);
     bool member = t0.w > 0.5 && !(m0.w == 0.0 && m2.w == 0.0);
     vec3 f = pc.space3d != 0u ? t0.xyz : vec3(vec2(p) + 0.5, 0.0);
     features[i] = vec4(f, member ? m2.w : -1.0);

@@ -7,7 +7,7 @@
 #include "interface/kmeans.h"
 layout(local_size_x_id = 0) in;  // kKmeansNarrowGroupSize (interface/kmeans.h)
 layout(std430, binding = 0) readonly buffer Ranges { uvec2 ranges[]; };
-layout(std430, binding = 1) readonly buffer Pieces { vec4 pieces[]; };  // 4 vec4 per slot
+layout(std430, binding = 1) readonly buffer Pieces { vec4 pieces[]; };  // kKmeansPieceVec4s vec4 per slot
 layout(std430, binding = 2) readonly buffer Centres { vec4 centres[]; };
 layout(std430, binding = 3) writeonly buffer Vsgls { Vsgl vsgls[]; };
 #include "kmeans_cluster.glsl"
@@ -15,10 +15,13 @@ layout(std430, binding = 3) writeonly buffer Vsgls { Vsgl vsgls[]; };
 
 ClusterMoments load_piece(uint slot) {
   ClusterMoments s;
-  s.m0 = pieces[4u * slot];
-  s.m1 = pieces[4u * slot + 1u];
-  s.m2 = pieces[4u * slot + 2u];
-  s.pixels = pieces[4u * slot + 3u].xy;
+  uint b = kKmeansPieceVec4s * slot;
+  s.m0 = pieces[b];
+  s.m1 = pieces[b + 1u];
+  s.m2 = pieces[b + 2u];
+  s.m3 = pieces[b + 3u];
+  s.m4 = pieces[b + 4u];
+  s.pixels = pieces[b + 5u].xy;
   return s;
 }
 

@@ -10,16 +10,19 @@
 layout(local_size_x_id = 0) in;  // kKmeansNarrowGroupSize (interface/kmeans.h)
 #include "view_layers.glsl"
 layout(std430, binding = 1) readonly buffer Sorted { uvec2 sorted_pairs[]; };
-layout(std430, binding = 2) writeonly buffer Pieces { vec4 pieces[]; };  // 4 vec4 per slot
+layout(std430, binding = 2) writeonly buffer Pieces { vec4 pieces[]; };  // kKmeansPieceVec4s vec4 per slot
 #define KMEANS_READS_VIEW
 #include "kmeans_cluster.glsl"
 #include "kmeans_sum_push.glsl"
 
 void store_piece(uint slot, ClusterMoments s) {
-  pieces[4u * slot] = s.m0;
-  pieces[4u * slot + 1u] = s.m1;
-  pieces[4u * slot + 2u] = s.m2;
-  pieces[4u * slot + 3u] = vec4(s.pixels, 0.0, 0.0);
+  uint b = kKmeansPieceVec4s * slot;
+  pieces[b] = s.m0;
+  pieces[b + 1u] = s.m1;
+  pieces[b + 2u] = s.m2;
+  pieces[b + 3u] = s.m3;
+  pieces[b + 4u] = s.m4;
+  pieces[b + 5u] = vec4(s.pixels, 0.0, 0.0);
 }
 
 void main() {

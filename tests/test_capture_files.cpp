@@ -93,6 +93,8 @@ Capture make_capture() {
   meta.tool_version = "0.1.0-test";
   meta.brsm_build_ms = 1.25;
   meta.brsm_pyramid = PyramidPath::kTexture;  // not the usual path, so the round trip shows it is read
+  meta.brsm_importance = std::string(kBrsmImportanceModel);
+  meta.brsm_bias_alpha = gpu::kBiasReductionAlpha;
   fill_view(capture.gbuffer, ViewKind::kCamera, 64, 48, 1234u);
   fill_view(capture.rsm, ViewKind::kLight, 32, 32, 5678u);
   return capture;
@@ -270,6 +272,48 @@ TEST(CaptureIo, RsmWithPdfWhileSidecarSaysNoneIsRejected) {
   capture.rsm.has_pdf = true;
   rewrite_view(temp.path(), capture.rsm, /*with_pdf=*/true);
   expect_load_fails(temp.path(), {"rsm.exr", "unexpected extra channel", "\"pdf\""});
+}
+
+// DESIGN.md §8: a BRSM PDF made by another importance than this version's is refused, naming why
+// and what to do; a capture without a PDF needs none.
+TEST(CaptureIo, PdfOfAnOlderImportanceIsRefused) {
+  {
+    TempDir temp;
+    Capture capture = make_capture();
+    capture.meta.brsm_importance.clear();  // written before the key: the old importance
+    write_capture(capture, temp.path());
+    expect_load_fails(temp.path(), {"capture.json", "older importance", "record the capture again"});
+  }
+  {
+    TempDir temp;
+    Capture capture = make_capture();
+    capture.meta.brsm_importance = "vpl-lobe-sg";
+    write_capture(capture, temp.path());
+    expect_load_fails(temp.path(), {"capture.json", "vpl-lobe-sg", std::string(kBrsmImportanceModel)});
+  }
+  {
+    TempDir temp;
+    Capture capture = make_capture();
+    capture.meta.brsm_bias_alpha = 0.5;
+    write_capture(capture, temp.path());
+    expect_load_fails(temp.path(), {"capture.json", "alpha 0.5"});
+  }
+  {
+    TempDir temp;
+    Capture capture = make_capture();
+    capture.meta.brsm_importance.clear();
+    capture.rsm.has_pdf = false;
+    write_capture(capture, temp.path());
+    const Capture loaded = load_capture(temp.path());
+    EXPECT_FALSE(loaded.rsm.has_pdf);
+  }
+  {
+    TempDir temp;
+    write_capture(make_capture(), temp.path());
+    const Capture loaded = load_capture(temp.path());
+    EXPECT_EQ(loaded.meta.brsm_importance, kBrsmImportanceModel);
+    EXPECT_EQ(loaded.meta.brsm_bias_alpha, double{gpu::kBiasReductionAlpha});
+  }
 }
 
 TEST(CaptureIo, MissingDirectoryIsRejected) {

@@ -61,19 +61,19 @@ TEST(FisTraffic, LeastBytesByHand) {
   // 3 x 2 texels: S = 4, L = 2; levels 3x2 (6), 2x1 (2), 1x1 (1).
   const FisPassBytes b = fis_minimum_bytes(3, 2);
   EXPECT_EQ(b.additional.read, 6u * 15u * 4u);  // 15 float32 capture channels
-  EXPECT_EQ(b.additional.written, 6u * 48u);    // 3 vec4 float32 moment layers
-  EXPECT_EQ(b.mipmapping.read, 6u * 48u);       // level 0 once
-  EXPECT_EQ(b.mipmapping.written, (2u + 1u) * 48u);
-  EXPECT_EQ(b.mipmapping_level_by_level.read, (6u + 2u) * 48u);
-  EXPECT_EQ(b.mipmapping_level_by_level.written, (2u + 1u) * 48u);
+  EXPECT_EQ(b.additional.written, 6u * 80u);    // 5 vec4 float32 moment layers
+  EXPECT_EQ(b.mipmapping.read, 6u * 80u);       // level 0 once
+  EXPECT_EQ(b.mipmapping.written, (2u + 1u) * 80u);
+  EXPECT_EQ(b.mipmapping_level_by_level.read, (6u + 2u) * 80u);
+  EXPECT_EQ(b.mipmapping_level_by_level.written, (2u + 1u) * 80u);
   EXPECT_EQ(b.additional.total(), b.additional.read + b.additional.written);
   // The paper's G-buffer: 1920 x 1088 texels, S = 2048, L = 11.
   const FisPassBytes g = fis_minimum_bytes(1920, 1088);
-  EXPECT_EQ(g.additional.total(), 1920ull * 1088 * 108);
+  EXPECT_EQ(g.additional.total(), 1920ull * 1088 * 140);
   uint64_t upper = 0;
   for (uint32_t l = 1; l <= 11; ++l) upper += uint64_t{((1920u - 1) >> l) + 1} * (((1088u - 1) >> l) + 1);
-  EXPECT_EQ(g.mipmapping.written, upper * 48);
-  EXPECT_LT(g.mipmapping.written, g.mipmapping.read / 3 + 48 * 64);  // about a third of level 0
+  EXPECT_EQ(g.mipmapping.written, upper * 80);
+  EXPECT_LT(g.mipmapping.written, g.mipmapping.read / 3 + 80 * 64);  // about a third of level 0
   EXPECT_FALSE(fis_traffic_model().empty());
   EXPECT_THROW(fis_minimum_bytes(0, 4), InputError);
 }

@@ -23,10 +23,10 @@ class FisGeneratorTest : public test::GpuTest {
 
   void run(FisGenerator& gen) { run_untimed(device(), gen); }
 
-  std::array<MipPyramid, 3> download_pyramids(const FisGenerator& gen, const VirtualSquare& sq) {
+  MomentPyramids download_pyramids(const FisGenerator& gen, const VirtualSquare& sq) {
     const auto all = gen.download_pyramid(device());
-    std::array<MipPyramid, 3> out;
-    for (uint32_t layer = 0; layer < 3; ++layer) {
+    MomentPyramids out;
+    for (uint32_t layer = 0; layer < kMomentLayerCount; ++layer) {
       out[layer].square = sq;
       out[layer].texels.assign(all.begin() + layer * sq.total_texels(), all.begin() + (layer + 1) * sq.total_texels());
     }
@@ -50,15 +50,15 @@ class FisGeneratorTest : public test::GpuTest {
 
     // "additional": level 0 against the CPU moments (transcendental maths: float tolerance).
     const auto cpu_moments = reference_moments(capture.view(kind), view.source_position);
-    for (uint32_t layer = 0; layer < 3; ++layer)
+    for (uint32_t layer = 0; layer < kMomentLayerCount; ++layer)
       for (uint32_t i = 0; i < sq.level_texels(0); ++i)
         for (int c = 0; c < 4; ++c) {
           const float a = gpu[layer].texels[i][c], b = cpu_moments[layer][i][c];
           ASSERT_NEAR(a, b, 1e-5f * std::max(1.0f, std::abs(b))) << "layer " << layer << " texel " << i;
         }
     // "mipmapping": bit-exact against the CPU chain of the same level 0.
-    std::array<MipPyramid, 3> cpu;
-    for (uint32_t layer = 0; layer < 3; ++layer) {
+    MomentPyramids cpu;
+    for (uint32_t layer = 0; layer < kMomentLayerCount; ++layer) {
       cpu[layer] = MipPyramid::build(level0(gpu[layer]), sq.width, sq.height);
       ASSERT_EQ(cpu[layer].texels.size(), gpu[layer].texels.size());
       for (std::size_t i = 0; i < cpu[layer].texels.size(); ++i)
@@ -80,8 +80,13 @@ class FisGeneratorTest : public test::GpuTest {
         EXPECT_NEAR(got[i].power_sharpness[c], expected[i].power_sharpness[c],
                     2e-3f * std::abs(expected[i].power_sharpness[c]) + 1e-9f)
             << "power channel " << c;
-      for (int c = 0; c < 3; ++c)
+      for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(got[i].specular_power[c], expected[i].specular_power[c],
+                    2e-3f * std::abs(expected[i].specular_power[c]) + 1e-9f)
+            << "specular power channel " << c;
         EXPECT_NEAR(got[i].position_variance[c], expected[i].position_variance[c], 1e-3f) << "mu";
+        EXPECT_NEAR(got[i].normal_length[c], expected[i].normal_length[c], 1e-4f) << "normal";
+      }
     }
   }
 };
@@ -118,8 +123,8 @@ TEST_F(FisGeneratorTest, TexturePathMatchesTheCpuReferenceWithEveryMipStrategy) 
         ASSERT_EQ(gen.pyramid_path(), PyramidPath::kTexture);
         run(gen);
         const auto gpu = download_pyramids(gen, sq);
-        std::array<MipPyramid, 3> cpu;
-        for (uint32_t layer = 0; layer < 3; ++layer) {
+        MomentPyramids cpu;
+        for (uint32_t layer = 0; layer < kMomentLayerCount; ++layer) {
           cpu[layer] = MipPyramid::build(level0(gpu[layer]), sq.width, sq.height);
           if (m == MipStrategy::kBlit) {
             EXPECT_LE(blit_chain_error_ratio(gpu[layer], precision), 1.0) << "layer " << layer;
@@ -129,7 +134,7 @@ TEST_F(FisGeneratorTest, TexturePathMatchesTheCpuReferenceWithEveryMipStrategy) 
             ASSERT_EQ(cpu[layer].texels[i], gpu[layer].texels[i]) << "layer " << layer << " element " << i;
         }
         // Later passes against the pyramid they read (the blit's own, checked just above).
-        const std::array<MipPyramid, 3>& read = m == MipStrategy::kBlit ? gpu : cpu;
+        const MomentPyramids& read = m == MipStrategy::kBlit ? gpu : cpu;
         const auto got = download_vector<VsglRecord>(device(), gen.vsgls(), params.vsgl_count);
         const auto samples = reference_samples(read[2], params.vsgl_count, 0);
         for (uint32_t i = 0; i < params.vsgl_count; ++i) {

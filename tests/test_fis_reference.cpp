@@ -42,11 +42,10 @@ MipPyramid pdf_pyramid(uint32_t w, uint32_t h, const std::function<float(uint32_
 }
 
 // Moment layers of a synthetic light view on the plane z = 0: texel (x, y) at world (x, y, 0),
-// flux `flux(x, y)`, PDF weight `q(x, y)`, lobe along +z with mean length 0.5.
-std::array<MipPyramid, 3> synthetic_moments(uint32_t w, uint32_t h,
-                                            const std::function<glm::vec3(uint32_t, uint32_t)>& flux,
-                                            const std::function<float(uint32_t, uint32_t)>& q) {
-  std::array<std::vector<glm::vec4>, 3> level0;
+// flux `flux(x, y)` (diffuse), PDF weight `q(x, y)`, normal +z, no specular part.
+MomentPyramids synthetic_moments(uint32_t w, uint32_t h, const std::function<glm::vec3(uint32_t, uint32_t)>& flux,
+                                 const std::function<float(uint32_t, uint32_t)>& q) {
+  MomentLayers level0;
   for (auto& l : level0) l.resize(std::size_t{w} * h);
   for (uint32_t y = 0; y < h; ++y) {
     for (uint32_t x = 0; x < w; ++x) {
@@ -56,10 +55,10 @@ std::array<MipPyramid, 3> synthetic_moments(uint32_t w, uint32_t h,
       const std::size_t t = std::size_t{y} * w + x;
       level0[0][t] = glm::vec4(phi, wt);
       level0[1][t] = glm::vec4(wt * P, wt * glm::dot(P, P));
-      level0[2][t] = glm::vec4(0.0f, 0.0f, 0.5f * wt, q(x, y));
+      level0[2][t] = glm::vec4(0.0f, 0.0f, wt, q(x, y));
     }
   }
-  return {MipPyramid::build(level0[0], w, h), MipPyramid::build(level0[1], w, h), MipPyramid::build(level0[2], w, h)};
+  return build_moment_pyramids(level0, w, h);
 }
 
 // ---- virtual square and pyramid ------------------------------------------------------------
@@ -431,8 +430,11 @@ TEST(FisReference, KernelCentredOnATexelReproducesThatTexelForBothVariants) {
         ASSERT_EQ(k.density, 1.0f);
         const glm::vec4 m0 = fetch(moments[0], s.x, k.level);
         ASSERT_EQ(fis_power(variant, glm::vec3(m0), k, params, moments[0].square), flux(x, y));
-        const VsglRecord v = vsgl_from_moments(m0, fetch(moments[1], s.x, k.level), fetch(moments[2], s.x, k.level),
-                                               flux(x, y), k.level, s.x, k.density, 0.0f);
+        const TexelMoments m{m0, fetch(moments[1], s.x, k.level), fetch(moments[2], s.x, k.level),
+                             fetch(moments[3], s.x, k.level), fetch(moments[4], s.x, k.level)};
+        const VsglRecord v =
+            vsgl_from_moments(m, fis_power_scale(variant, k, params, moments[0].square), k.level, s.x, k.density, 0.0f);
+        ASSERT_EQ(v.power(), flux(x, y));
         ASSERT_NEAR(v.mu().x, static_cast<float>(x), 1e-6f * static_cast<float>(S));
         ASSERT_NEAR(v.mu().y, static_cast<float>(y), 1e-6f * static_cast<float>(S));
         ASSERT_EQ(v.mu().z, 0.0f);
@@ -521,8 +523,9 @@ TEST(FisReference, RecordsCentreLevelAndDensityAndAgreesWithItsParts) {
       ASSERT_EQ(vsgls[i].level(), k.level);
       ASSERT_EQ(vsgls[i].density(), k.density);
       ASSERT_EQ(vsgls[i].center_pdf.w, 0.0f);
-      ASSERT_NEAR(vsgls[i].axis().z, 1.0f, 1e-6f);
-      ASSERT_NEAR(vsgls[i].sharpness(), banerjee_sharpness(0.5f), 1e-3f);
+      ASSERT_NEAR(vsgls[i].normal().z, 1.0f, 1e-6f);
+      ASSERT_EQ(vsgls[i].axis(), vsgls[i].normal());  // no specular part: the lobe falls back to the normal
+      ASSERT_EQ(vsgls[i].sharpness(), 0.0f);
       ASSERT_EQ(vsgls[i].mu().z, 0.0f);
     }
   }
@@ -585,6 +588,8 @@ TEST(FisReference, MomentsOfAViewFollowTexelMoments) {
         EXPECT_EQ(layers[0][t], m.m0);
         EXPECT_EQ(layers[1][t], m.m1);
         EXPECT_EQ(layers[2][t], m.m2);
+        EXPECT_EQ(layers[3][t], m.m3);
+        EXPECT_EQ(layers[4][t], m.m4);
         if (view.at(kValid, x, y) == 0.0f) {
           EXPECT_EQ(layers[0][t], glm::vec4(0.0f));
         }

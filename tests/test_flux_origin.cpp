@@ -113,7 +113,7 @@ TEST(FluxOrigin, AnOversizedKernelIsCountedApart) {
 }
 
 // A 32 x 32 view with a PDF that is 0 on a band and varies elsewhere, flux that does not follow it.
-std::array<MipPyramid, 3> uneven_view() {
+MomentPyramids uneven_view() {
   constexpr uint32_t s = 32;
   const auto q = [](uint32_t x, uint32_t y) {
     if (x >= 10 && x < 18) return 0.0f;
@@ -127,8 +127,10 @@ std::array<MipPyramid, 3> uneven_view() {
     const glm::vec3 P(static_cast<float>(x), 0.0f, static_cast<float>(y));
     return glm::vec4(P, glm::dot(P, P));
   });
-  const auto m2 = layer(s, s, [&](uint32_t x, uint32_t y) { return glm::vec4(0.0f, 0.5f, 0.0f, q(x, y)); });
-  return {MipPyramid::build(m0, s, s), MipPyramid::build(m1, s, s), MipPyramid::build(m2, s, s)};
+  const auto m2 = layer(s, s, [&](uint32_t x, uint32_t y) { return glm::vec4(0.0f, 1.75f, 0.0f, q(x, y)); });
+  const auto none = layer(s, s, [](uint32_t, uint32_t) { return glm::vec4(0.0f); });  // no specular part
+  return {MipPyramid::build(m0, s, s), MipPyramid::build(m1, s, s), MipPyramid::build(m2, s, s),
+          MipPyramid::build(none, s, s), MipPyramid::build(none, s, s)};
 }
 
 TEST(FluxOrigin, AttributionSumsToTheGeneratorsPowerAndEq5ConservesThePdf) {

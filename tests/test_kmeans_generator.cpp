@@ -105,11 +105,20 @@ class KmeansGeneratorTest : public test::GpuTest {
       for (int c = 0; c < 3; ++c) EXPECT_NEAR(g.position_variance[c], e.position_variance[c], 1e-4f * scale) << "mu";
       EXPECT_NEAR(g.center_pdf.x, e.center_pdf.x, 1e-5f);
       EXPECT_NEAR(g.center_pdf.y, e.center_pdf.y, 1e-5f);
-      // The lobe axis is a ratio of sums too (skip lobes whose mean length nearly cancels).
-      const float mean_length = static_cast<float>(glm::length(glm::dvec3(sums[k].m2)) / sums[k].m0.w);
-      if (mean_length > 1e-2f) {
+      // The filtered normal and the specular lobe's axis are ratios of sums too (skip those whose
+      // mean length nearly cancels).
+      const float normal_length = static_cast<float>(glm::length(glm::dvec3(sums[k].m2)) / sums[k].m0.w);
+      if (normal_length > 1e-2f) {
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(g.normal_length[c], e.normal_length[c], 1e-3f) << "normal";
+      }
+      const double specular = sums[k].m3.r + sums[k].m3.g + sums[k].m3.b;
+      const float lobe_length =
+          specular > 0.0 ? static_cast<float>(glm::length(glm::dvec3(sums[k].m4)) / specular) : 0.0f;
+      if (lobe_length > 1e-2f) {
         for (int c = 0; c < 3; ++c) EXPECT_NEAR(g.axis_level[c], e.axis_level[c], 1e-3f) << "axis";
       }
+      for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(g.specular_power[c], sums[k].m3[c], float_sum_tolerance(sums[k].m3[c], size)) << "specular " << c;
     }
     // Sum of cluster power = the total flux (importance, camera view) of the clustered texels.
     EXPECT_NEAR(total_power, total_flux, 1e-5 * total_flux);

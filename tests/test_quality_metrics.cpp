@@ -20,14 +20,16 @@ namespace {
 using test::layer;
 
 // Moment pyramids of a flat, uniformly lit square (flux 1 per channel per texel) whose PDF is q.
-std::array<MipPyramid, 3> synthetic_view(uint32_t side, const std::function<float(uint32_t, uint32_t)>& q) {
+MomentPyramids synthetic_view(uint32_t side, const std::function<float(uint32_t, uint32_t)>& q) {
   const auto m0 = layer(side, side, [](uint32_t, uint32_t) { return glm::vec4(1.0f, 1.0f, 1.0f, 3.0f); });
   const auto m1 = layer(side, side, [](uint32_t x, uint32_t y) {
     const glm::vec3 P(static_cast<float>(x), 0.0f, static_cast<float>(y));
     return glm::vec4(3.0f * P, 3.0f * glm::dot(P, P));
   });
-  const auto m2 = layer(side, side, [&](uint32_t x, uint32_t y) { return glm::vec4(0.0f, 3.0f * 0.575f, 0.0f, q(x, y)); });
-  return {MipPyramid::build(m0, side, side), MipPyramid::build(m1, side, side), MipPyramid::build(m2, side, side)};
+  const auto m2 = layer(side, side, [&](uint32_t x, uint32_t y) { return glm::vec4(0.0f, 3.0f, 0.0f, q(x, y)); });
+  const auto none = layer(side, side, [](uint32_t, uint32_t) { return glm::vec4(0.0f); });  // no specular part
+  return {MipPyramid::build(m0, side, side), MipPyramid::build(m1, side, side), MipPyramid::build(m2, side, side),
+          MipPyramid::build(none, side, side), MipPyramid::build(none, side, side)};
 }
 
 VsglRecord kernel_at(float x, float y, float level) {
@@ -179,10 +181,9 @@ ViewImage synthetic_rsm(uint32_t w, uint32_t h, const std::function<bool(uint32_
   return v;
 }
 
-std::array<MipPyramid, 3> pyramids_of(const ViewImage& v) {
+MomentPyramids pyramids_of(const ViewImage& v) {
   const auto m = reference_moments(v, glm::vec3(0.0f, 10.0f, 0.0f));
-  return {MipPyramid::build(m[0], v.width, v.height), MipPyramid::build(m[1], v.width, v.height),
-          MipPyramid::build(m[2], v.width, v.height)};
+  return build_moment_pyramids(m, v.width, v.height);
 }
 
 // The generator's coverage on a view and on the view's uniform copy (the lattice floor).

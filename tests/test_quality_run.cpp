@@ -115,8 +115,7 @@ TEST_F(QualityGpuTest, ReferenceMatchesABruteForceVplSum) {
       const glm::dvec3 wo = glm::normalize(cam - P);
       const double s_r = (2.0 / (alpha * alpha)) / (4.0 * std::max(glm::dot(n, wo), 1e-4));
       const glm::dvec3 axis_r = glm::reflect(-wo, n);
-      const double spec_amp =
-          std::max(glm::dot(axis_r, n), 0.0) * s_r / (2.0 * std::numbers::pi * (1.0 - std::exp(-2.0 * s_r)));
+      const double spec_amp = s_r / (2.0 * std::numbers::pi * (1.0 - std::exp(-2.0 * s_r)));
       glm::dvec3 sum(0.0);
       for (const auto& v : vpls) {
         const glm::dvec3 d = glm::dvec3(v.mu()) - P;
@@ -125,10 +124,13 @@ TEST_F(QualityGpuTest, ReferenceMatchesABruteForceVplSum) {
         const double lambda = static_cast<double>(v.sharpness());
         const double norm = lambda < 1e-6 ? 1.0 / (4.0 * std::numbers::pi)
                                           : lambda / (2.0 * std::numbers::pi * (1.0 - std::exp(-2.0 * lambda)));
-        const double emission = norm * std::exp(lambda * (glm::dot(wc, -glm::dvec3(v.axis())) - 1.0));
-        const double f_d = 1.17 / std::numbers::pi * std::exp(2.133 * (glm::dot(wc, n) - 1.0));
-        const double f_s = spec_amp * std::exp(s_r * (glm::dot(wc, axis_r) - 1.0));
-        sum += glm::dvec3(v.power()) * emission * (rd * f_d + rs * f_s) / d2;
+        // Tok15 Eq. 1 with the two-lobe BRDFs of DESIGN.md §8 and the exact cosines.
+        const glm::dvec3 phi_s(v.specular());
+        const glm::dvec3 emission = (glm::dvec3(v.power()) - phi_s) / std::numbers::pi +
+                                    phi_s * norm * std::exp(lambda * (glm::dot(wc, -glm::dvec3(v.axis())) - 1.0));
+        const glm::dvec3 brdf = rd / std::numbers::pi + rs * spec_amp * std::exp(s_r * (glm::dot(wc, axis_r) - 1.0));
+        const double cosines = std::max(glm::dot(wc, n), 0.0) * std::max(glm::dot(-wc, glm::dvec3(v.normal())), 0.0);
+        sum += emission * brdf * cosines / d2;
       }
       pairs.emplace_back(glm::dvec3(img.pixels[std::size_t{j} * img.width + i]), sum);
       brightest = std::max(brightest, sum.r + sum.g + sum.b);

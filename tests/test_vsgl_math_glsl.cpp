@@ -40,25 +40,27 @@ struct TwinCase {
   glm::vec4 moment0{0.0f};
   glm::vec4 moment1{0.0f};
   glm::vec4 moment2{0.0f};
-  glm::vec4 power_level{0.0f};
+  glm::vec4 moment3{0.0f};
+  glm::vec4 moment4{0.0f};
+  glm::vec4 scale_level{0.0f};
   glm::vec4 center_extra{0.0f};
   glm::vec4 receiver_position{0.0f};
   glm::vec4 receiver_normal{0.0f};
   glm::vec4 receiver_wo{0.0f};
   glm::vec4 rho_d{0.0f};
   glm::vec4 rho_s{0.0f};
-  glm::vec4 vpl_lobe{0.0f};
+  glm::vec4 texel_light{0.0f};
   glm::vec4 scalars{0.0f};
 };
-static_assert(sizeof(TwinCase) == 17 * 16);
+static_assert(sizeof(TwinCase) == 19 * 16);
 
 struct TwinResult {
-  glm::vec4 m0, m1, m2;
+  glm::vec4 m0, m1, m2, m3, m4;
   VsglRecord vsgl;
   glm::vec4 radiance_importance;
   glm::vec4 scalars;
 };
-static_assert(sizeof(TwinResult) == 9 * 16);
+static_assert(sizeof(TwinResult) == 13 * 16);
 
 constexpr float kAbsoluteFloor = 1e-30f;
 constexpr float kRelative = 1e-4f;
@@ -118,22 +120,25 @@ std::vector<TwinCase> make_cases(uint32_t count) {
         const TexelMoments m =
             texel_moments(true, centre + spread * rng.vec(-1.0f, 1.0f), glm::normalize(base_normal + 0.3f * rng.unit()),
                           rng.vec(0.0f, 1.0f), rng.vec(0.0f, 0.3f), rng.range(0.05f, 1.0f), 1.0f, src, camera);
-        sum.m0 += m.m0;
-        sum.m1 += m.m1;
-        sum.m2 += m.m2;
+        sum += m;
       }
     }
     c.moment0 = sum.m0;
     c.moment1 = sum.m1;
     c.moment2 = sum.m2;
-    c.power_level = glm::vec4(rng.vec(0.0f, 5.0f), rng.range(0.0f, 11.0f));
+    c.moment3 = sum.m3;
+    c.moment4 = sum.m4;
+    c.scale_level = glm::vec4(rng.log_range(1e-2f, 1e3f), 0.0f, 0.0f, rng.range(0.0f, 11.0f));
     c.center_extra = glm::vec4(rng.next(), rng.next(), rng.range(0.0f, 4.0f), static_cast<float>(i % 4));
 
     // A receiver at distance d from the cluster's mean: d = 0 (on the VSGL) for every 17th, else
     // log-uniform in [1e-5, 100] (clear of the 1e-6 switch to the fallback direction).
     const glm::vec3 mu = sum.m0.w > 0.0f ? glm::vec3(sum.m1) / sum.m0.w : glm::vec3(0.0f);
     const float d = i % 17 == 5 ? 0.0f : rng.log_range(1e-5f, 100.0f);
-    const glm::vec3 dir = rng.unit();
+    // Mostly a receiver in front of the cluster's surface (the exact cosine at the light is then
+    // positive); every 19th may lie behind it.
+    glm::vec3 dir = rng.unit();
+    if (i % 19 != 7 && glm::dot(-dir, base_normal) < 0.0f) dir = -dir;
     const glm::vec3 n = glm::normalize(dir + 0.8f * rng.unit() + glm::vec3(0.0f, 0.0f, 1e-3f));
     glm::vec3 wo = rng.unit();
     if (glm::dot(wo, n) < 0.0f) wo = -wo;
@@ -142,8 +147,8 @@ std::vector<TwinCase> make_cases(uint32_t count) {
     c.receiver_wo = glm::vec4(wo, 0.0f);
     c.rho_d = glm::vec4(rng.vec(0.0f, 1.0f), 0.0f);
     c.rho_s = glm::vec4(rng.vec(0.0f, 1.0f), 0.0f);
-    const glm::vec3 vpl_axis = glm::normalize(-dir + 0.7f * rng.unit() + glm::vec3(1e-3f, 0.0f, 0.0f));
-    c.vpl_lobe = glm::vec4(vpl_axis, rng.log_range(1e-4f, 1e4f));
+    const glm::vec3 to_light = glm::normalize(n + 0.9f * rng.unit() + glm::vec3(1e-3f, 0.0f, 0.0f));
+    c.texel_light = glm::vec4(to_light, rng.log_range(1e-3f, 1.0f));
     // Scalars across every branch: A(lambda) (1e-3, 0.5, 20), Banerjee's clamps, sg_integral (0.01).
     c.scalars = glm::vec4(rng.log_range(1e-6f, 1e5f), rng.range(-0.1f, 1.1f), rng.log_range(1e-7f, 1e9f), 0.0f);
   }
@@ -188,29 +193,34 @@ TEST_F(VsglMathGpuTest, GlslMatchesTheCppTwins) {
                                          glm::vec3(c.normal_camera), glm::vec3(c.diffuse_pdf),
                                          glm::vec3(c.specular_roughness), c.specular_roughness.w, c.diffuse_pdf.w,
                                          glm::vec3(c.source), c.normal_camera.w != 0.0f);
-    const glm::vec4 cpu_layers[3] = {m.m0, m.m1, m.m2};
-    const glm::vec4 gpu_layers[3] = {g.m0, g.m1, g.m2};
-    for (int layer = 0; layer < 3; ++layer)
+    const glm::vec4 cpu_layers[5] = {m.m0, m.m1, m.m2, m.m3, m.m4};
+    const glm::vec4 gpu_layers[5] = {g.m0, g.m1, g.m2, g.m3, g.m4};
+    for (int layer = 0; layer < 5; ++layer)
       for (int k = 0; k < 4; ++k)
         ASSERT_TRUE(close(("m" + std::to_string(layer)).c_str(), gpu_layers[layer][k], cpu_layers[layer][k],
                           1e-6f * max_abs(cpu_layers[layer])));
 
     // vsgl_from_moments.
-    const VsglRecord v = vsgl_from_moments(c.moment0, c.moment1, c.moment2, glm::vec3(c.power_level), c.power_level.w,
-                                           glm::vec2(c.center_extra), c.center_extra.z, c.center_extra.w);
+    const VsglRecord v =
+        vsgl_from_moments({c.moment0, c.moment1, c.moment2, c.moment3, c.moment4}, c.scale_level.x, c.scale_level.w,
+                          glm::vec2(c.center_extra), c.center_extra.z, c.center_extra.w);
     const float W = c.moment0.w;
     // mu = (sum w P) / W: floor 1e-6 of |P|; sigma^2 = E|P|^2 - |mu|^2 cancels: floor 1e-6 E|P|^2.
     const float mean_sq = W > 0.0f ? c.moment1.w / W : 0.0f;
     for (int k = 0; k < 3; ++k)
       ASSERT_TRUE(close("mu", g.vsgl.position_variance[k], v.position_variance[k], 1e-6f * std::sqrt(mean_sq)));
     ASSERT_TRUE(close("sigma2", g.vsgl.sigma2(), v.sigma2(), 1e-6f * mean_sq));
-    const float r = W > 0.0f ? std::min(glm::length(glm::vec3(c.moment2) / W), kMaxMeanLength) : 0.0f;
+    const float s = c.moment3.r + c.moment3.g + c.moment3.b;
+    const float r = W > 0.0f && s > 0.0f ? std::min(glm::length(glm::vec3(c.moment4) / s), kMaxMeanLength) : 0.0f;
     const float lambda_floor = std::abs(banerjee_sharpness(r * (1.0f + 2e-6f)) - banerjee_sharpness(r));
     ASSERT_TRUE(close("lambda", g.vsgl.sharpness(), v.sharpness(), lambda_floor));
     for (int k = 0; k < 3; ++k) {
-      ASSERT_EQ(g.vsgl.power_sharpness[k], v.power_sharpness[k]) << "power is copied";
+      ASSERT_EQ(g.vsgl.power_sharpness[k], v.power_sharpness[k]) << "power = scale * m0.rgb, one product";
+      ASSERT_EQ(g.vsgl.specular_power[k], v.specular_power[k]) << "specular power = scale * m3.rgb, one product";
       ASSERT_TRUE(close("axis", g.vsgl.axis_level[k], v.axis_level[k], 1e-5f));
+      ASSERT_TRUE(close("normal", g.vsgl.normal_length[k], v.normal_length[k], 1e-5f));
     }
+    ASSERT_TRUE(close("normal length", g.vsgl.normal_length.w, v.normal_length.w, 1e-6f));
     ASSERT_EQ(g.vsgl.level(), v.level());
     ASSERT_EQ(g.vsgl.center_pdf, v.center_pdf);
 
@@ -220,7 +230,9 @@ TEST_F(VsglMathGpuTest, GlslMatchesTheCppTwins) {
                                               glm::vec3(c.receiver_wo), glm::vec3(c.rho_d), glm::vec3(c.rho_s),
                                               c.receiver_normal.w);
     for (int k = 0; k < 3; ++k) ASSERT_TRUE(close("radiance", g.radiance_importance[k], L[k], 0.0f));
-    const float I = vsgl_importance_to_vpl(g.vsgl, glm::vec3(c.receiver_position), glm::vec3(c.vpl_lobe), c.vpl_lobe.w);
+    const float I =
+        vsgl_importance_to_texel(g.vsgl, glm::vec3(c.receiver_position), glm::vec3(c.receiver_normal),
+                                 glm::vec3(c.texel_light), glm::vec3(c.rho_s), glm::vec3(c.rho_d), c.texel_light.w);
     ASSERT_TRUE(close("importance", g.radiance_importance.w, I, 0.0f));
     if (L.x > 0.0f || I > 0.0f) ++checked_radiance;
 

@@ -7,11 +7,13 @@
 #include <span>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include "harness/math/fis_params.hpp"
+#include "kernels/include/interface/shading.h"
 
 namespace vsgl {
 
@@ -84,6 +86,11 @@ struct SceneSource {
   uint32_t paper_table = 0;  // the paper table the preset reproduces (1, 2), 0 for none
 };
 
+// The importance this version makes the BRSM PDF by (DESIGN.md §8): Tok15 Eq. 3 with K = 2 lobes,
+// the exact cosines and §3.3's bias reduction at alpha = gpu::kBiasReductionAlpha. A capture whose
+// PDF was made by another is refused when loaded (its PDF would not be this version's).
+inline constexpr std::string_view kBrsmImportanceModel = "tok15-eq3-k2";
+
 struct CaptureMeta {
   std::string scene;
   std::optional<SceneSource> source;  // a user's file; none for the procedural scenes
@@ -100,6 +107,10 @@ struct CaptureMeta {
   // every device), or the texture path where the device cannot bind the buffer pyramid. None: no
   // PDF, or a capture written before the key was recorded.
   std::optional<PyramidPath> brsm_pyramid;
+  // The importance the BRSM PDF was made by (sidecar `brsm_importance`): its model and Tok15 §3.3's
+  // alpha. Empty: no PDF, or a capture written before the key (an older importance).
+  std::string brsm_importance;
+  double brsm_bias_alpha = 0;
   // Filled by write_capture / checked by load_capture: "fnv1a64:<16 hex>" per channel name.
   std::array<std::string, kChannelCount> gbuffer_hashes;
   std::array<std::string, kChannelCount> rsm_hashes;

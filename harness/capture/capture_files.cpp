@@ -228,6 +228,20 @@ CaptureMeta write_capture(const Capture& capture, const std::filesystem::path& d
   return meta;
 }
 
+std::string brsm_importance_mismatch(const CaptureMeta& meta, bool rsm_has_pdf) {
+  if (!rsm_has_pdf) return {};
+  const std::string now =
+      std::string(kBrsmImportanceModel) + " with alpha " + std::to_string(double{gpu::kBiasReductionAlpha});
+  if (meta.brsm_importance.empty())
+    return "its BRSM PDF was made by an older importance (the sidecar has no brsm_importance), not by this "
+           "version's " +
+           now;
+  if (meta.brsm_importance != kBrsmImportanceModel || meta.brsm_bias_alpha != double{gpu::kBiasReductionAlpha})
+    return "its BRSM PDF was made by " + meta.brsm_importance + " with alpha " + std::to_string(meta.brsm_bias_alpha) +
+           ", not by this version's " + now;
+  return {};
+}
+
 Capture load_capture(const std::filesystem::path& dir) {
   std::error_code ec;
   if (!std::filesystem::exists(dir, ec)) {
@@ -238,6 +252,8 @@ Capture load_capture(const std::filesystem::path& dir) {
   }
   const std::filesystem::path sidecar_path = dir / kSidecarName;
   const SidecarContents sidecar = read_sidecar(sidecar_path);
+  if (const std::string why = brsm_importance_mismatch(sidecar.meta, sidecar.rsm.has_pdf); !why.empty())
+    throw InputError(path_text(sidecar_path) + ": " + why + "; record the capture again (vsgl-bench record)");
   Capture capture;
   capture.meta = sidecar.meta;
   capture.gbuffer = load_view(dir, ViewKind::kCamera, sidecar.gbuffer);

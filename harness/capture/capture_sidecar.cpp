@@ -115,6 +115,8 @@ std::string sidecar_text(const CaptureMeta& meta, const Capture& capture) {
   }
   doc["brsm_build_ms"] = meta.brsm_build_ms;
   if (meta.brsm_pyramid) doc["brsm_pyramid"] = pyramid_path_name(*meta.brsm_pyramid);
+  if (!meta.brsm_importance.empty())
+    doc["brsm_importance"] = {{"model", meta.brsm_importance}, {"bias_reduction_alpha", meta.brsm_bias_alpha}};
   doc["gbuffer"] = view_json(capture.gbuffer, meta.gbuffer_hashes);
   doc["rsm"] = view_json(capture.rsm, meta.rsm_hashes);
   return doc.dump(2) + "\n";
@@ -284,6 +286,11 @@ CaptureMeta read_meta(const JsonReader& reader, const json& doc) {
     meta.brsm_pyramid = parse_pyramid_path(path);
     if (!meta.brsm_pyramid)
       reader.fail("", "key \"brsm_pyramid\" is " + quoted_text(path) + ", expected \"buffer\" or \"texture\"");
+  }
+  if (doc.contains("brsm_importance")) {
+    const json& importance = reader.object(doc, "", "brsm_importance");
+    meta.brsm_importance = reader.string(importance, "brsm_importance", "model");
+    meta.brsm_bias_alpha = reader.number(importance, "brsm_importance", "bias_reduction_alpha");
   }
   return meta;
 }

@@ -45,10 +45,11 @@ std::vector<VsglRecord> reference_vpls(const ViewImage& rsm, const SpotLightDesc
           texel_moments(true, P, N, d, s, rsm.at(kRoughness, x, y), 1.0f, light_position, /*camera_view=*/false);
       const glm::vec2 centre((static_cast<float>(x) + 0.5f) / static_cast<float>(rsm.width),
                              (static_cast<float>(y) + 0.5f) / static_cast<float>(rsm.height));
-      VsglRecord v = vsgl_from_moments(m.m0, m.m1, m.m2, flux * area, 0.0f, centre, 1.0f, 1.0f);
-      const float sigma2 = extent == VplExtent::kPoint ? kMinVariance
-                                                       : std::max(rsm_texel_world_area(rsm, light, x, y, stride) / 12.0f,
-                                                                  kMinVariance);
+      VsglRecord v = vsgl_from_moments(m, area, 0.0f, centre, 1.0f, 1.0f);
+      // Tok15's sigma^2 = E|x|^2 - |E x|^2 of a uniform square of area A: A / 12 on each of its two axes.
+      const float sigma2 = extent == VplExtent::kPoint
+                               ? kMinVariance
+                               : std::max(rsm_texel_world_area(rsm, light, x, y, stride) / 6.0f, kMinVariance);
       v.position_variance = glm::vec4(P, sigma2);
       vpls.push_back(v);
     }

@@ -27,11 +27,12 @@ enum class VplExtent {
   // Its 1/d^2 spikes on receivers next to a VPL dominate any RMSE; used to test the pass against a
   // brute-force point-VPL sum.
   kPoint,
-  // sigma^2 = A / 12, A the world-space area the (subsampled) texel stands for: its solid angle
+  // sigma^2 = A / 6, A the world-space area the (subsampled) texel stands for: its solid angle
   // seen from the light, dOmega = texel area on the unit image plane * stride^2 * cos^3(theta) (as
   // the recorder computes flux, DESIGN.md §3), times d^2 / max(cos of the surface to the light, 0.1).
-  // A / 12 is the per-axis variance of a uniform square of area A (DESIGN.md §7: r^2 = 2 sigma^2), so
-  // each VPL is the level-0 VSGL of its own footprint and the 1/d^2 singularity is bounded.
+  // A / 6 is Tok15's sigma^2 = E|x|^2 - |E x|^2 of a uniform square of area A (A / 12 per axis;
+  // DESIGN.md §7: r^2 = 2 sigma^2), so each VPL is the single-texel VSGL of its own footprint: the
+  // generators' limit as their kernels shrink to one texel, with the 1/d^2 singularity bounded.
   kTexelFootprint,
 };
 

@@ -24,10 +24,10 @@ uint32_t binding_window_vsgls(const Device& device, uint32_t vsgl_count, uint32_
   const DeviceLimits& limits = device.info().limits;
   const uint64_t fits = vsgls_per_binding != 0 ? vsgls_per_binding : limits.storage_buffer_range / sizeof(VsglRecord);
   if (vsgl_count <= fits) return vsgl_count;
-  // Every window starts on a chunk and at an offset the device can bind (a power of two of at most
-  // 256 bytes by the Vulkan spec, so at most 4 records).
-  const uint64_t records_per_alignment =
-      std::max<uint64_t>(1, limits.storage_buffer_offset_alignment / sizeof(VsglRecord));
+  // Every window starts on a chunk and at an offset the device can bind: a multiple of the
+  // alignment (a power of two of at most 256 bytes by the Vulkan spec, so at most 8 records of 96 B).
+  const uint64_t alignment = std::max<uint64_t>(1, limits.storage_buffer_offset_alignment);
+  const uint64_t records_per_alignment = alignment / std::gcd(alignment, uint64_t{sizeof(VsglRecord)});
   const uint64_t step = std::lcm(uint64_t{chunk}, records_per_alignment);
   const uint64_t window = fits / step * step;
   if (window == 0)

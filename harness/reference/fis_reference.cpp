@@ -72,9 +72,15 @@ glm::vec4 MipPyramid::at(uint32_t level, int32_t x, int32_t y) const {
   return texels[square.level_offset(level) + uy * wl + ux];
 }
 
+MomentPyramids build_moment_pyramids(const MomentLayers& level0, uint32_t w, uint32_t h) {
+  MomentPyramids out;
+  for (std::size_t layer = 0; layer < kMomentLayerCount; ++layer) out[layer] = MipPyramid::build(level0[layer], w, h);
+  return out;
+}
+
 // ---- moments -------------------------------------------------------------------------------
 
-std::array<std::vector<glm::vec4>, 3> reference_moments(const ViewImage& view, glm::vec3 source_pos) {
+MomentLayers reference_moments(const ViewImage& view, glm::vec3 source_pos) {
   const std::size_t n = view.texels();
   for (int c = 0; c < kChannelCount; ++c) {
     const bool pdf_absent = c == kPdf && !view.has_pdf && view.planes[c].empty();
@@ -83,7 +89,7 @@ std::array<std::vector<glm::vec4>, 3> reference_moments(const ViewImage& view, g
                        std::to_string(view.planes[c].size()) + " texels, expected " + std::to_string(n));
   }
   const bool camera_view = view.kind == ViewKind::kCamera;
-  std::array<std::vector<glm::vec4>, 3> layers;
+  MomentLayers layers;
   for (auto& layer : layers) layer.resize(n);
   const auto& pl = view.planes;
   for (std::size_t t = 0; t < n; ++t) {
@@ -95,6 +101,8 @@ std::array<std::vector<glm::vec4>, 3> reference_moments(const ViewImage& view, g
     layers[0][t] = m.m0;
     layers[1][t] = m.m1;
     layers[2][t] = m.m2;
+    layers[3][t] = m.m3;
+    layers[4][t] = m.m4;
   }
   return layers;
 }
@@ -279,16 +287,21 @@ FisKernel fis_kernel(FisVariant variant, const MipPyramid& pdf_pyramid, const Sa
   return kernel;
 }
 
-glm::vec3 fis_power(FisVariant variant, glm::vec3 mean_flux, const FisKernel& kernel, const FisParams& params,
-                    const VirtualSquare& square) {
+float fis_power_scale(FisVariant variant, const FisKernel& kernel, const FisParams& params,
+                      const VirtualSquare& square) {
   const auto M = static_cast<float>(square.square_texels());
   const auto N = static_cast<float>(params.vsgl_count);
-  if (variant == FisVariant::kTok15) return M * mean_flux / std::max(N * kernel.density, params.K);
-  return M * mean_flux / (N * kernel.density);
+  if (variant == FisVariant::kTok15) return M / std::max(N * kernel.density, params.K);
+  return M / (N * kernel.density);
 }
 
-FisPowerBound fis_power_bound(FisVariant variant, const std::array<MipPyramid, 3>& moments, const SamplePoint& sample,
-                              float level, const FisParams& params, FilterPrecision precision) {
+glm::vec3 fis_power(FisVariant variant, glm::vec3 mean_flux, const FisKernel& kernel, const FisParams& params,
+                    const VirtualSquare& square) {
+  return fis_power_scale(variant, kernel, params, square) * mean_flux;
+}
+
+FisPowerBound fis_power_bound(FisVariant variant, const MomentPyramids& moments, const SamplePoint& sample, float level,
+                              const FisParams& params, FilterPrecision precision) {
   const VirtualSquare& sq = moments[0].square;
   const auto M = static_cast<float>(sq.square_texels());
   const auto N = static_cast<float>(params.vsgl_count);
@@ -312,8 +325,7 @@ FisPowerBound fis_power_bound(FisVariant variant, const std::array<MipPyramid, 3
 
 // ---- the generator -------------------------------------------------------------------------
 
-std::vector<VsglRecord> reference_fis(const std::array<MipPyramid, 3>& moments, FisVariant variant,
-                                      const FisParams& params) {
+std::vector<VsglRecord> reference_fis(const MomentPyramids& moments, FisVariant variant, const FisParams& params) {
   const char* name = fis_variant_name(variant);
   if (params.vsgl_count == 0) throw InputError(std::string(name) + ": the number of VSGLs N must be positive");
   if (!(params.K > 0.0f) || !std::isfinite(params.K))
@@ -338,11 +350,11 @@ std::vector<VsglRecord> reference_fis(const std::array<MipPyramid, 3>& moments, 
   for (std::size_t i = 0; i < samples.size(); ++i) {
     const SamplePoint& s = samples[i];
     const FisKernel kernel = fis_kernel(variant, pdf, s, params);
-    const glm::vec4 m0 = fetch(moments[0], s.x, kernel.level);
-    const glm::vec4 m1 = fetch(moments[1], s.x, kernel.level);
-    const glm::vec4 m2 = fetch(moments[2], s.x, kernel.level);
-    const glm::vec3 power = fis_power(variant, glm::vec3(m0), kernel, params, sq);
-    out[i] = vsgl_from_moments(m0, m1, m2, power, kernel.level, s.x, kernel.density, 0.0f);
+    const TexelMoments m{fetch(moments[0], s.x, kernel.level), fetch(moments[1], s.x, kernel.level),
+                         fetch(moments[2], s.x, kernel.level), fetch(moments[3], s.x, kernel.level),
+                         fetch(moments[4], s.x, kernel.level)};
+    out[i] =
+        vsgl_from_moments(m, fis_power_scale(variant, kernel, params, sq), kernel.level, s.x, kernel.density, 0.0f);
   }
   return out;
 }

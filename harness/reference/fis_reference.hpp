@@ -38,10 +38,19 @@ struct MipPyramid {
   glm::vec4 top() const { return texels.back(); }
 };
 
-// The "additional" pass on the CPU: layers M0, M1, M2 of every texel of a view (DESIGN.md §4), each
+// The moment layers of a view (DESIGN.md §4: texel_moments()'s m0..m4), and their pyramids; the
+// PDF q is layer 2's .w.
+inline constexpr std::size_t kMomentLayerCount = 5;
+inline constexpr std::size_t kPdfLayer = 2;
+using MomentLayers = std::array<std::vector<glm::vec4>, kMomentLayerCount>;
+using MomentPyramids = std::array<MipPyramid, kMomentLayerCount>;
+
+// The "additional" pass on the CPU: layers M0..M4 of every texel of a view (DESIGN.md §4), each
 // W * H vec4s, through texel_moments(). source_pos: the spot light (RSM) or the camera (G-buffer).
 // Throws InputError when the view's planes do not hold W * H texels.
-std::array<std::vector<glm::vec4>, 3> reference_moments(const ViewImage& view, glm::vec3 source_pos);
+MomentLayers reference_moments(const ViewImage& view, glm::vec3 source_pos);
+// The mip pyramid of every layer (MipPyramid::build).
+MomentPyramids build_moment_pyramids(const MomentLayers& level0, uint32_t w, uint32_t h);
 
 // Kernel centre u_i of the Fibonacci lattice (DESIGN.md §5):
 //   u.x = (i + 0.5) / N,  u.y = ((i * 2654435769 + offset_bits) mod 2^32 >> 8) * 2^-24.
@@ -104,7 +113,11 @@ struct FisKernel {
 };
 FisKernel fis_kernel(FisVariant variant, const MipPyramid& pdf_pyramid, const SamplePoint& sample,
                      const FisParams& params);
-// Tok15: M f_bar / max(N p, K) (Eq. 4 scaled by M);  modified: M f_bar / (N p_bar) (Eq. 5).
+// The factor of the filtered mean flux f_bar in the power: Tok15 M / max(N p, K) (Eq. 4 scaled by
+// M), modified M / (N p_bar) (Eq. 5); the GPU forms the power in this order (scale, then times f_bar).
+float fis_power_scale(FisVariant variant, const FisKernel& kernel, const FisParams& params,
+                      const VirtualSquare& square);
+// fis_power_scale() * mean_flux.
 glm::vec3 fis_power(FisVariant variant, glm::vec3 mean_flux, const FisKernel& kernel, const FisParams& params,
                     const VirtualSquare& square);
 
@@ -117,13 +130,12 @@ struct FisPowerBound {
   glm::vec3 expected{0.0f};
   glm::vec3 bound{0.0f};
 };
-FisPowerBound fis_power_bound(FisVariant variant, const std::array<MipPyramid, 3>& moments, const SamplePoint& sample,
-                              float level, const FisParams& params, FilterPrecision precision);
+FisPowerBound fis_power_bound(FisVariant variant, const MomentPyramids& moments, const SamplePoint& sample, float level,
+                              const FisParams& params, FilterPrecision precision);
 
 // The whole generator: N VSGLs from the pyramids of M0, M1, M2 (the PDF is M2's .w). Throws
 // InputError for N = 0, N larger than the texels of nonzero PDF, K <= 0 or not finite, pyramids
 // of different sizes, or an all-zero PDF.
-std::vector<VsglRecord> reference_fis(const std::array<MipPyramid, 3>& moments, FisVariant variant,
-                                      const FisParams& params);
+std::vector<VsglRecord> reference_fis(const MomentPyramids& moments, FisVariant variant, const FisParams& params);
 
 }  // namespace vsgl

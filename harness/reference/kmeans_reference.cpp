@@ -154,6 +154,8 @@ std::vector<ClusterSums> reference_cluster_sums(const ViewImage& view, glm::vec3
       s.m0 += glm::dvec4(m.m0);
       s.m1 += glm::dvec4(m.m1);
       s.m2 += glm::dvec4(m.m2);
+      s.m3 += glm::dvec4(m.m3);
+      s.m4 += glm::dvec4(m.m4);
       s.pixels += glm::dvec2(static_cast<double>(t % view.width) + 0.5, static_cast<double>(t / view.width) + 0.5);
       ++s.texels;
     }
@@ -170,9 +172,8 @@ std::vector<VsglRecord> cluster_vsgls(const std::vector<ClusterSums>& sums, cons
     glm::vec2 center = glm::vec2(centres[k]) / S;
     if (space == KmeansSpace::k3d)
       center = s.texels > 0 ? glm::vec2(s.pixels / static_cast<double>(s.texels)) / S : glm::vec2(0.0f);
-    const glm::vec4 m0(s.m0);
-    out[k] = vsgl_from_moments(m0, glm::vec4(s.m1), glm::vec4(s.m2), glm::vec3(m0), -1.0f, center, 0.0f,
-                               static_cast<float>(s.texels));
+    const TexelMoments m{glm::vec4(s.m0), glm::vec4(s.m1), glm::vec4(s.m2), glm::vec4(s.m3), glm::vec4(s.m4)};
+    out[k] = vsgl_from_moments(m, 1.0f, -1.0f, center, 0.0f, static_cast<float>(s.texels));
   }
   return out;
 }

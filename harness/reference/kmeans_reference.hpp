@@ -72,7 +72,7 @@ std::vector<glm::vec4> kmeans_update_centres(const std::vector<glm::vec4>& featu
 
 // Sums of a cluster's texel moments (texel_moments()), in double.
 struct ClusterSums {
-  glm::dvec4 m0{0.0}, m1{0.0}, m2{0.0};
+  glm::dvec4 m0{0.0}, m1{0.0}, m2{0.0}, m3{0.0}, m4{0.0};
   glm::dvec2 pixels{0.0};  // sum of texel centres in pixels
   uint32_t texels = 0;
 };

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <iostream>
 #include <optional>
 
@@ -17,27 +18,6 @@
 #include "kernels/include/interface/brsm.h"
 
 namespace vsgl {
-namespace {
-
-struct VplLobe {
-  glm::vec3 axis;
-  float sharpness;
-  float power;
-};
-
-VplLobe vpl_lobe(glm::vec3 P, glm::vec3 N, glm::vec3 flux_d, glm::vec3 flux_s, float roughness, glm::vec3 light) {
-  VplLobe l{};
-  const glm::vec3 phi = flux_d + flux_s;
-  l.power = phi.r + phi.g + phi.b;
-  const glm::vec3 rbar = texel_emission_lobe(P, N, flux_d, flux_s, roughness, light);
-  const float r = glm::length(rbar);
-  l.axis = r > 0.0f ? rbar / r : N;
-  l.sharpness = banerjee_sharpness(r);
-  return l;
-}
-
-}  // namespace
-
 float brsm_texel_weight(const ViewImage& rsm, uint32_t x, uint32_t y, glm::vec3 light_position,
                         const std::vector<VsglRecord>& camera_vsgls) {
   if (rsm.at(kValid, x, y) <= 0.5f) return 0.0f;
@@ -45,14 +25,15 @@ float brsm_texel_weight(const ViewImage& rsm, uint32_t x, uint32_t y, glm::vec3 
   const glm::vec3 N(rsm.at(kNX, x, y), rsm.at(kNY, x, y), rsm.at(kNZ, x, y));
   const glm::vec3 fd(rsm.at(kDR, x, y), rsm.at(kDG, x, y), rsm.at(kDB, x, y));
   const glm::vec3 fs(rsm.at(kSR, x, y), rsm.at(kSG, x, y), rsm.at(kSB, x, y));
-  const VplLobe lobe = vpl_lobe(P, N, fd, fs, rsm.at(kRoughness, x, y), light_position);
-  if (!(lobe.power > 0.0f)) return 0.0f;
+  const glm::vec3 flux = fd + fs;
+  if (!(flux.r + flux.g + flux.b > 0.0f)) return 0.0f;
+  const glm::vec3 to_light = light_position - P;
+  const float d2 = glm::dot(to_light, to_light);
+  const glm::vec3 wo = d2 > 0.0f ? to_light * (1.0f / std::sqrt(d2)) : N;
   float importance = 0.0f;
-  for (const auto& cam : camera_vsgls) {
-    if (glm::dot(N, cam.mu() - P) <= 0.0f) continue;  // behind the VPL: it emits nothing there
-    importance += vsgl_importance_to_vpl(cam, P, lobe.axis, lobe.sharpness);
-  }
-  return lobe.power * importance;
+  for (const auto& cam : camera_vsgls)
+    importance += vsgl_importance_to_texel(cam, P, N, wo, fd, fs, rsm.at(kRoughness, x, y));
+  return importance;
 }
 
 BrsmBuild build_brsm_pdf(Device& device, Capture& capture, uint32_t camera_vsgls) {
@@ -118,6 +99,8 @@ BrsmBuild build_brsm_pdf(Device& device, Capture& capture, uint32_t camera_vsgls
   capture.rsm.has_pdf = true;
   capture.meta.brsm_build_ms = out.gpu_ms;
   capture.meta.brsm_pyramid = params.pyramid;
+  capture.meta.brsm_importance = std::string(kBrsmImportanceModel);
+  capture.meta.brsm_bias_alpha = gpu::kBiasReductionAlpha;
   return out;
 }
 

@@ -1,8 +1,8 @@
 #pragma once
 // The BRSM PDF of a capture's RSM (DESIGN.md §8, [REH*11] with the VSGL evaluation of [Tok15]):
-// camera-view VSGLs made by fis_modified from the G-buffer (power = reflectance) are evaluated at
-// every RSM texel through the texel's emission lobe, times the texel's power. Built once when a
-// capture is recorded, so every light-view generator consumes the same PDF.
+// camera-view VSGLs made by fis_modified from the G-buffer (power = reflectance) light every RSM
+// texel as shading lights a pixel (Tok15 Eq. 3), the texel's flux standing for its albedo. Built
+// once when a capture is recorded, so every light-view generator consumes the same PDF.
 #include <cstdint>
 
 #include <glm/glm.hpp>

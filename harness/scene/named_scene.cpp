@@ -91,6 +91,8 @@ std::string capture_staleness(const CaptureMeta& meta, uint32_t gbuffer_width, u
     return "its model's content was " + meta.source->content_hash + ", and the model found now is " +
            scene.source->content_hash;
   if (meta.frame != 0 || meta.frames != 1) return "it is a frame of a sequence";
+  if (meta.brsm_importance != kBrsmImportanceModel || meta.brsm_bias_alpha != double{gpu::kBiasReductionAlpha})
+    return "its BRSM PDF was made by an older importance (DESIGN.md §8)";
   const Scene now = scene.frame(0, 1);
   if (!near(meta.camera.position, now.camera.position) || !near(meta.camera.target, now.camera.target) ||
       !near(meta.camera.fov_y_deg, now.camera.fov_y_deg))

@@ -21,7 +21,7 @@ constexpr float kTieMargin = 1e-5f;
 std::string num(double v, int digits = 3) { return check_number(v, digits); }
 
 struct GpuRun {
-  std::array<MipPyramid, 3> pyramid;  // as computed on the device
+  MomentPyramids pyramid;  // as computed on the device
   std::vector<VsglRecord> vsgls;
 };
 
@@ -31,7 +31,7 @@ GpuRun run_on_device(Device& device, const DeviceView& view, FisVariant variant,
   const VirtualSquare& sq = view.square;
   const auto all = gen.download_pyramid(device);
   GpuRun run;
-  for (uint32_t layer = 0; layer < 3; ++layer) {
+  for (uint32_t layer = 0; layer < kMomentLayerCount; ++layer) {
     run.pyramid[layer].square = sq;
     run.pyramid[layer].texels.assign(all.begin() + layer * std::ptrdiff_t{sq.total_texels()},
                                      all.begin() + (layer + 1) * std::ptrdiff_t{sq.total_texels()});
@@ -90,12 +90,12 @@ class ViewVerifier {
   std::string labelled(const std::string& gen) const { return gen + "[" + path_label() + "]"; }
   bool texture() const { return params_.pyramid == PyramidPath::kTexture; }
 
-  void run_path(std::vector<CheckResult>& out, const std::array<std::vector<glm::vec4>, 3>& cpu_moments) {
+  void run_path(std::vector<CheckResult>& out, const MomentLayers& cpu_moments) {
     if (texture()) check_other_strategies(out);
     for (FisVariant variant : {FisVariant::kTok15, FisVariant::kModified}) {
       const GpuRun gpu = run_on_device(device_, view_, variant, params_);
-      std::array<MipPyramid, 3> chain;  // the CPU mip chain of the device's level 0
-      for (uint32_t layer = 0; layer < 3; ++layer) {
+      MomentPyramids chain;  // the CPU mip chain of the device's level 0
+      for (uint32_t layer = 0; layer < kMomentLayerCount; ++layer) {
         const auto& t = gpu.pyramid[layer].texels;
         chain[layer] = MipPyramid::build({t.begin(), t.begin() + view_.square.level_texels(0)}, view_.square.width,
                                          view_.square.height);
@@ -106,7 +106,7 @@ class ViewVerifier {
       // The later passes are checked on the pyramid they read: the CPU chain (bit-exact with the
       // device's for every kernel of ours), or the blit's own, whose bound check_pyramid states.
       const bool blit = texture() && *params_.mipmapping == MipStrategy::kBlit;
-      const std::array<MipPyramid, 3>& read = blit ? gpu.pyramid : chain;
+      const MomentPyramids& read = blit ? gpu.pyramid : chain;
       const auto samples = reference_samples(read[2], params_.vsgl_count, params_.offset_bits);
       check_sampler(out, gen, gpu, samples);
       check_levels(out, variant, gpu, read, samples);
@@ -124,8 +124,8 @@ class ViewVerifier {
       FisParams p = params_;
       p.mipmapping = m;
       const GpuRun gpu = run_on_device(device_, view_, FisVariant::kModified, p);
-      std::array<MipPyramid, 3> chain;
-      for (uint32_t layer = 0; layer < 3; ++layer) {
+      MomentPyramids chain;
+      for (uint32_t layer = 0; layer < kMomentLayerCount; ++layer) {
         const auto& t = gpu.pyramid[layer].texels;
         chain[layer] = MipPyramid::build({t.begin(), t.begin() + view_.square.level_texels(0)}, view_.square.width,
                                          view_.square.height);
@@ -144,36 +144,39 @@ class ViewVerifier {
 
   // "additional": level 0 against the CPU moments; transcendental functions differ in the last bits.
   void check_moments(std::vector<CheckResult>& out, const std::string& gen, const GpuRun& gpu,
-                     const std::array<std::vector<glm::vec4>, 3>& cpu) const {
+                     const MomentLayers& cpu) const {
     CheckResult r = result(gen, "moments");
-    for (uint32_t layer = 0; layer < 3; ++layer)
+    for (uint32_t layer = 0; layer < kMomentLayerCount; ++layer)
       r.measured = std::max(r.measured, normalized_error(gpu.pyramid[layer].texels, cpu[layer],
                                                          view_.square.level_texels(0)));
     r.tolerance = 1e-5;
-    r.detail = "normalized max error of the 3 moment layers vs the CPU additional pass";
+    r.detail = "normalized max error of the " + std::to_string(kMomentLayerCount) +
+               " moment layers vs the CPU additional pass";
     out.push_back(r);
   }
 
   // "mipmapping": every level against the CPU chain of the same level 0 (float sums: 1e-6).
   void check_pyramid(std::vector<CheckResult>& out, const std::string& gen, const GpuRun& gpu,
-                     const std::array<MipPyramid, 3>& chain) const {
+                     const MomentPyramids& chain) const {
     CheckResult r = result(gen, "pyramid");
     if (gen.find("/blit") != std::string::npos) {
       // The driver's blit samples between the children only to subTexelPrecisionBits.
-      for (uint32_t layer = 0; layer < 3; ++layer)
+      for (uint32_t layer = 0; layer < kMomentLayerCount; ++layer)
         r.measured = std::max(r.measured, blit_chain_error_ratio(gpu.pyramid[layer], precision_));
       r.tolerance = 1.0;
       r.detail = "max |texel - mean of its 4 children| / bound over all " + num(view_.square.levels + 1) +
-                 " levels of 3 layers; bound: 2^-" + num(precision_.sub_texel_bits) +
+                 " levels of " + std::to_string(kMomentLayerCount) + " layers; bound: 2^-" +
+                 num(precision_.sub_texel_bits) +
                  " (subTexelPrecisionBits) of the children's differences + 2^-20 of their magnitude";
       out.push_back(r);
       return;
     }
-    for (uint32_t layer = 0; layer < 3; ++layer)
+    for (uint32_t layer = 0; layer < kMomentLayerCount; ++layer)
       r.measured = std::max(r.measured, normalized_error(gpu.pyramid[layer].texels, chain[layer].texels,
                                                          chain[layer].texels.size()));
     r.tolerance = 1e-6;
-    r.detail = "normalized max error over all " + num(view_.square.levels + 1) + " levels of 3 layers";
+    r.detail = "normalized max error over all " + num(view_.square.levels + 1) + " levels of " +
+               std::to_string(kMomentLayerCount) + " layers";
     out.push_back(r);
   }
 
@@ -205,8 +208,8 @@ class ViewVerifier {
 
   // Eq. 1 levels (Tok15) or the Eq. 3 residual (modified), recomputed on the CPU from the device's
   // own kernel centres and pyramid.
-  void check_levels(std::vector<CheckResult>& out, FisVariant variant, const GpuRun& gpu,
-                    const std::array<MipPyramid, 3>& chain, const std::vector<SamplePoint>& samples) const {
+  void check_levels(std::vector<CheckResult>& out, FisVariant variant, const GpuRun& gpu, const MomentPyramids& chain,
+                    const std::vector<SamplePoint>& samples) const {
     const VirtualSquare& sq = view_.square;
     const float L = static_cast<float>(sq.levels);
     if (variant == FisVariant::kTok15) {
@@ -258,7 +261,7 @@ class ViewVerifier {
 
   // The whole filtered-sampling pass against reference_fis on the same pyramid.
   void check_generator(std::vector<CheckResult>& out, FisVariant variant, const GpuRun& gpu,
-                       const std::array<MipPyramid, 3>& chain, const std::vector<SamplePoint>& samples) const {
+                       const MomentPyramids& chain, const std::vector<SamplePoint>& samples) const {
     if (texture()) {
       check_generator_texture(out, variant, gpu, chain, samples);
       return;
@@ -286,7 +289,7 @@ class ViewVerifier {
   // channel, propagated through Eq. 4/5) plus 1e-4 relative for float rounding. Measured: the
   // worst error / tolerance (passes at <= 1).
   void check_generator_texture(std::vector<CheckResult>& out, FisVariant variant, const GpuRun& gpu,
-                               const std::array<MipPyramid, 3>& chain, const std::vector<SamplePoint>& samples) const {
+                               const MomentPyramids& chain, const std::vector<SamplePoint>& samples) const {
     CheckResult r = result(labelled(fis_variant_name(variant)), "vsgls");
     const auto cpu_generator = reference_fis(chain, variant, params_);
     double worst_ratio = 0, worst_rel = 0, worst_level = 0;
@@ -321,7 +324,7 @@ class ViewVerifier {
   // estimates (exact in expectation only where the PDF is proportional to the power; on a
   // high-frequency BRSM PDF Tok15 drifts from 1, the paper's point), so no tolerance is set on it.
   void check_total_power(std::vector<CheckResult>& out, FisVariant variant, const GpuRun& gpu,
-                         const std::array<MipPyramid, 3>& chain, const std::vector<SamplePoint>& samples) const {
+                         const MomentPyramids& chain, const std::vector<SamplePoint>& samples) const {
     const std::string gen = labelled(fis_variant_name(variant));
     double sum = 0;
     for (const auto& v : gpu.vsgls) sum += double{v.power().r} + double{v.power().g} + double{v.power().b};

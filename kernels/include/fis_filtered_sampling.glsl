@@ -51,18 +51,19 @@ float choose_level(WarpedSample s, float q_top) {
   // table3: end modified
 }
 
-// Returns the cluster power; `density` receives the PDF value the estimator divided by.
-vec3 estimate_power(vec3 mean_flux, WarpedSample s, float level, float q_top, out float density) {
+// Returns the factor that turns the filtered mean flux into the cluster's power (Eq. 4 / Eq. 5);
+// `density` receives the PDF value the estimator divided by.
+float power_scale(WarpedSample s, float level, float q_top, out float density) {
   float N = float(pc.count);
   // table3: begin tok15
   if (FIS_VARIANT == 0u) {
     density = s.pdf;  // Eq. 4: the numerator is filtered, the denominator is not
-    return square_texels() * mean_flux / max(N * s.pdf, pc.K);
+    return square_texels() / max(N * s.pdf, pc.K);
   }
   // table3: end tok15
   // table3: begin modified
   density = pyramid_trilinear(PDF_LAYER, s.x, level).w / q_top;  // Eq. 5: both filtered alike
-  return square_texels() * mean_flux / (N * density);
+  return square_texels() / (N * density);
   // table3: end modified
 }
 // ------------------------------------------------------------------------------------------------
@@ -77,9 +78,11 @@ void main() {
   vec4 m0 = pyramid_trilinear(0u, s.x, level);
   vec4 m1 = pyramid_trilinear(1u, s.x, level);
   vec4 m2 = pyramid_trilinear(2u, s.x, level);
+  vec4 m3 = pyramid_trilinear(3u, s.x, level);
+  vec4 m4 = pyramid_trilinear(4u, s.x, level);
   float density;
-  vec3 power = estimate_power(m0.rgb, s, level, q_top, density);
-  vsgls[i] = vsgl_from_moments(m0, m1, m2, power, level, s.x, density, 0.0);
+  float scale = power_scale(s, level, q_top, density);
+  vsgls[i] = vsgl_from_moments(m0, m1, m2, m3, m4, scale, level, s.x, density, 0.0);
 }
 
 #endif

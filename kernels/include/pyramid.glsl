@@ -2,8 +2,8 @@
 #define PYRAMID_GLSL
 #define PYRAMID_ACCESSORS
 // The storage-buffer pyramid of DESIGN.md §4 with software filtering (`--pyramid buffer`).
-// The includer declares the buffer `pyramid_texels` (vec4) holding 3 layers of `pyramid_total`
-// texels each: layer 0 = (Phi.rgb, w), 1 = (w P, w |P|^2), 2 = (w rbar, q).
+// The includer declares the buffer `pyramid_texels` (vec4) holding kMomentLayers layers of
+// `pyramid_total` texels each (texel_moments() in vsgl_math.glsl, DESIGN.md §4).
 // pyramid_texture.glsl offers the same functions on a sampled image (DESIGN.md §6.1a).
 #include "pyramid_layout.glsl"
 

@@ -3,7 +3,7 @@
 #define PYRAMID_ACCESSORS
 // The sampled-image pyramid of DESIGN.md §6.1a (`--pyramid texture`), with the functions of
 // pyramid.glsl: the includer declares `pyramid_image`, a sampler2DArray over the S x S virtual
-// square (array layers = moment layers 0, 1, 2; mip levels 0..L), whose sampler is LINEAR /
+// square (array layers = moment layers 0..4; mip levels 0..L), whose sampler is LINEAR /
 // LINEAR / mipmap LINEAR with a transparent-black border. Texels outside each level's in-bounds
 // extent hold zero (cleared once when the image is made), so hardware filtering gives exactly the
 // §4 semantics: zero outside the extent, level L the 1x1 mean.

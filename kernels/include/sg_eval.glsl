@@ -1,23 +1,26 @@
 #ifndef SG_EVAL_GLSL
 #define SG_EVAL_GLSL
-// Evaluating a VSGL at a receiver without visibility (DESIGN.md §8, Tok15 §3.1), in closed form with
-// spherical Gaussians G(w; a, s) = exp(s (dot(w, a) - 1)).
+// Evaluating a VSGL at a receiver without visibility: Tok15 Eq. 2 and Eq. 3 with K = 2 lobes on
+// each side and §3.3's consistent bias reduction (DESIGN.md §8), with spherical Gaussians
+// G(w; a, s) = exp(s (dot(w, a) - 1)).
 //
-//   L = 1 / (pi r^2) * integral over S^2 of I(w) f(w) V(w) dw            (Tok15 Eq. 2)
-//   I(w) = Phi c(lambda) G(w; -xi, lambda)   radiant intensity of the VSGL toward -w,
-//          c(s) = 1 / integral of G(.; s) = s / (2 pi (1 - exp(-2 s)))  (1 / (4 pi) at s = 0)
-//   V(w) = 2 G(w; wc, lambda_v), lambda_v = 4 pi / solid, solid = 2 pi (1 - cos theta),
-//          cos theta = d / sqrt(d^2 + r^2)                              (no singularity at d = 0)
-//   f(w) = the receiver's response as a sum of SGs.
-// A product of SGs is an SG, so each term is a triple-product integral of SGs. As r -> 0 and d
-// grows, L tends to the point-light value I(wc) f(wc) / d^2.
+//   L = 1 / (pi r^2) * integral over S^2 of rho(w) V(w) dw                     (Tok15 Eq. 2)
+//   rho(w) = f_s(w) f_i(w) <w_i, n_s> <-w_i, n_i>: the receiver's BRDF f_s, the light's emission f_i
+//          (its power times its BRDF) and the exact clamped cosines at the direction w_i to the
+//          light's mean, pulled out of the integral (Tok15 Eq. 3: smooth, and exactly 0 when the
+//          receiver faces away or the light lies in the receiver's plane);
+//   f_s(w) = rho_d / pi + rho_s c(s_r) G(w; axis_r, s_r),   f_i(w) = Phi_d / pi + Phi_s c(lambda) G(w; -axis, lambda):
+//          a diffuse lobe of zero sharpness and a normalized specular SG, c(s) = 1 / integral of G;
+//   V(w) = 2 G(w; w_i, lambda_v), lambda_v = 4 pi / Omega, Omega = 2 pi (1 - cos theta),
+//          cos theta = d / sqrt(d^2 + r^2)                                    (no singularity at d = 0).
+// Each of the four lobe pairs is then a closed-form product integral of SGs. §3.3: where rho's
+// sharpest lobe is smoother than alpha lambda_v, rho is pulled out instead: L = rho(w_i) Omega / (pi r^2),
+// which tends to the VPL of Eq. 1, rho(w_i) / d^2, as r -> 0.
 // C++ twin: harness/math/vsgl_math.hpp.
 #include "vsgl_math.glsl"
+#include "interface/shading.h"
 
-// The clamped cosine max(dot(w, n), 0) as one SG: 1.17 G(w; n, 2.133).
-const float VSGL_COSINE_SG_AMPLITUDE = 1.17;
-const float VSGL_COSINE_SG_SHARPNESS = 2.133;
-// A receiver closer than this to the VSGL's mean uses this distance and its own normal as wc.
+// A receiver closer than this to the VSGL's mean uses this distance and its own normal as w_i.
 const float VSGL_MIN_DISTANCE = 1e-6;
 
 // Integral over S^2 of G(w; a, s) = 2 pi (1 - exp(-2 s)) / s; a series below s = 0.01, where the
@@ -45,12 +48,13 @@ float sg_triple_integral(vec3 a1, float s1, vec3 a2, float s2, vec3 a3, float s3
   return exp(log_amplitude) * sg_integral(sm);
 }
 
-// The VSGL as seen from x: direction wc to its mean, visibility-SG sharpness lambda_v and the
-// factor 2 / (pi r^2) (the 2 of V(w) = 2 G, and Tok15's 1 / (pi r^2)).
+// The VSGL as seen from x: direction wc to its mean, the cone's solid angle Omega, the
+// visibility-SG sharpness lambda_v = 4 pi / Omega and Tok15's 1 / (pi r^2).
 struct VsglView {
   vec3 wc;
   float lambda_v;
-  float scale;
+  float solid_angle;
+  float inv_area;
 };
 
 VsglView vsgl_view_from(Vsgl v, vec3 x, vec3 fallback_dir) {
@@ -66,47 +70,81 @@ VsglView vsgl_view_from(Vsgl v, vec3 x, vec3 fallback_dir) {
   float r2 = 2.0 * max(v.position_variance.w, VSGL_MIN_VARIANCE);
   float hyp = sqrt(d * d + r2);
   float one_minus_cos = r2 / (hyp * (hyp + d));  // 1 - d / hyp without cancellation
-  view.lambda_v = 2.0 / one_minus_cos;             // 4 pi / (2 pi (1 - cos theta))
-  view.scale = 2.0 / (VSGL_PI * r2);
+  view.solid_angle = 2.0 * VSGL_PI * one_minus_cos;
+  view.lambda_v = 2.0 / one_minus_cos;  // 4 pi / (2 pi (1 - cos theta))
+  view.inv_area = 1.0 / (VSGL_PI * r2);
   return view;
 }
 
-// (a) Shading: outgoing radiance toward wo (unit, toward the viewer) at a surface point x with
-// normal n, diffuse albedo rho_d, specular albedo rho_s and GGX roughness. The receiver's BRDF
-// times cosine is f(w) = rho_d / pi * 1.17 G(w; n, 2.133) + amp G(w; axis_r, s_r) max(dot(axis_r, n), 0)
-// with axis_r = reflect(-wo, n), s_r = (2 / alpha^2) / (4 max(dot(n, wo), 1e-4)) and
-// amp = rho_s / sg_integral(s_r) (the lobe's albedo is rho_s; its cosine is taken at axis_r).
-vec3 vsgl_radiance_surface(Vsgl v, vec3 x, vec3 n, vec3 wo, vec3 rho_d, vec3 rho_s, float roughness) {
+// A BRDF (or a light's emission) as Tok15's K = 2 lobes: a diffuse coefficient (an SG of zero
+// sharpness) and a normalized specular SG with its coefficient, axis and sharpness.
+struct TwoLobes {
+  vec3 diffuse;   // coefficient of the zero-sharpness lobe
+  vec3 specular;  // coefficient of G(w; axis, sharpness), normalization included
+  vec3 axis;
+  float sharpness;
+};
+
+// Radiance (or importance) toward wo leaving a receiver at x with normal n and response `f`, lit by
+// the VSGL v (DESIGN.md §8): Tok15 Eq. 3 with §3.3's bias reduction.
+vec3 vsgl_two_lobe_radiance(Vsgl v, vec3 x, vec3 n, TwoLobes f) {
   VsglView view = vsgl_view_from(v, x, n);
-  vec3 phi = v.power_sharpness.rgb;
+  float cosines = max(dot(view.wc, n), 0.0) * max(dot(-view.wc, v.normal_length.xyz), 0.0);
+  if (!(cosines > 0.0)) return vec3(0.0);
+  vec3 phi_s = v.specular_power.rgb;
   float lambda = v.power_sharpness.w;
-  vec3 emit_axis = -v.axis_level.xyz;  // I(w) peaks where -w is the VSGL's axis
-  float emission = sg_normalization(lambda) * view.scale;
-
-  float diffuse_term = VSGL_COSINE_SG_AMPLITUDE / VSGL_PI *
-      sg_triple_integral(emit_axis, lambda, n, VSGL_COSINE_SG_SHARPNESS, view.wc, view.lambda_v);
-
-  float alpha = max(roughness, VSGL_MIN_ROUGHNESS);
-  float s_r = (2.0 / (alpha * alpha)) / (4.0 * max(dot(n, wo), VSGL_MIN_COSINE));
-  vec3 axis_r = reflect(-wo, n);
-  float specular_term = max(dot(axis_r, n), 0.0) / sg_integral(s_r) *
-      sg_triple_integral(emit_axis, lambda, axis_r, s_r, view.wc, view.lambda_v);
-
-  return phi * (emission * (rho_d * diffuse_term + rho_s * specular_term));
+  vec3 emit_axis = -v.axis_level.xyz;  // f_i(w) peaks where -w is the VSGL's axis
+  vec3 light_d = max(v.power_sharpness.rgb - phi_s, vec3(0.0)) / VSGL_PI;
+  vec3 light_s = phi_s * sg_normalization(lambda);
+  bool receiver_glossy = f.specular.r + f.specular.g + f.specular.b > 0.0;
+  bool light_glossy = phi_s.r + phi_s.g + phi_s.b > 0.0;
+  // Tok15 §3.3: the sharpest lobe of rho (the products' sharpness |s1 a1 + s2 a2|), against alpha lambda_v.
+  float eta = 0.0;
+  if (receiver_glossy) eta = max(eta, f.sharpness);
+  if (light_glossy) eta = max(eta, lambda);
+  if (receiver_glossy && light_glossy) eta = max(eta, length(f.sharpness * f.axis + lambda * emit_axis));
+  vec3 sum;
+  if (eta < kBiasReductionAlpha * view.lambda_v) {
+    float g_s = exp(f.sharpness * (dot(view.wc, f.axis) - 1.0));
+    float g_i = exp(lambda * (dot(view.wc, emit_axis) - 1.0));
+    sum = (f.diffuse + f.specular * g_s) * (light_d + light_s * g_i) * view.solid_angle;
+  } else {
+    vec3 a = view.wc;  // G_V's axis; a zero sharpness makes a lobe drop out of the product
+    sum = 2.0 * (f.diffuse * light_d * sg_integral(view.lambda_v) +
+                 f.diffuse * light_s * sg_triple_integral(emit_axis, lambda, a, view.lambda_v, a, 0.0) +
+                 f.specular * light_d * sg_triple_integral(f.axis, f.sharpness, a, view.lambda_v, a, 0.0) +
+                 f.specular * light_s * sg_triple_integral(f.axis, f.sharpness, emit_axis, lambda, a, view.lambda_v));
+  }
+  return sum * (cosines * view.inv_area);
 }
 
-// (b) BRSM importance (DESIGN.md §8): how much of the camera VSGL `cam` (its power = reflectance, the
-// importance emitted toward the camera's surfaces) a VPL at x receives through its own normalized
-// emission lobe c(vpl_lambda) G(w; vpl_axis, vpl_lambda). Importance is a scalar: the rgb power
-// of the camera VSGL enters as its channel sum (Phi.r + Phi.g + Phi.b), no luminance weighting.
-// A VPL on the VSGL's mean (d < 1e-6) uses vpl_axis as wc.
-float vsgl_importance_to_vpl(Vsgl cam, vec3 x, vec3 vpl_axis, float vpl_lambda) {
-  VsglView view = vsgl_view_from(cam, x, vpl_axis);
-  vec3 phi = cam.power_sharpness.rgb;
-  float lambda = cam.power_sharpness.w;
-  float emission = (phi.r + phi.g + phi.b) * sg_normalization(lambda) * view.scale;
-  return emission * sg_normalization(vpl_lambda) *
-      sg_triple_integral(-cam.axis_level.xyz, lambda, vpl_axis, vpl_lambda, view.wc, view.lambda_v);
+// A surface's BRDF as two lobes: rho_d / pi, and rho_s times a normalized SG around reflect(-wo, n)
+// of sharpness (2 / alpha^2) / (4 max(dot(n, wo), 1e-4)) (the NDF warped to the reflection lobe,
+// Wang et al. 2009), so that its directional albedo is rho_s <axis_r, n>.
+TwoLobes surface_lobes(vec3 n, vec3 wo, vec3 rho_d, vec3 rho_s, float roughness) {
+  TwoLobes f;
+  float alpha = max(roughness, VSGL_MIN_ROUGHNESS);
+  f.sharpness = clamp((2.0 / (alpha * alpha)) / (4.0 * max(dot(n, wo), VSGL_MIN_COSINE)), 0.0, VSGL_MAX_SHARPNESS);
+  f.axis = reflect(-wo, n);
+  f.diffuse = rho_d / VSGL_PI;
+  f.specular = rho_s * sg_normalization(f.sharpness);
+  return f;
+}
+
+// (a) Shading: outgoing radiance toward wo (unit, toward the viewer) at a surface point x with
+// normal n, diffuse albedo rho_d, specular albedo rho_s and GGX roughness.
+vec3 vsgl_radiance_surface(Vsgl v, vec3 x, vec3 n, vec3 wo, vec3 rho_d, vec3 rho_s, float roughness) {
+  return vsgl_two_lobe_radiance(v, x, n, surface_lobes(n, wo, rho_d, rho_s, roughness));
+}
+
+// (b) BRSM importance (DESIGN.md §8), made the same way: the camera VSGL `cam` (its power = the
+// reflectance of the camera's surfaces) lights an RSM texel at P with normal N whose "albedos" are
+// its diffuse and specular flux, seen from the spot light (wo toward the light). Importance is a
+// scalar: the channel sum of that radiance.
+float vsgl_importance_to_texel(Vsgl cam, vec3 P, vec3 N, vec3 to_light, vec3 flux_diffuse, vec3 flux_specular,
+                               float roughness) {
+  vec3 e = vsgl_radiance_surface(cam, P, N, to_light, flux_diffuse, flux_specular, roughness);
+  return e.r + e.g + e.b;
 }
 
 #endif  // SG_EVAL_GLSL

@@ -25,8 +25,8 @@ using gpu::kFisSamplingGroup;
 using gpu::kFisSpdTileLevels;
 using gpu::kFisTile;
 
-constexpr uint32_t kMomentLayers = 3;
 using gpu::kFisSpdTailLevelSlots;
+using gpu::kMomentLayers;
 
 FisParams checked(const FisParams& p, const DeviceView& view) {
   if (p.vsgl_count == 0) throw InputError("N = 0: at least one VSGL is needed");

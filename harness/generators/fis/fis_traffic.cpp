@@ -8,16 +8,18 @@ namespace vsgl {
 namespace {
 
 constexpr uint64_t kCaptureTexelBytes = uint64_t{kChannelCount} * sizeof(float);
-constexpr uint64_t kMomentTexelBytes = sizeof(TexelMoments);  // m0, m1, m2: 3 x vec4
-static_assert(kMomentTexelBytes == 48, "three vec4 float32 moment layers (DESIGN.md §4)");
+// m0..m4: 5 x vec4, the two reserved .w of m3 and m4 included (they are stored and moved).
+constexpr uint64_t kMomentTexelBytes = sizeof(TexelMoments);
+static_assert(kMomentTexelBytes == 80, "five vec4 float32 moment layers (DESIGN.md §4)");
 
 }  // namespace
 
 std::string fis_traffic_model() {
   const std::string c = std::to_string(kCaptureTexelBytes), m = std::to_string(kMomentTexelBytes);
   return "additional: W*H texels x (" + c + " B read: " + std::to_string(int{kChannelCount}) +
-         " float32 capture channels; " + m + " B written: 3 vec4 float32 moment layers); mipmapping: level 0 read once (" +
-         m + " B per texel) and levels 1..L written once (" + m +
+         " float32 capture channels; " + m +
+         " B written: 5 vec4 float32 moment layers); mipmapping: level 0 read once (" + m +
+         " B per texel) and levels 1..L written once (" + m +
          " B per in-bounds texel); level_by_level: every level l < L read once and level l + 1 written; no padding "
          "counted, no credit for caches";
 }

@@ -6,7 +6,7 @@
 // virtual square (DESIGN.md §4) with in-bounds extents W_l x H_l, T_l = W_l * H_l texels:
 //
 //   additional:  read  = W * H * C * 4        (C = 15 float32 capture channels, DESIGN.md §3)
-//                write = W * H * B            (B = 48: three vec4 float32 moment layers, DESIGN.md §4)
+//                write = W * H * B            (B = 80: five vec4 float32 moment layers, DESIGN.md §4)
 //   mipmapping:  read  = T_0 * B              (level 0, as `additional` left it)
 //                write = (T_1 + ... + T_L) * B
 //

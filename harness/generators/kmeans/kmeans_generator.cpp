@@ -159,7 +159,8 @@ KmeansGenerator::KmeansGenerator(Device& device, const DeviceView& view, KmeansS
       update_centres_set_(device, update_centres_, {ranges_, centre_pieces_, centres_}, name() + ".update_centres") {
   // table3: begin segmented_sum
   if (params_.segmented_sum) {
-    sum_pieces_.emplace(device, bytes<glm::vec4>(4ull * pieces_), MemoryUsage::kDeviceLocal, name() + ".sum_pieces");
+    sum_pieces_.emplace(device, bytes<glm::vec4>(uint64_t{gpu::kKmeansPieceVec4s} * pieces_), MemoryUsage::kDeviceLocal,
+                        name() + ".sum_pieces");
     segsum_pieces_.emplace(device, kernel_1d(KmeansKernel::kSegsumPieces, 3, sizeof(KmeansSumPush), kNarrow));
     segsum_clusters_.emplace(device, kernel_1d(KmeansKernel::kSegsumClusters, 4, sizeof(KmeansSumPush), kNarrow));
     segsum_pieces_set_.emplace(device, *segsum_pieces_, buffer_bindings({view.layers(), {sorted_}, {*sum_pieces_}}),

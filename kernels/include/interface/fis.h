@@ -14,6 +14,8 @@ VSGL_CONST uint kFisSpdTileLevels = 6u;
 // Its second dispatch writes levels 7..14 (8 storage images, the desktop baseline's per-stage
 // limit), so it takes squares of up to 2^14 texels.
 VSGL_CONST uint kFisSpdTailLevelSlots = 8u;
+// Moment layers per texel (DESIGN.md §4): (Phi, w), (w P, w |P|^2), (w N, q), (Phi_s, 0), (s d_s, 0).
+VSGL_CONST uint kMomentLayers = 5u;
 
 // fis_additional*.comp
 struct FisAdditionalPush {

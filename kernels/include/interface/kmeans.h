@@ -13,6 +13,7 @@ VSGL_CONST uint kKmeansNarrowGroupSize = 64u;   // per-centre / per-cluster / pe
 VSGL_CONST uint kKmeansRadix = 256u;            // 8-bit digits of the radix sort
 VSGL_CONST uint kKmeansRadixGroupSize = kKmeansRadix;  // one thread per digit (histogram and scatter)
 VSGL_CONST uint kKmeansScanItems = 4u;          // values per thread of kmeans_scan_blocks / _add
+VSGL_CONST uint kKmeansPieceVec4s = 6u;         // a segsum piece: the 5 moment sums and the pixel sum
 
 // kmeans_fill.comp: words[offset .. offset + count) = value.
 struct KmeansFillPush {

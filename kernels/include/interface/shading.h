@@ -10,6 +10,11 @@ VSGL_INTERFACE_BEGIN
 // shared memory one per thread per tile.
 VSGL_CONST uint kShadeGroupSize = 16u;
 
+// Tok15 §3.3's alpha: a VSGL's rho(w) is pulled out of the integral where its sharpest lobe is below
+// alpha * lambda_v (sg_eval.glsl). Tok15 leaves it to the user; 1 compares the two sharpnesses as
+// they are. Every output that shades records it (DESIGN.md §8).
+VSGL_CONST float kBiasReductionAlpha = 1.0;
+
 struct ShadePush {
   uint width;       // G-buffer W x H
   uint height;
