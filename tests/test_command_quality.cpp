@@ -4,6 +4,7 @@
 // the pictures.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <unistd.h>
@@ -47,8 +48,9 @@ TEST(QualityCli, TinyCaptureWritesJsonMarkdownAndPictures) {
   std::ifstream in(dir / "quality.json");
   const auto j = nlohmann::ordered_json::parse(in);
   EXPECT_EQ(j["schema"], "vsgl-quality");
-  // stdev: sample (n - 1) since 3; flux origin and converged reference since 4; per-frame series since 5
-  EXPECT_EQ(j["schema_version"], 5);
+  // stdev: sample (n - 1) since 3; flux origin and converged reference since 4; per-frame series
+  // since 5; the reference ladder since 6
+  EXPECT_EQ(j["schema_version"], 6);
   // What the writer writes is what the committed schema describes.
   for (const std::string& problem : validate_against_schema(
            j, test::read_json(std::filesystem::path(VSGL_SOURCE_DIR) / "results/schema/quality.schema.json")))
@@ -155,6 +157,49 @@ TEST(QualityCli, TinyCaptureWritesJsonMarkdownAndPictures) {
             3u);
   for (const char* metric : {"relative_rmse", "p99_pixel_error", "flip", "rel_mse"})
     EXPECT_GT(ref["own_errors"][metric].get<double>(), 0.0) << metric;
+  // The ladder (DESIGN.md §11a): the rungs at RSM strides 16, 8, 4 and 2 of the 64^2 RSM, each
+  // against the next finer; the last difference is the own error, the rate the geometric mean of
+  // the two ratios, eps_inf = own rho / (1 - rho) where rho < 1.
+  const auto& ladder = ref["ladder"];
+  EXPECT_EQ(ladder["rsm_strides"], nlohmann::ordered_json::array({16, 8, 4, 2}));
+  EXPECT_EQ(ladder["rsm_sides"], nlohmann::ordered_json::array({4, 8, 16, 32}));
+  for (const char* metric : {"relative_rmse", "p99_pixel_error", "flip", "rel_mse", "scaled_rmse"}) {
+    const auto& l = ladder["metrics"][metric];
+    ASSERT_EQ(l["differences"].size(), 3u) << metric;
+    EXPECT_EQ(l["differences"][2], ref["own_errors"][metric]) << metric;
+    const double e8 = l["differences"][0], e4 = l["differences"][1], e2 = l["differences"][2];
+    EXPECT_DOUBLE_EQ(l["ratios"][0].get<double>(), e4 / e8) << metric;
+    EXPECT_DOUBLE_EQ(l["ratios"][1].get<double>(), e2 / e4) << metric;
+    const double rate = l["rate"];
+    EXPECT_NEAR(rate, std::sqrt(e2 / e8), 1e-12 * rate) << metric;
+    if (rate < 1.0) EXPECT_NEAR(l["remaining_error"].get<double>(), e2 * rate / (1.0 - rate), 1e-12) << metric;
+    else EXPECT_TRUE(l["remaining_error"].is_null()) << metric;
+  }
+  EXPECT_FALSE(ladder["metrics"].contains("scale"));
+  // Every static frame and K sweep step against the stride-2 rung too, and each reference-decided
+  // claim with what the rule read.
+  for (const char* g : {"fis_tok15", "fis_modified"}) {
+    EXPECT_EQ(fs["generators"][g]["second_rung"]["relative_rmse"]["per_frame"].size(), 3u) << g;
+    EXPECT_EQ(fs["generators"][g]["second_rung"]["p99_pixel_error"]["per_frame"].size(), 3u) << g;
+    EXPECT_NE(fs["generators"][g]["second_rung"]["relative_rmse"]["per_frame"],
+              fs["generators"][g]["series"]["relative_rmse"]["per_frame"])
+        << g;
+    for (const auto& row : j["k_sweep"][g])
+      EXPECT_EQ(row["per_frame_second_rung"]["relative_rmse"]["per_frame"].size(), 3u) << g;
+    EXPECT_EQ(j["k_sweep"][g][0]["per_frame_second_rung"]["relative_rmse"]["per_frame"],
+              fs["generators"][g]["second_rung"]["relative_rmse"]["per_frame"])
+        << g;
+  }
+  bool tail = false;
+  for (const auto& c : j["claims"])
+    if (c["measure"].get<std::string>().rfind("tail error", 0) == 0) {
+      tail = true;
+      EXPECT_EQ(c["reference_metric"], "p99_pixel_error");
+      EXPECT_EQ(c["reference_rate"], ladder["metrics"]["p99_pixel_error"]["rate"]);
+      EXPECT_EQ(c["reference_remaining_error"], ladder["metrics"]["p99_pixel_error"]["remaining_error"]);
+      EXPECT_TRUE(c["second_rung"].contains("verdict")) << c.dump();
+    }
+  EXPECT_TRUE(tail) << j["claims"].dump();
 }
 
 // A reference capture (--reference-capture): the same frame with a 4x larger RSM lends the reference

@@ -4,12 +4,15 @@
 // its JSON pointer.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "harness/core/error.hpp"
 #include "harness/core/json_reader.hpp"
+#include "harness/core/json_schema_subset.hpp"
 #include "harness/formats/quality_model.hpp"
 #include "harness/quality/quality_claims.hpp"
 #include "harness/quality/quality_report.hpp"
@@ -55,14 +58,45 @@ TEST(QualityModel, CommittedReportsRenderAsCommitted) {
   }
 }
 
+// A committed report read again gets its verdicts again: the claims the reference does not decide
+// recomputed from the model, those it decides kept as written where the document has no reference
+// ladder (schema 5, judged by the rule of its time; DESIGN.md §11a *Rule*), and without a ladder
+// and without its written claims, not decided.
 TEST(QualityModel, ClaimVerdictsFromTheModelMatchTheCommittedOnes) {
+  const auto reference_decided = [](const nlohmann::ordered_json& c) {
+    const std::string measure = c.at("measure");
+    return measure.rfind("tail error", 0) == 0 || measure.rfind("k-means margin", 0) == 0 ||
+           measure.rfind("K sweep", 0) == 0;
+  };
   for (const fs::path& f : committed_reports()) {
     SCOPED_TRACE(f.string());
     const nlohmann::ordered_json committed = read_report(f);
-    nlohmann::ordered_json doc = committed;
-    doc.erase("claims");
-    add_claim_verdicts(doc);
-    EXPECT_EQ(doc["claims"], committed["claims"]);
+    const QualityModel m = quality_model_from_json(committed, f.string());
+    if (m.reference_detail && m.reference_detail->ladder) {
+      nlohmann::ordered_json doc = committed;
+      doc.erase("claims");
+      add_claim_verdicts(doc);
+      EXPECT_EQ(doc["claims"], committed["claims"]);
+      continue;
+    }
+    nlohmann::ordered_json kept = committed;
+    add_claim_verdicts(kept);
+    EXPECT_EQ(kept["claims"], committed["claims"]);
+    nlohmann::ordered_json fresh = committed;
+    fresh.erase("claims");
+    add_claim_verdicts(fresh);
+    ASSERT_EQ(fresh["claims"].size(), committed["claims"].size());
+    for (std::size_t i = 0; i < fresh["claims"].size(); ++i) {
+      const auto &a = fresh["claims"][i], &b = committed["claims"][i];
+      if (!reference_decided(b)) {
+        EXPECT_EQ(a, b);
+        continue;
+      }
+      const std::string verdict = a.at("verdict");
+      if (b.at("measure").get<std::string>().rfind("K sweep", 0) != 0)
+        EXPECT_EQ(verdict, "reference not converged (no reference ladder)");
+      else EXPECT_NE(verdict, "holds");
+    }
   }
 }
 
@@ -119,6 +153,82 @@ TEST(QualityModel, FluxOriginRoundTripsAndRenders) {
   EXPECT_NE(md.find("fis_tok15 over 4 lattice offsets: sum Phi / flux mean 0.75 (stdev 0.0625, 0.625 to 0.875)"),
             std::string::npos)
       << md;
+}
+
+// A made-up schema-6 ladder on a committed report: relative RMSE converging at 0.5 per doubling,
+// p99 with no rate (one difference: a small RSM) and a ratio that is not finite.
+ReferenceLadder made_up_ladder() {
+  ReferenceLadder l;
+  l.rsm_strides = {8, 4, 2, 1};
+  l.rsm_sides = {64, 128, 256, 512};
+  l.metrics["relative_rmse"] = {{0.08, 0.04, 0.02}, {0.5, 0.5}, 0.5, 0.02};
+  l.metrics["p99_pixel_error"] = {{0.0, 0.5, 0.25},
+                                  {std::numeric_limits<double>::infinity(), 0.5},
+                                  std::numeric_limits<double>::quiet_NaN(),
+                                  std::numeric_limits<double>::infinity()};
+  l.note = "4 rungs, 3 successive difference(s)";
+  return l;
+}
+
+// Schema 6: the ladder, the frames against the stride-2 rung and the K sweep's, written and read
+// back as written (non-finite values as null), conforming to the committed schema; rendered with
+// the ladder and the rule instead of schema 5's sentence.
+TEST(QualityModel, SchemaSixLadderRoundTripsAndRenders) {
+  QualityModel m = quality_model_from_json(read_report(committed_reports().front()), "the report");
+  ASSERT_TRUE(m.reference_detail && m.frames_static);
+  EXPECT_FALSE(m.reference_detail->ladder);  // the committed reports are schema 5
+  m.schema_version = 6;
+  m.reference_detail->ladder = made_up_ladder();
+  const std::string generator = m.frames_static->generators.begin()->first;
+  m.frames_static->second_rung[generator] = {{"relative_rmse", {0.25, 0.5, 0.75}}};
+  m.frames_static->second_rung_reference = "the stride-2 rung";
+  m.k_sweep.front().second.front().per_frame_second_rung = {{"relative_rmse", {0.125, 0.25}}};
+  const nlohmann::ordered_json doc = m;
+  const auto& ladder = doc["reference"]["ladder"];
+  EXPECT_EQ(ladder["rsm_strides"], nlohmann::ordered_json::array({8, 4, 2, 1}));
+  EXPECT_EQ(ladder["metrics"]["relative_rmse"]["rate"], 0.5);
+  EXPECT_EQ(ladder["metrics"]["relative_rmse"]["remaining_error"], 0.02);
+  EXPECT_TRUE(ladder["metrics"]["p99_pixel_error"]["rate"].is_null());
+  EXPECT_TRUE(ladder["metrics"]["p99_pixel_error"]["remaining_error"].is_null());
+  EXPECT_TRUE(ladder["metrics"]["p99_pixel_error"]["ratios"][0].is_null());
+  const QualityModel back = quality_model_from_json(doc, "the report");
+  ASSERT_TRUE(back.reference_detail->ladder);
+  EXPECT_EQ(back.reference_detail->ladder->metrics.at("relative_rmse").differences,
+            (std::vector<double>{0.08, 0.04, 0.02}));
+  EXPECT_TRUE(std::isinf(back.reference_detail->ladder->metrics.at("p99_pixel_error").remaining));
+  EXPECT_TRUE(std::isnan(back.reference_detail->ladder->metrics.at("p99_pixel_error").rate));
+  EXPECT_EQ(back.frames_static->second_rung.at(generator).at("relative_rmse"), (std::vector<double>{0.25, 0.5, 0.75}));
+  EXPECT_EQ(back.k_sweep.front().second.front().per_frame_second_rung.at("relative_rmse"),
+            (std::vector<double>{0.125, 0.25}));
+  const nlohmann::ordered_json again = back;
+  EXPECT_EQ(again.dump(1), doc.dump(1));
+  for (const std::string& problem :
+       validate_against_schema(doc, read_report(kSource / "results/schema/quality.schema.json")))
+    ADD_FAILURE() << problem;
+  const std::string md = quality_markdown(back, {});
+  EXPECT_EQ(md.find("ten times"), std::string::npos);
+  EXPECT_EQ(md.find("a tenth"), std::string::npos);
+  EXPECT_NE(md.find("| 8 (64^2) vs 4 (128^2) | 0 | | 0.08 | |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| 2 (256^2) vs 1 (512^2), the own error | 0.25 | 0.5 | 0.02 | 0.5 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| rate rho per doubling (geometric mean of the ratios) | none | | 0.5 | |"), std::string::npos)
+      << md;
+  EXPECT_NE(md.find("| remaining error eps_inf = own rho / (1 - rho) | inf | | 0.02 | |"), std::string::npos) << md;
+  EXPECT_NE(md.find("is decided only where (1 + b) eps_inf"), std::string::npos) << md;
+}
+
+// A schema-6 document judges its reference claims by the ladder: without one it is refused, by
+// pointer; a schema-5 document reads without it.
+TEST(QualityModel, SchemaSixNeedsTheLadder) {
+  nlohmann::ordered_json doc = read_report(committed_reports().front());
+  ASSERT_EQ(doc["schema_version"], 5);
+  EXPECT_FALSE(quality_model_from_json(doc, "q.json").reference_detail->ladder);
+  doc["schema_version"] = 6;
+  try {
+    quality_model_from_json(doc, "q.json");
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/reference/ladder: missing field"), std::string::npos) << e.what();
+  }
 }
 
 TEST(QualityModel, MissingFieldsAreNamedByPointer) {

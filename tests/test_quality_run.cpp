@@ -206,15 +206,6 @@ TEST_F(QualityGpuTest, SupportReferenceKeepsTheLitTexelsWithPositivePdf) {
   EXPECT_THROW(reference_vpls(c.rsm, c.meta.light, 1, VplExtent::kTexelFootprint, VplSet::kPdfSupport), InputError);
 }
 
-TEST(QualityReferenceRule, DecidesOnlyWhenItsOwnErrorIsBelowATenthOfTheDifference) {
-  EXPECT_TRUE(reference_decides(0.009, 0.1));
-  EXPECT_FALSE(reference_decides(0.01, 0.1));  // not below a tenth
-  EXPECT_FALSE(reference_decides(0.02, 0.1));
-  EXPECT_TRUE(reference_decides(0.009, -0.1));  // the sign of the difference does not matter
-  EXPECT_FALSE(reference_decides(0.0, 0.0));
-  EXPECT_FALSE(reference_decides(std::nan(""), 0.1));
-}
-
 TEST_F(QualityGpuTest, ReferenceRejectsBadInput) {
   const Capture& c = tiny();
   EXPECT_THROW(reference_vpls(c.rsm, c.meta.light, 0, VplExtent::kPoint), InputError);

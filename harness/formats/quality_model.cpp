@@ -1,6 +1,8 @@
 #include "harness/formats/quality_model.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include "harness/core/json_reader.hpp"
 #include "harness/core/sorted_json.hpp"
@@ -170,13 +172,16 @@ json frame_errors_json(const FrameErrors& f) {
     json g{{"series", series_json(series)}};
     if (const auto it = series.find("relative_rmse"); it != series.end())
       g["worst_frame"] = std::max_element(it->second.begin(), it->second.end()) - it->second.begin();
+    if (const auto it = f.second_rung.find(name); it != f.second_rung.end()) g["second_rung"] = series_json(it->second);
     gens[name] = g;
   }
-  return json{{"gbuffer_stride", f.gbuffer_stride},
-              {"image", f.image},
-              {"reference", f.reference},
-              {"flip", json{{"exposure", f.flip_exposure}, {"pixels_per_degree", f.flip_pixels_per_degree}}},
-              {"generators", gens}};
+  json out{{"gbuffer_stride", f.gbuffer_stride},
+           {"image", f.image},
+           {"reference", f.reference},
+           {"flip", json{{"exposure", f.flip_exposure}, {"pixels_per_degree", f.flip_pixels_per_degree}}},
+           {"generators", gens}};
+  if (!f.second_rung_reference.empty()) out["second_rung_reference"] = f.second_rung_reference;
+  return out;
 }
 
 FrameErrors read_frame_errors(const JsonReader& r, const json& o, const std::string& p) {
@@ -191,8 +196,63 @@ FrameErrors read_frame_errors(const JsonReader& r, const json& o, const std::str
     const std::string gp = p + "/generators/" + g;
     if (!v.is_object()) r.wrong_type(v, gp, "an object");
     f.generators[g] = read_series(r, r.object(v, gp, "series"), gp + "/series");
+    if (const json* second = r.optional_object(v, gp, "second_rung"))
+      f.second_rung[g] = read_series(r, *second, gp + "/second_rung");
   }
+  f.second_rung_reference = r.optional_string(o, p, "second_rung_reference").value_or("");
   return f;
+}
+
+// A ladder value that may be infinite or NaN (DESIGN.md §11a): JSON has no such number, so null.
+json finite_or_null(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
+
+double number_or(const JsonReader& r, const json& v, const std::string& p, double if_null) {
+  return v.is_null() ? if_null : r.number(v, p);
+}
+
+json ladder_json(const ReferenceLadder& l) {
+  json metrics = json::object();
+  for (const auto& [name, m] : l.metrics) {
+    json ratios = json::array();
+    for (double x : m.ratios) ratios.push_back(finite_or_null(x));
+    metrics[name] = json{{"differences", m.differences},
+                         {"ratios", ratios},
+                         {"rate", finite_or_null(m.rate)},
+                         {"remaining_error", finite_or_null(m.remaining)}};
+  }
+  return json{{"rsm_strides", l.rsm_strides}, {"rsm_sides", l.rsm_sides}, {"metrics", metrics}, {"note", l.note}};
+}
+
+ReferenceLadder read_ladder(const JsonReader& r, const json& o, const std::string& p) {
+  ReferenceLadder l;
+  const auto uints = [&](const char* key) {
+    std::vector<uint32_t> out;
+    const json& a = r.array(o, p, key);
+    for (std::size_t i = 0; i < a.size(); ++i)
+      out.push_back(static_cast<uint32_t>(r.uint64(a[i], r.element(r.child(p, key), i))));
+    return out;
+  };
+  l.rsm_strides = uints("rsm_strides");
+  l.rsm_sides = uints("rsm_sides");
+  if (l.rsm_sides.size() != l.rsm_strides.size())
+    r.fail(r.child(p, "rsm_sides"),
+           "has " + std::to_string(l.rsm_sides.size()) + " rungs, rsm_strides " + std::to_string(l.rsm_strides.size()));
+  l.note = r.string(o, p, "note");
+  for (const auto& [name, v] : r.object(o, p, "metrics").items()) {
+    const std::string mp = p + "/metrics/" + name;
+    if (!v.is_object()) r.wrong_type(v, mp, "an object");
+    ReferenceLadderMetric m;
+    m.differences = r.numbers(v, mp, "differences");
+    const json& ratios = r.array(v, mp, "ratios");
+    for (std::size_t i = 0; i < ratios.size(); ++i)
+      m.ratios.push_back(
+          number_or(r, ratios[i], r.element(mp + "/ratios", i), std::numeric_limits<double>::quiet_NaN()));
+    m.rate = number_or(r, r.member(v, mp, "rate"), mp + "/rate", std::numeric_limits<double>::quiet_NaN());
+    m.remaining = number_or(r, r.member(v, mp, "remaining_error"), mp + "/remaining_error",
+                            std::numeric_limits<double>::infinity());
+    l.metrics[name] = std::move(m);
+  }
+  return l;
 }
 
 json reference_detail_json(const ReferenceDetail& d) {
@@ -213,10 +273,12 @@ json reference_detail_json(const ReferenceDetail& d) {
            {"dispatch", json{{"evaluations_per_dispatch", d.evaluations_per_dispatch},
                              {"vsgls_per_dispatch", d.vsgls_per_dispatch}}}};
   if (!d.own_errors.empty()) out["own_errors"] = d.own_errors;
+  if (d.ladder) out["ladder"] = ladder_json(*d.ladder);
   return out;
 }
 
-ReferenceDetail read_reference_detail(const JsonReader& r, const json& ref) {
+// `ladder_required`: a schema-6 document, whose reference-decided claims are judged by its ladder.
+ReferenceDetail read_reference_detail(const JsonReader& r, const json& ref, bool ladder_required) {
   ReferenceDetail d;
   const json& rows = r.array(ref, "/reference", "convergence");
   for (std::size_t i = 0; i < rows.size(); ++i) {
@@ -242,6 +304,8 @@ ReferenceDetail read_reference_detail(const JsonReader& r, const json& ref) {
   const json& disp = r.object(ref, "/reference", "dispatch");
   d.evaluations_per_dispatch = r.uint64(disp, "/reference/dispatch", "evaluations_per_dispatch");
   d.vsgls_per_dispatch = r.uint32(disp, "/reference/dispatch", "vsgls_per_dispatch");
+  if (ladder_required || ref.contains("ladder"))
+    d.ladder = read_ladder(r, r.object(ref, "/reference", "ladder"), "/reference/ladder");
   return d;
 }
 
@@ -324,6 +388,7 @@ json k_sweep_json(const std::vector<std::pair<std::string, std::vector<KSweepRow
              {"coverage", coverage_json(row.coverage)},
              {"power", power_json(row.power)}};
       if (!row.per_frame.empty()) r["per_frame"] = series_json(row.per_frame);
+      if (!row.per_frame_second_rung.empty()) r["per_frame_second_rung"] = series_json(row.per_frame_second_rung);
       out.push_back(r);
     }
     sweep[name] = out;
@@ -430,7 +495,9 @@ void read_reference(const JsonReader& r, const json& doc, QualityModel& m) {
   m.reference_rsm_stride = r.member(ref, "/reference", "rsm_stride");
   m.reference_image = r.array(ref, "/reference", "image", 2);
   if (ref.contains("vpl_source")) m.reference_vpl_source = r.object(ref, "/reference", "vpl_source");
-  if (ref.contains("convergence")) m.reference_detail = read_reference_detail(r, ref);
+  // Schema 6 judges the reference-decided claims by the ladder, so it must be there (DESIGN.md §11a).
+  const bool ladder_required = m.schema_version.is_number_integer() && m.schema_version.get<int64_t>() >= 6;
+  if (ref.contains("convergence")) m.reference_detail = read_reference_detail(r, ref, ladder_required);
   if (doc.contains("reference_error_support"))
     for (const auto& [g, e] : r.object(doc, "", "reference_error_support").items())
       m.reference_error_support[g] =
@@ -491,9 +558,11 @@ std::vector<KSweepRow> read_k_sweep_rows(const JsonReader& r, const json& rows, 
                    r.number(row, p, "power_relative_stdev"), r.uint32(row, p, "frames"),
                    read_error(r, r.object(row, p, "error"), p + "/error"),
                    read_coverage(r, r.object(row, p, "coverage"), p + "/coverage"),
-                   read_power(r, r.object(row, p, "power"), p + "/power"), FrameSeries{}});
+                   read_power(r, r.object(row, p, "power"), p + "/power"), FrameSeries{}, FrameSeries{}});
     if (const json* series = r.optional_object(row, p, "per_frame"))
       out.back().per_frame = read_series(r, *series, p + "/per_frame");
+    if (const json* series = r.optional_object(row, p, "per_frame_second_rung"))
+      out.back().per_frame_second_rung = read_series(r, *series, p + "/per_frame_second_rung");
   }
   return out;
 }

@@ -4,6 +4,7 @@
 // parsed once from the document with every missing or mistyped field named by its JSON pointer.
 // Raw JSON members are provenance and configuration passed through as written.
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <optional>
 #include <string>
@@ -116,6 +117,11 @@ struct FrameErrors {
   std::string reference;  // what each frame is compared with
   double flip_exposure = 0, flip_pixels_per_degree = 0;
   std::map<std::string, FrameSeries> generators;
+  // Schema 6, static frames: each generator's image error set against the reference's stride-2
+  // rung, the same pixels, frames and FLIP exposure, for the rule's second verdict (DESIGN.md
+  // §11a *Rule*); empty where there is no such rung, and for the animated frames.
+  std::map<std::string, FrameSeries> second_rung;
+  std::string second_rung_reference;  // what second_rung is compared with; "" where it is empty
 };
 
 struct KSweepRow {
@@ -126,6 +132,9 @@ struct KSweepRow {
   CoverageSummary coverage;
   PowerSummary power;
   FrameSeries per_frame;  // schema 5: "flicker_deviation" and "relative_rmse" over the static frames
+  // Schema 6: "relative_rmse" of the same frames against the reference's stride-2 rung (the rule's
+  // second verdict, DESIGN.md §11a); empty where there is no such rung.
+  FrameSeries per_frame_second_rung;
 };
 
 // The converged reference of schema 4 (DESIGN.md §11a): how far coarser RSM strides are from it,
@@ -136,6 +145,24 @@ struct ReferenceConvergenceRow {
   double relative_rmse = 0;  // against the reference (the finest stride), same pixels
   double seconds = 0;        // to shade it
 };
+// The reference ladder (DESIGN.md §11a, schema 6): the reference shaded at RSM strides 8, 4, 2 and 1
+// of its own (the rungs), each rung against the next finer one on the same pixels. Per metric the
+// successive differences, their ratios, the rate rho per doubling of the side and the remaining
+// error eps_inf = own * rho / (1 - rho); quality/quality_reference.hpp computes them and decides by
+// them. Non-finite values are written as null.
+struct ReferenceLadderMetric {
+  std::vector<double> differences;  // coarsest pair first; the last (stride 2 against 1) is the own error
+  std::vector<double> ratios;       // differences[i + 1] / differences[i]
+  double rate = std::numeric_limits<double>::quiet_NaN();      // rho; NaN where there is none
+  double remaining = std::numeric_limits<double>::infinity();  // eps_inf; infinite where rho >= 1 or none
+};
+struct ReferenceLadder {
+  std::vector<uint32_t> rsm_strides;  // the rungs, coarsest first, the reference's own stride last
+  std::vector<uint32_t> rsm_sides;    // their RSM sides: the VPL source RSM's side / stride, rounded up
+  std::map<std::string, ReferenceLadderMetric> metrics;  // by frame metric (frame_error.hpp)
+  std::string note;                                      // how many rungs there were, and what that leaves decided
+};
+
 struct ReferenceDetail {
   std::vector<ReferenceConvergenceRow> convergence;  // coarsest first, the reference itself last
   double own_error = 0;  // the row at twice the reference's stride: the reference's own error
@@ -151,6 +178,9 @@ struct ReferenceDetail {
   std::optional<double> predicted_full_size_s;  // when the size was chosen by the budget
   uint64_t evaluations_per_dispatch = 0;
   uint32_t vsgls_per_dispatch = 0;
+  // Schema 6 (required there): the ladder the reference-decided claims are judged by. None in a
+  // schema-5 document, whose reference-decided verdicts are not judged again (quality_claims.hpp).
+  std::optional<ReferenceLadder> ladder;
 };
 
 struct QualityModel {

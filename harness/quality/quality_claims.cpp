@@ -47,6 +47,14 @@ std::string num(double v) {
 
 enum class Quantity { kRatio, kDifference };
 
+// What a claim on an error against the reference is decided by (DESIGN.md §11a *Rule*): the
+// metric's ladder, and the same series against the reference's stride-2 rung.
+struct ReferenceSide {
+  std::string metric;
+  const ReferenceLadderMetric* ladder = nullptr;  // none in a schema-5 document
+  std::span<const double> a_second, b_second;     // empty: not measured against the stride-2 rung
+};
+
 // Series a against series b, paired by frame, against `bound` on the claimed side.
 struct Comparison {
   std::string a_label, b_label;
@@ -54,13 +62,14 @@ struct Comparison {
   Quantity quantity = Quantity::kRatio;
   bool below = true;  // the claim: the quantity lies below the bound (else above)
   double bound = 1.0;
-  std::optional<double> reference_own_error;  // set for a claim the reference decides
+  std::optional<ReferenceSide> reference;  // set for a claim the reference decides
 };
 
 // A comparison's verdict and the numbers it was judged on (the claim's `measured`).
 struct JudgedComparison {
   ClaimVerdict verdict;
   ojson measured;
+  double distance = 0;  // of the measured value from the bound, in the metric's units
 };
 
 const std::string kNotConverged = "reference not converged";
@@ -73,9 +82,13 @@ ClaimVerdict inconclusive(std::string rule, std::string reason) {
   return v;
 }
 
-JudgedComparison judge(const Comparison& c) {
-  const PairedBootstrap boot = paired_bootstrap(c.a, c.b);
-  const SignTest sign = sign_test(c.a, c.b);
+// A ladder value for the document: null where it is not finite (DESIGN.md §11a).
+ojson finite_or_null(double v) { return std::isfinite(v) ? ojson(v) : ojson(nullptr); }
+
+// The interval verdict of a against b alone, without the reference's rule.
+JudgedComparison judge_interval(const Comparison& c, std::span<const double> a, std::span<const double> b) {
+  const PairedBootstrap boot = paired_bootstrap(a, b);
+  const SignTest sign = sign_test(a, b);
   JudgedComparison j;
   const bool ratio = c.quantity == Quantity::kRatio;
   j.measured = ojson{{c.a_label, boot.mean_a}, {c.b_label, boot.mean_b}, {"frames", boot.frames}};
@@ -85,6 +98,8 @@ JudgedComparison judge(const Comparison& c) {
   j.measured["sign_test"] = ojson{
       {"a_below", sign.a_below}, {"a_above", sign.a_above}, {"ties", sign.ties}, {"p_two_sided", sign.p_two_sided}};
   j.measured["bootstrap"] = ojson{{"resamples", boot.resamples}, {"confidence", boot.confidence}, {"seed", boot.seed}};
+  // The distance of the measured value from the bound, in the metric's units (DESIGN.md §11a.1).
+  j.distance = ratio ? std::abs(boot.mean_a - c.bound * boot.mean_b) : std::abs(boot.difference - c.bound);
   if (ratio && !boot.ratio_interval) {
     j.verdict = inconclusive("interval " + std::string(c.below ? "below " : "above ") + num(c.bound),
                              std::string(kInconclusivePrefix) + ": a frame of " + c.b_label +
@@ -92,27 +107,45 @@ JudgedComparison judge(const Comparison& c) {
     return j;
   }
   const PercentileInterval iv = ratio ? *boot.ratio_interval : boot.difference_interval;
-  const double estimate = ratio ? *boot.ratio : boot.difference;
-  j.measured["estimate"] = estimate;
+  j.measured["estimate"] = ratio ? *boot.ratio : boot.difference;
   j.measured["interval"] = ojson::array({iv.low, iv.high});
   j.verdict = c.below ? judge_below({iv.low, iv.high}, c.bound) : judge_above({iv.low, iv.high}, c.bound);
-  if (c.reference_own_error) {
-    j.verdict.rule += ", decided only where the reference's own error is below a tenth of the distance from it";
-    // The distance of the measured value from the bound, in the metric's units (DESIGN.md §11a.1).
-    const double distance = ratio ? std::abs(boot.mean_a - c.bound * boot.mean_b) : std::abs(estimate - c.bound);
-    j.measured["reference_own_error"] = *c.reference_own_error;
-    j.measured["judged_distance"] = distance;
-    if (!reference_decides(*c.reference_own_error, distance)) {
-      // Whatever the interval says, the reference cannot tell (DESIGN.md §11a.1).
-      j.verdict.outcome = Outcome::kInconclusive;
-      j.verdict.reason = kNotConverged + " (own error " + num(*c.reference_own_error) + " x " +
-                         num(kReferenceErrorFactor) + " >= " + num(distance) + ")";
-      return j;
-    }
-  }
   if (j.verdict.inconclusive())
     j.verdict.reason = std::string(kInconclusivePrefix) + ": the 95 % interval [" + num(iv.low) + ", " + num(iv.high) +
                        "] reaches the bound " + num(c.bound);
+  return j;
+}
+
+JudgedComparison judge(const Comparison& c) {
+  JudgedComparison j = judge_interval(c, c.a, c.b);
+  if (!c.reference) return j;
+  // A claim the reference decides (DESIGN.md §11a *Rule*): its ladder and the stride-2 rung.
+  const ReferenceSide& ref = *c.reference;
+  ReferenceClaim claim;
+  claim.ratio = c.quantity == Quantity::kRatio;
+  claim.bound = c.bound;
+  claim.distance = j.distance;
+  claim.finest = j.verdict;
+  ojson second{{"verdict", "not measured"}};
+  if (!ref.a_second.empty() && !ref.b_second.empty()) {
+    const JudgedComparison s = judge_interval(c, ref.a_second, ref.b_second);
+    claim.second_rung = s.verdict;
+    second = ojson{{"verdict", std::string(outcome_text(s.verdict.outcome))}};
+    if (s.measured.contains("interval")) {
+      second["estimate"] = s.measured.at("estimate");
+      second["interval"] = s.measured.at("interval");
+    }
+  }
+  j.measured["reference_metric"] = ref.metric;
+  j.measured["judged_distance"] = j.distance;
+  j.measured["second_rung"] = second;
+  if (ref.ladder) {
+    if (!ref.ladder->differences.empty()) j.measured["reference_own_error"] = ref.ladder->differences.back();
+    j.measured["reference_rate"] = finite_or_null(ref.ladder->rate);
+    j.measured["reference_remaining_error"] = finite_or_null(ref.ladder->remaining);
+    j.measured["reference_margin"] = finite_or_null(reference_margin(*ref.ladder, claim));
+  }
+  j.verdict = reference_decides(ref.ladder, claim);
   return j;
 }
 
@@ -145,10 +178,29 @@ const std::vector<double>* series_of(const FrameErrors& f, const std::string& ge
   return s == g->second.end() ? nullptr : &s->second;
 }
 
-std::optional<double> own_error(const QualityModel& m, const std::string& metric) {
-  if (!m.reference_detail) return std::nullopt;
-  const auto it = m.reference_detail->own_errors.find(metric);
-  return it == m.reference_detail->own_errors.end() ? std::nullopt : std::optional<double>(it->second);
+// The reference side of a claim on `metric` (DESIGN.md §11a *Rule*): the document's ladder of that
+// metric, if any, and the two series against the stride-2 rung, if measured.
+ReferenceSide reference_side(const QualityModel& m, const std::string& metric, const std::vector<double>* a_second,
+                             const std::vector<double>* b_second) {
+  ReferenceSide r;
+  r.metric = metric;
+  if (m.reference_detail && m.reference_detail->ladder) {
+    const auto it = m.reference_detail->ladder->metrics.find(metric);
+    if (it != m.reference_detail->ladder->metrics.end()) r.ladder = &it->second;
+  }
+  if (a_second && b_second) {
+    r.a_second = *a_second;
+    r.b_second = *b_second;
+  }
+  return r;
+}
+
+const std::vector<double>* second_rung_of(const FrameErrors& f, const std::string& generator,
+                                          const std::string& series) {
+  const auto g = f.second_rung.find(generator);
+  if (g == f.second_rung.end()) return nullptr;
+  const auto s = g->second.find(series);
+  return s == g->second.end() ? nullptr : &s->second;
 }
 
 // modified against Tok15 on one static series.
@@ -181,8 +233,9 @@ void add_static_claims(std::vector<Claim>& claims, const QualityModel& m) {
   const auto* mod = series_of(f, kModified, "p99_pixel_error");
   const auto* tok = series_of(f, kTok15, "p99_pixel_error");
   if (mod && tok) {
-    JudgedComparison j =
-        judge({kModified, kTok15, *mod, *tok, Quantity::kRatio, true, 1.0, own_error(m, "p99_pixel_error")});
+    JudgedComparison j = judge({kModified, kTok15, *mod, *tok, Quantity::kRatio, true, 1.0,
+                                reference_side(m, "p99_pixel_error", second_rung_of(f, kModified, "p99_pixel_error"),
+                                               second_rung_of(f, kTok15, "p99_pixel_error"))});
     const double worst_mod = *std::max_element(mod->begin(), mod->end());
     const double worst_tok = *std::max_element(tok->begin(), tok->end());
     j.measured["worst_frame"] = ojson{{kModified, worst_mod}, {kTok15, worst_tok}};
@@ -206,7 +259,8 @@ void add_static_claims(std::vector<Claim>& claims, const QualityModel& m) {
                                     ": relative RMSE against the reference, per frame, "
                                     "modified within 10 % of k-means",
                                 judge({kModified, kmeans, *md, *km, Quantity::kRatio, true, kKmeansMarginBound,
-                                       own_error(m, "relative_rmse")})));
+                                       reference_side(m, "relative_rmse", second_rung_of(f, kModified, "relative_rmse"),
+                                                      second_rung_of(f, kmeans, "relative_rmse"))})));
   }
 }
 
@@ -242,8 +296,13 @@ void add_k_sweep_claims(std::vector<Claim>& claims, const QualityModel& m) {
                                               true,
                                               1.0,
                                               {}});
-      const JudgedComparison error = judge({a, b, hi.per_frame.at("relative_rmse"), lo.per_frame.at("relative_rmse"),
-                                            Quantity::kRatio, false, 1.0, own_error(m, "relative_rmse")});
+      const auto second = [](const KSweepRow& row) {
+        const auto s = row.per_frame_second_rung.find("relative_rmse");
+        return s == row.per_frame_second_rung.end() ? nullptr : &s->second;
+      };
+      const JudgedComparison error =
+          judge({a, b, hi.per_frame.at("relative_rmse"), lo.per_frame.at("relative_rmse"), Quantity::kRatio, false, 1.0,
+                 reference_side(m, "relative_rmse", second(hi), second(lo))});
       for (const ClaimVerdict* v : {&flicker.verdict, &error.verdict}) {
         all_hold = all_hold && v->holds();
         any_fails = any_fails || v->fails();
@@ -268,6 +327,28 @@ void add_k_sweep_claims(std::vector<Claim>& claims, const QualityModel& m) {
   }
 }
 
+// A claim the reference decides carries what it was decided on (judge), in each step for Fig. 6.
+bool reference_decided(const Claim& c) {
+  if (c.measured.contains("reference_metric")) return true;
+  if (!c.measured.contains("steps")) return false;
+  const ojson& steps = c.measured.at("steps");
+  return std::any_of(steps.begin(), steps.end(), [](const ojson& step) {
+    return step.contains("error") && step.at("error").contains("reference_metric");
+  });
+}
+
+// A document without a reference ladder (schema 5) was judged by the rule before it; its
+// reference-decided verdicts are kept as it wrote them, not judged again (DESIGN.md §11a *Rule*).
+void keep_unladdered_verdicts(std::vector<Claim>& claims, const QualityModel& m) {
+  if ((m.reference_detail && m.reference_detail->ladder) || !m.claims) return;
+  for (Claim& c : claims) {
+    if (!reference_decided(c)) continue;
+    const auto written = std::find_if(m.claims->begin(), m.claims->end(),
+                                      [&](const Claim& w) { return w.criterion == c.criterion && w.text == c.text; });
+    if (written != m.claims->end()) c = *written;
+  }
+}
+
 }  // namespace
 
 void add_claim_verdicts(json& r) {
@@ -277,6 +358,7 @@ void add_claim_verdicts(json& r) {
     add_static_claims(claims, m);
     add_animated_claim(claims, m);
     add_k_sweep_claims(claims, m);
+    keep_unladdered_verdicts(claims, m);
   } else {
     claims.push_back(unmeasured_claim(kFig1Claim, "", "every quality claim",
                                       "not measured here (no per-frame series: a quality document before schema 5)"));

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <string>
+#include <utility>
 
 #include "harness/vk/command_stream.hpp"
 #include "harness/vk/device.hpp"
@@ -65,9 +68,70 @@ uint32_t reference_stride(const ViewImage& rsm, uint32_t side) {
   return side == 0 || longest <= side ? 1u : longest / side;
 }
 
-bool reference_decides(double reference_own_error, double judged_difference) {
-  if (!std::isfinite(reference_own_error) || !std::isfinite(judged_difference)) return false;
-  return kReferenceErrorFactor * reference_own_error < std::abs(judged_difference);
+ReferenceLadderMetric reference_ladder_metric(std::vector<double> differences) {
+  ReferenceLadderMetric m;
+  m.differences = std::move(differences);
+  const std::vector<double>& e = m.differences;
+  if (e.size() < 2) return m;  // one difference has no rate: nothing is decided (DESIGN.md §11a)
+  double product = 1.0;
+  for (std::size_t i = 0; i + 1 < e.size(); ++i) {
+    m.ratios.push_back(e[i + 1] / e[i]);
+    product *= m.ratios.back();
+  }
+  m.rate = std::pow(product, 1.0 / static_cast<double>(m.ratios.size()));
+  const double own = e.back();
+  // A geometric tail own * (rho + rho^2 + ...); it does not converge for rho >= 1.
+  if (std::isfinite(m.rate) && m.rate >= 0.0 && m.rate < 1.0 && std::isfinite(own))
+    m.remaining = own * m.rate / (1.0 - m.rate);
+  return m;
+}
+
+double reference_margin(const ReferenceLadderMetric& ladder, const ReferenceClaim& claim) {
+  const double factor = claim.ratio ? 1.0 + std::abs(claim.bound) : 2.0;
+  const double margin = factor * ladder.remaining;
+  return std::isfinite(margin) ? margin : std::numeric_limits<double>::infinity();
+}
+
+namespace {
+
+std::string short_number(double v) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.3g", v);
+  return buf;
+}
+
+}  // namespace
+
+ClaimVerdict reference_decides(const ReferenceLadderMetric* ladder, const ReferenceClaim& claim) {
+  ClaimVerdict v = claim.finest;
+  v.rule += std::string(", decided only where ") + (claim.ratio ? "(1 + b)" : "2") +
+            " x the reference's remaining error is below the distance from the bound and the verdict against "
+            "its stride-2 rung is the same";
+  const auto not_converged = [&](const std::string& why) {
+    v.outcome = Outcome::kInconclusive;
+    v.reason = "reference not converged (" + why + ")";
+    return v;
+  };
+  if (!ladder) return not_converged("no reference ladder");
+  if (!(ladder->differences.size() >= 2))
+    return not_converged("no rate: " + std::to_string(ladder->differences.size()) +
+                         " successive difference(s) of the rungs, two needed");
+  const double own = ladder->differences.back();
+  const std::string named = "own " + short_number(own) + ", rate " + short_number(ladder->rate);
+  if (!std::isfinite(ladder->rate) || !(ladder->rate < 1.0) || !std::isfinite(ladder->remaining))
+    return not_converged(named + ": the reference does not converge, remaining error infinite");
+  const double margin = reference_margin(*ladder, claim);
+  const std::string margin_text = claim.ratio ? "(1 + " + short_number(claim.bound) + ") x " : "2 x ";
+  if (!std::isfinite(claim.distance) || !(margin < claim.distance))
+    return not_converged(named + ", remaining " + short_number(ladder->remaining) + ": " + margin_text +
+                         short_number(ladder->remaining) + " = " + short_number(margin) + " >= distance " +
+                         short_number(claim.distance));
+  if (!claim.second_rung) return not_converged("no verdict against the stride-2 rung");
+  if (claim.second_rung->outcome != claim.finest.outcome)
+    return not_converged("the verdicts differ: " + std::string(outcome_text(claim.finest.outcome)) +
+                         " against the reference, " + std::string(outcome_text(claim.second_rung->outcome)) +
+                         " against its stride-2 rung");
+  return v;
 }
 
 FixedVsglGenerator::FixedVsglGenerator(Device& device, const std::vector<VsglRecord>& vsgls, std::string name)

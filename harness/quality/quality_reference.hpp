@@ -10,10 +10,13 @@
 // every k-th pixel (shade_camera_view's stride), the same pixels for the reference and every
 // generator.
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "harness/vk/buffer.hpp"
 #include "harness/capture/capture.hpp"
+#include "harness/core/claim_verdict.hpp"
+#include "harness/formats/quality_model.hpp"
 #include "harness/generators/vsgl_generator.hpp"
 #include "harness/math/vsgl_math.hpp"
 
@@ -56,12 +59,32 @@ float rsm_texel_world_area(const ViewImage& rsm, const SpotLightDesc& light, uin
 // 1 (every texel) for side 0.
 uint32_t reference_stride(const ViewImage& rsm, uint32_t side);
 
-// The rule of DESIGN.md §11a: a comparison the reference decides is decided only when the
-// reference's own error (its stride-2 image against its stride-1 image, relative RMSE) is below a
-// tenth of the difference being judged (for example two generators' errors against it); otherwise
-// the verdict is "reference not converged". False for a non-finite input.
-inline constexpr double kReferenceErrorFactor = 10.0;  // own error x 10 < |difference|
-bool reference_decides(double reference_own_error, double judged_difference);
+// One metric's ladder (DESIGN.md §11a *Convergence table*) from its successive differences, the
+// coarsest pair of rungs first and the reference's own error (stride 2 against 1) last: the ratios
+// of neighbours, the rate rho per doubling of the side (their geometric mean, (last / first)^(1 /
+// (n - 1))) and the remaining error eps_inf = own * rho / (1 - rho), a geometric tail. Fewer than
+// two differences: no rate (NaN) and eps_inf infinite; rho >= 1 or not finite: eps_inf infinite.
+ReferenceLadderMetric reference_ladder_metric(std::vector<double> differences);
+
+// What a claim on an error against the reference is decided on (DESIGN.md §11a *Rule*).
+struct ReferenceClaim {
+  bool ratio = true;    // judged on mean_a / mean_b against `bound`; else on mean_a - mean_b
+  double bound = 1.0;   // b
+  double distance = 0;  // |mean_a - b mean_b| (ratio) or |mean_a - mean_b - b|, in the metric's units
+  ClaimVerdict finest;  // the claim's verdict against the reference (stride 1)
+  std::optional<ClaimVerdict> second_rung;  // the same against the stride-2 rung; none: not measured
+};
+
+// The reference's margin on a claim: (1 + |b|) eps_inf for a ratio, 2 eps_inf for a difference
+// (each generator's error may move by up to eps_inf). Infinite where eps_inf is, or not finite.
+double reference_margin(const ReferenceLadderMetric& ladder, const ReferenceClaim& claim);
+
+// The rule of DESIGN.md §11a: `claim.finest` stands only where the metric's ladder has a rate,
+// the margin is below the distance, and the verdict against the stride-2 rung is the same;
+// otherwise an inconclusive verdict whose reason starts with "reference not converged" and names
+// the own error, rho, eps_inf, the margin and the distance, or the two verdicts. No ladder (null)
+// or a distance that is not finite: not decided either. The rule text says what was asked.
+ClaimVerdict reference_decides(const ReferenceLadderMetric* ladder, const ReferenceClaim& claim);
 
 // A "generator" with a fixed set of VSGLs, uploaded once: it ignores every parameter, so its
 // output never changes between frames (the reference, and the zero-flicker test).

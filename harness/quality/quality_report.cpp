@@ -70,6 +70,15 @@ std::string measured_cell(const Claim& c) {
   return out;
 }
 
+bool has_ladder(const QualityModel& m) { return m.reference_detail && m.reference_detail->ladder; }
+
+// The rule of DESIGN.md §11a in one sentence (schema 6).
+constexpr const char* kLadderRule =
+    "A claim on an error against the reference is decided only where (1 + b) eps_inf (2 eps_inf for a difference) "
+    "is below its distance |mean_a - b mean_b| from the bound b, eps_inf = own rho / (1 - rho) the reference's "
+    "remaining error in that metric from its ladder's rate rho per doubling, and where its verdict against the "
+    "reference's stride-2 rung is the same; otherwise it is \"reference not converged\".";
+
 void write_claims(std::ostringstream& md, const QualityModel& m) {
   md << "## Claims\n\n| claim | measure | measured (95 % interval) | verdict |\n|---|---|---|---|\n";
   for (const Claim& c : m.claims.value_or(std::vector<Claim>{}))
@@ -78,9 +87,11 @@ void write_claims(std::ostringstream& md, const QualityModel& m) {
   md << "\nEach claim compares per-frame values paired by frame (the same lattice offset, or the same animation "
         "frame): the interval is the paired percentile bootstrap of the ratio of means (the difference for the "
         "coverage excess), and a claim holds when the whole interval lies on the claimed side of its bound, does "
-        "not hold when it lies wholly on the other side, and is inconclusive otherwise (DESIGN.md §11a.1). A claim "
-        "on an error against the reference is decided only when the reference's own error in that metric is below "
-        "a tenth of the measured distance from the bound.\n";
+        "not hold when it lies wholly on the other side, and is inconclusive otherwise (DESIGN.md §11a.1). ";
+  if (has_ladder(m)) md << kLadderRule << "\n";
+  else  // schema 5: its verdicts were judged by the rule of its time, kept as written
+    md << "A claim on an error against the reference is decided only when the reference's own error in that metric "
+          "is below a tenth of the measured distance from the bound.\n";
 }
 
 void write_frequency(std::ostringstream& md, const QualityModel& m) {
@@ -218,6 +229,37 @@ std::string vpl_source_text(const nlohmann::ordered_json& source) {
          source.value("path", std::string("?"));
 }
 
+// A ladder value: "inf" or "n/a" where it is not finite (no rate; rho >= 1).
+std::string ladder_num(double v, const char* otherwise) { return std::isfinite(v) ? num(v) : std::string(otherwise); }
+
+// The reference ladder (DESIGN.md §11a, schema 6): per pair of neighbouring rungs the successive
+// difference and its ratio to the previous one in each metric, then rho and eps_inf, and the rule.
+void write_ladder(std::ostringstream& md, const ReferenceLadder& l) {
+  md << ".\n\nReference ladder: each rung (RSM stride, side) against the next finer one, same pixels; ratio: "
+        "this difference over the one above. "
+     << l.note << ".\n\n| rungs |";
+  for (const auto& [metric, lm] : l.metrics) md << " " << metric << " | ratio |";
+  md << "\n|---|";
+  for (std::size_t i = 0; i < l.metrics.size(); ++i) md << "---|---|";
+  md << "\n";
+  const auto rung = [&](std::size_t i) {
+    return std::to_string(l.rsm_strides.at(i)) + " (" + std::to_string(l.rsm_sides.at(i)) + "^2)";
+  };
+  const auto cell = [](const std::string& text) { return text.empty() ? std::string(" |") : " " + text + " |"; };
+  for (std::size_t i = 0; i + 1 < l.rsm_strides.size(); ++i) {
+    md << "| " << rung(i) << " vs " << rung(i + 1) << (i + 2 == l.rsm_strides.size() ? ", the own error" : "") << " |";
+    for (const auto& [metric, lm] : l.metrics)
+      md << cell(i < lm.differences.size() ? num(lm.differences[i]) : std::string("n/a"))
+         << cell(i >= 1 && i - 1 < lm.ratios.size() ? ladder_num(lm.ratios[i - 1], "n/a") : std::string());
+    md << "\n";
+  }
+  md << "| rate rho per doubling (geometric mean of the ratios) |";
+  for (const auto& [metric, lm] : l.metrics) md << " " << ladder_num(lm.rate, "none") << " | |";
+  md << "\n| remaining error eps_inf = own rho / (1 - rho) |";
+  for (const auto& [metric, lm] : l.metrics) md << " " << ladder_num(lm.remaining, "inf") << " | |";
+  md << "\n\n" << kLadderRule << "\n\n";
+}
+
 void write_reference_error(std::ostringstream& md, const QualityModel& m) {
   md << "\n## Error against the reference (light-view VSGLs lighting the camera view)\n\nReference: "
      << m.reference_vpls << " VPLs (" << vpl_source_text(m.reference_vpl_source) << " subsampled to "
@@ -243,10 +285,11 @@ void write_reference_error(std::ostringstream& md, const QualityModel& m) {
   for (const auto& [metric, e] : d.own_errors)
     md << (metric == d.own_errors.begin()->first ? " (" : ", ") << metric << " " << num(e);
   if (!d.own_errors.empty()) md << ")";
-  md << "; a difference it judges must exceed ten times that, or the verdict is \"reference not converged\".\n\n"
-        "PDF-support reference (texels with PDF > 0 only): "
-     << d.support_vpls << " VPLs, sum Phi / flux " << num(d.support_power_ratio)
-     << ", relative RMSE against the all-lit "
+  if (d.ladder) write_ladder(md, *d.ladder);
+  else  // schema 5: the rule its verdicts were judged by
+    md << "; a difference it judges must exceed ten times that, or the verdict is \"reference not converged\".\n\n";
+  md << "PDF-support reference (texels with PDF > 0 only): " << d.support_vpls << " VPLs, sum Phi / flux "
+     << num(d.support_power_ratio) << ", relative RMSE against the all-lit "
      << "reference " << num(d.support_vs_all_lit) << ", " << num(d.support_seconds)
      << " s.\n\n| generator | relative RMSE against the support reference | p99 pixel error |\n|---|---|---|\n";
   for (const auto& g : m.generators)

@@ -234,6 +234,9 @@ struct ReferenceShading {
   float exposure = 1;           // of every render picture (a scale)
   FlipSettings flip;            // FLIP of every frame: the reference's exposure, in stops
   uint32_t error_stride = 1;    // the G-buffer stride of every comparison with it
+  // The ladder's stride-2 rung, the same pixels: every frame is compared with it too, for the
+  // rule's second verdict (DESIGN.md §11a *Rule*). None where the RSM has no such rung.
+  std::optional<RadianceImage> second_rung;
 };
 
 // The images the K sweep reuses from the static frames: each FIS generator's frame at offset 0.
@@ -243,6 +246,7 @@ using OffsetZeroImages = std::map<std::string, RadianceImage>;
 // light-view flux origins (FIS), and the frames the pictures show.
 struct StaticFrames {
   FrameSeries series;
+  FrameSeries second_rung;  // the image errors against the stride-2 rung (schema 6)
   FlickerAccumulator flicker;
   std::vector<FluxOrigin> origins;
   RadianceImage offset_zero, worst;
@@ -258,6 +262,10 @@ void add_image_error(FrameSeries& series, const FrameImageError& e) {
   series["p99_pixel_error"].push_back(e.p99_pixel_error);
   series["max_pixel_error"].push_back(e.max_pixel_error);
 }
+
+// The metrics of the reference ladder (DESIGN.md §11a): the errors of frame_image_error, less the
+// scale (it tends to 1, not 0) and the maximum pixel error (an extreme, no rate to expect).
+constexpr const char* kLadderMetrics[] = {"rel_mse", "relative_rmse", "scaled_rmse", "flip", "p99_pixel_error"};
 
 // One quality run: the device, the capture and its views on the device, and the lattice floor's
 // input, the same views with the PDF 1 on the texels it weighs (DESIGN.md §11a). Each block of
@@ -419,11 +427,31 @@ struct QualityRun {
     detail.convergence.push_back({ref_stride, all.vpls.size(), 0.0, all.seconds});
     detail.own_error =
         detail.convergence.size() >= 2 ? detail.convergence[detail.convergence.size() - 2].relative_rmse : 0.0;
-    if (const auto own = coarse.find(2 * ref_stride); own != coarse.end()) {
-      FrameSeries one;
-      add_image_error(one, frame_image_error(own->second.image, ref_image, flip));
-      for (const auto& [metric, values] : one) detail.own_errors[metric] = values.front();
+    // The ladder (DESIGN.md §11a): each rung against the next finer one, the same pixels and FLIP
+    // exposure; the last pair (stride 2 against the reference) is the reference's own error.
+    std::vector<const RadianceImage*> rungs;
+    ReferenceLadder ladder;
+    for (uint32_t s : strides) {
+      rungs.push_back(&coarse.at(s).image);
+      ladder.rsm_strides.push_back(s);
     }
+    rungs.push_back(&ref_image);
+    ladder.rsm_strides.push_back(ref_stride);
+    for (uint32_t s : ladder.rsm_strides) ladder.rsm_sides.push_back((rsm_side + s - 1) / s);
+    FrameSeries differences;  // by metric, coarsest pair first
+    for (std::size_t i = 0; i + 1 < rungs.size(); ++i)
+      add_image_error(differences, frame_image_error(*rungs[i], *rungs[i + 1], flip));
+    if (!differences.empty()) {
+      for (const auto& [metric, values] : differences) detail.own_errors[metric] = values.back();
+      for (const char* metric : kLadderMetrics)
+        ladder.metrics[metric] = reference_ladder_metric(differences.at(metric));
+    }
+    const std::size_t pairs = rungs.size() - 1;
+    ladder.note = std::to_string(rungs.size()) + " rungs, " + std::to_string(pairs) + " successive difference(s)" +
+                  (pairs >= 3   ? ""
+                   : pairs == 2 ? ": the RSM is too small for the stride-8 rung, so the rate is the one ratio"
+                                : ": the RSM is too small for a rate, so no claim on the reference's error is decided");
+    detail.ladder = std::move(ladder);
     ShadedReference support = shade_reference(ref_stride, VplSet::kPdfSupport, error_stride);
     detail.support_vpls = support.vpls.size();
     detail.support_power_ratio = power_sum(support.vpls) / light_flux;
@@ -445,7 +473,9 @@ struct QualityRun {
         "(bounds the 1/d^2 spikes of point VPLs); shaded at the "
         "generators' pixels (G-buffer stride) by the same shading pass, in chunked dispatches";
     const float exposure = auto_exposure(downscale(ref_image, kTileFactor));
-    return ReferenceShading{ref_image, std::move(support.image), exposure, flip, error_stride};
+    std::optional<RadianceImage> second_rung;
+    if (const auto it = coarse.find(2 * ref_stride); it != coarse.end()) second_rung = std::move(it->second.image);
+    return ReferenceShading{ref_image, std::move(support.image), exposure, flip, error_stride, std::move(second_rung)};
   }
 
   // The light-view VSGLs of `name` at lattice offset `offset_bits` and K, shading the camera view
@@ -485,6 +515,7 @@ struct QualityRun {
       s.flicker.add_frame(img, power_sum(run.vsgls));
       const FrameImageError e = frame_image_error(img, ref.image, ref.flip);
       add_image_error(s.series, e);
+      if (ref.second_rung) add_image_error(s.second_rung, frame_image_error(img, *ref.second_rung, ref.flip));
       s.series["light_view_max_over_mean"].push_back(power_metrics(run.vsgls, light_flux).max_over_mean);
       if (is_fis(name)) {
         s.origins.push_back(flux_origin(run.vsgls, fis_variant(name), light_texel_flux, light_pdf, config.K));
@@ -514,6 +545,10 @@ struct QualityRun {
     frames.reference = "the all-lit reference (every lit RSM texel a VPL), the same for every frame";
     frames.flip_exposure = ref.flip.exposure;
     frames.flip_pixels_per_degree = ref.flip.pixels_per_degree;
+    if (ref.second_rung)
+      frames.second_rung_reference =
+          "the reference's stride-2 rung (every second texel of its RSM in x and y a VPL, flux x 4), the same pixels "
+          "and FLIP exposure";
     const RadianceImage ref_tile = downscale(ref.image, kTileFactor);
     std::vector<Rgb8Image> render_tiles{tone_map(ref_tile, ref.exposure)},
         error_tiles{error_map(ref_tile, ref_tile, 1.0f)};
@@ -537,6 +572,7 @@ struct QualityRun {
       worst_error_tiles.push_back(error_map(worst, ref_tile, 1.0f));
       worst_text += (worst_text.empty() ? "" : ", ") + name + " frame " + std::to_string(s.worst_frame);
       frames.generators[name] = std::move(s.series);
+      if (!s.second_rung.empty()) frames.second_rung[name] = std::move(s.second_rung);
       if (is_fis(name)) offset_zero[name] = std::move(s.offset_zero);
       say("static frames " + name + ": " + std::to_string(seconds_since(tg)) + " s");
     }
@@ -584,16 +620,20 @@ struct QualityRun {
           const FrameSeries& series = out.frames_static->generators.at(name);
           row.per_frame = {{"flicker_deviation", series.at("flicker_deviation")},
                            {"relative_rmse", series.at("relative_rmse")}};
+          if (const auto second = out.frames_static->second_rung.find(name);
+              second != out.frames_static->second_rung.end())
+            row.per_frame_second_rung = {{"relative_rmse", second->second.at("relative_rmse")}};
           img = offset_zero.at(name);
         } else {
           FlickerAccumulator acc;
-          std::vector<double> error;
+          std::vector<double> error, error_second;
           for (uint32_t f = 0; f < config.frames; ++f) {
             const GeneratorRun run =
                 run_generator(device, light, name, config, config.light_vsgls, K, frame_offset_bits(f));
             RadianceImage frame = shade_frame(run, ref);
             acc.add_frame(frame, power_sum(run.vsgls));
             error.push_back(image_error(frame, ref.image).relative_rmse);
+            if (ref.second_rung) error_second.push_back(image_error(frame, *ref.second_rung).relative_rmse);
             if (f == 0) img = std::move(frame);
           }
           row.weighted_cv = acc.weighted_cv();
@@ -601,6 +641,7 @@ struct QualityRun {
           row.power_relative_stdev = acc.power_relative_stdev();
           row.frames = acc.frames();
           row.per_frame = {{"flicker_deviation", acc.frame_deviations()}, {"relative_rmse", std::move(error)}};
+          if (!error_second.empty()) row.per_frame_second_rung = {{"relative_rmse", std::move(error_second)}};
         }
         const GeneratorRun run = run_generator(device, light, name, config, config.light_vsgls, K, 0);
         row.error = error_summary(image_error(img, ref.image));

@@ -7,7 +7,7 @@
 //   5. the K sweep (Fig. 6): flicker and reference error of both FIS generators for each K;
 //   6. error against a VPL reference (harness/quality/quality_reference.hpp).
 // Everything is computed before anything is written; the result is a JSON document (schema
-// "vsgl-quality", version 5) plus pictures, rendered to markdown by quality_report.hpp.
+// "vsgl-quality", version 6) plus pictures, rendered to markdown by quality_report.hpp.
 #include <array>
 #include <cstdint>
 #include <filesystem>
@@ -34,7 +34,10 @@ class Device;
 //    rows' per_frame, the reference's own_errors; claims judged on them (quality_claims.hpp, DESIGN.md
 //    §11a.1); the static flicker uses the reference comparison's G-buffer stride. Optional, so 3 and 4
 //    are still read.
-inline constexpr int kQualitySchemaVersion = 5;
+// 6: the reference ladder (reference.ladder) and every static frame's errors against the stride-2
+//    rung (second_rung, per_frame_second_rung), by which the reference-decided claims are judged
+//    (DESIGN.md §11a *Rule*). 5 is still read; its reference-decided verdicts are kept as written.
+inline constexpr int kQualitySchemaVersion = 6;
 
 // The reduced camera size of the reference comparison (1920x1088 -> 240x136) where the full size
 // does not fit the time budget, and the coarser RSM strides the convergence table compares with
