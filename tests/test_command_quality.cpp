@@ -157,6 +157,9 @@ TEST(QualityCli, TinyCaptureWritesJsonMarkdownAndPictures) {
             3u);
   for (const char* metric : {"relative_rmse", "p99_pixel_error", "flip", "rel_mse"})
     EXPECT_GT(ref["own_errors"][metric].get<double>(), 0.0) << metric;
+  // The shading it was made with (DESIGN.md §8): Tok15 Eq. 3 with two lobes, and §3.3's alpha.
+  EXPECT_EQ(j["config"]["shading"]["model"], "tok15-eq3-k2");
+  EXPECT_EQ(j["config"]["shading"]["bias_reduction_alpha"].get<double>(), 1.0);
   // The ladder (DESIGN.md §11a): the rungs at RSM strides 16, 8, 4 and 2 of the 64^2 RSM, each
   // against the next finer; the last difference is the own error, the rate the geometric mean of
   // the two ratios, eps_inf = own rho / (1 - rho) where rho < 1.

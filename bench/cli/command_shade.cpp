@@ -81,9 +81,9 @@ int run_shade(ShadeOptions& o) {
   std::filesystem::create_directories(out_dir, ec);
   if (ec) throw InputError(path_text(out_dir) + ": cannot create the output directory (" + ec.message() + ")");
   std::printf("shading %s (G-buffer %ux%u, stride %u -> %ux%u) with %u light-view VSGLs per generator; "
-              "no visibility (indirect light only); exposure %g%s\n",
+              "no visibility (indirect light only); %s; exposure %g%s\n",
               capture_arg->c_str(), capture.gbuffer.width, capture.gbuffer.height, stride, images.front().width,
-              images.front().height, vsgl_count, static_cast<double>(exposure),
+              images.front().height, vsgl_count, shading_model_text().c_str(), static_cast<double>(exposure),
               auto_exposed ? (" (auto: 99th-percentile luminance of " + generators.front()->name + " -> 0.8)").c_str()
                            : "");
   for (std::size_t i = 0; i < generators.size(); ++i) {

@@ -13,6 +13,7 @@
 #include <glm/glm.hpp>
 
 #include "harness/math/fis_params.hpp"
+#include "harness/math/vsgl_math.hpp"
 #include "kernels/include/interface/shading.h"
 
 namespace vsgl {
@@ -89,7 +90,7 @@ struct SceneSource {
 // The importance this version makes the BRSM PDF by (DESIGN.md §8): Tok15 Eq. 3 with K = 2 lobes,
 // the exact cosines and §3.3's bias reduction at alpha = gpu::kBiasReductionAlpha. A capture whose
 // PDF was made by another is refused when loaded (its PDF would not be this version's).
-inline constexpr std::string_view kBrsmImportanceModel = "tok15-eq3-k2";
+inline constexpr std::string_view kBrsmImportanceModel = kShadingModel;
 
 struct CaptureMeta {
   std::string scene;

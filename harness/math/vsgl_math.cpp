@@ -6,8 +6,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace vsgl {
+
+std::string shading_model_text() {
+  char alpha[32];
+  std::snprintf(alpha, sizeof alpha, "%g", double{gpu::kBiasReductionAlpha});
+  return "Tok15 Eq. 3 (K = 2 lobes, exact cosines), §3.3 bias reduction at alpha = " + std::string(alpha);
+}
 
 // ---- vsgl_math.glsl ------------------------------------------------------------------------
 

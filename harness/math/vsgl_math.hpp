@@ -3,6 +3,8 @@
 // VSGL (DESIGN.md §4, §7, §8) in float32, with the GLSL's formulas, branches and operation order, so
 // the CPU reference and the GPU kernels agree to float rounding (tests/test_vsgl_math_glsl.cpp).
 // Formulas and constants: kernels/CONVENTIONS.md (DESIGN.md §4-§8).
+#include <string>
+#include <string_view>
 #include <type_traits>
 
 #include <glm/glm.hpp>
@@ -16,6 +18,11 @@ inline constexpr float kMinVariance = 1e-8f;   // epsilon of sigma^2
 inline constexpr float kMinRoughness = 1e-3f;  // GGX alpha floor
 inline constexpr float kMinCosine = 1e-4f;     // cosine floor of the reflection-lobe warp
 inline constexpr float kMinDistance = 1e-6f;
+// The evaluation of DESIGN.md §8, named in every output that shades: Tok15 Eq. 3 with K = 2 lobes and
+// the exact cosines, with §3.3's bias reduction at alpha = gpu::kBiasReductionAlpha.
+inline constexpr std::string_view kShadingModel = "tok15-eq3-k2";
+// "Tok15 Eq. 3 (K = 2 lobes, exact cosines), §3.3 bias reduction at alpha = 1", for reports.
+std::string shading_model_text();
 
 // ---- vsgl_math.glsl ------------------------------------------------------------------------
 

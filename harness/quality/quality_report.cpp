@@ -261,7 +261,12 @@ void write_ladder(std::ostringstream& md, const ReferenceLadder& l) {
 }
 
 void write_reference_error(std::ostringstream& md, const QualityModel& m) {
-  md << "\n## Error against the reference (light-view VSGLs lighting the camera view)\n\nReference: "
+  md << "\n## Error against the reference (light-view VSGLs lighting the camera view)\n\n";
+  // The shading model the document was made with (schema 6 records it in the config).
+  if (const auto it = m.config_rest.find("shading"); it != m.config_rest.end() && it->is_object() &&
+                                                      it->contains("text") && (*it)["text"].is_string())
+    md << "Shading: " << (*it)["text"].get<std::string>() << ".\n\n";
+  md << "Reference: "
      << m.reference_vpls << " VPLs (" << vpl_source_text(m.reference_vpl_source) << " subsampled to "
      << m.reference_rsm_side << "^2, stride " << m.reference_rsm_stride << ", sum Phi / flux "
      << num(m.reference_power_ratio) << "), image " << m.reference_image[0] << "x" << m.reference_image[1] << ". "

@@ -770,6 +770,9 @@ void write_header(QualityModel& out, Device& device, const Capture& capture, con
                          {"sequence_reference_rsm", config.sequence_reference_rsm},
                          {"k_sweep", ks},
                          {"power_of_a_vsgl", "Phi.r + Phi.g + Phi.b"},
+                         {"shading", {{"model", std::string(kShadingModel)},
+                                      {"bias_reduction_alpha", double{gpu::kBiasReductionAlpha}},
+                                      {"text", shading_model_text()}}},
                          {"luminance", "Rec. 709"}};
 }
 
