@@ -1,15 +1,18 @@
 #!/usr/bin/env bash
 # Regenerates every committed lavapipe result from freshly recorded captures, in the order of
-# their importance: captures, verify, Tables 1-2, quality (both scenes, with their sequences), the
+# their importance: captures, verify, Tables 1-2, quality (every scene, with its sequence), the
 # reference ladder (Sponza against 2048^2 reference VPLs),
 # the shading pictures, the two compare reports, and the dashboard (+ screenshot when a headless
-# Chromium is there). Each step's wall time goes to OUT/regenerate.log. Long: about 2.5 hours on
-# lavapipe on a 2-core machine. Not part of .ci/run.
+# Chromium is there). Each step's wall time goes to OUT/regenerate.log. Long: about 3 hours on
+# lavapipe on a 2-core machine (Sibenik's sequence and quality about 25 minutes of it). Not part of
+# .ci/run.
 #
 # The scenes are the paper's own, Crytek Sponza (Table 1) and the Conference room (Table 2), from
 # their models on the asset search path (docs/scenes.md, "The paper's scenes"); the results go to
-# results/lavapipe. With --stand-ins the procedural stand-ins atrium and conference are used and the
-# results go to results/lavapipe/stand-ins, so both stay side by side.
+# results/lavapipe. The Sibenik cathedral (Fig. 5's lower row, no paper table) is recorded too and
+# measured by the quality step only. With --stand-ins the procedural stand-ins atrium and conference
+# are used (Sibenik has none) and the results go to results/lavapipe/stand-ins, so both stay side
+# by side.
 # The sweep step times every generator along each axis of `vsgl-bench sweep` (N, G-buffer and RSM
 # size, K, k-means iterations on Sponza; PDF sharpness on both scenes) into OUT/sweep/<axis>/, at a
 # 960x544 G-buffer (480x272 along rsm) and a 256 RSM where the axis does not set them, 5-8 rounds per point, so that the
@@ -31,11 +34,13 @@ test_build_bench=${VSGL_BENCH_TEST_BUILD:-$(dirname "$bench")/../tests/vsgl-benc
 out=results/lavapipe
 caps=captures/paper
 scenes=(sponza conference-room)
+# Scenes of no paper table that the record and quality steps take as well (not the tables).
+quality_only=(sibenik)
 assets=()
 steps=()
 while [[ $# -gt 0 ]]; do
   case "$1" in
-    --stand-ins) out=results/lavapipe/stand-ins; caps=captures/stand-ins; scenes=(atrium conference) ;;
+    --stand-ins) out=results/lavapipe/stand-ins; caps=captures/stand-ins; scenes=(atrium conference); quality_only=() ;;
     --assets) assets+=(--assets "$2"); shift ;;
     *) steps+=("$1") ;;
   esac
@@ -43,7 +48,7 @@ while [[ $# -gt 0 ]]; do
 done
 [[ ${#steps[@]} -gt 0 ]] || steps=(record verify tables quality reference-ladder shade compare sweep dashboard)
 if [[ $out == results/lavapipe && ${#assets[@]} -eq 0 && -z ${VSGL_ASSETS:-} && " ${steps[*]} " =~ " "(record|sweep|reference-ladder)" " ]]; then
-  echo "ci/lavapipe-results.sh: where are the paper's scenes? pass --assets DIR or set VSGL_ASSETS (DIR/sponza, DIR/conference), or use --stand-ins" >&2
+  echo "ci/lavapipe-results.sh: where are the paper's scenes? pass --assets DIR or set VSGL_ASSETS (DIR/sponza, DIR/conference, DIR/sibenik), or use --stand-ins" >&2
   exit 2
 fi
 [[ -x "$bench" ]] || { echo "ci/lavapipe-results.sh: no $bench (build it: cmake --preset release && cmake --build --preset release)" >&2; exit 2; }
@@ -67,7 +72,7 @@ step() {  # step NAME COMMAND...: runs it, logs its wall time
 for s in "${steps[@]}"; do
   case "$s" in
     record)
-      for scene in "${scenes[@]}"; do
+      for scene in "${scenes[@]}" "${quality_only[@]}"; do
         step "record $scene" "$bench" record --scene "$scene" "${assets[@]}" --out "$caps/$scene"
       done ;;
     verify)
@@ -78,7 +83,7 @@ for s in "${steps[@]}"; do
     tables)
       step tables "$bench" tables "${table_captures[@]}" --out "$out" --no-progress ;;
     quality)
-      for scene in "${scenes[@]}"; do
+      for scene in "${scenes[@]}" "${quality_only[@]}"; do
         step "sequence $scene" "$bench" record --scene "$scene" "${assets[@]}" --frames 32 --gbuffer 480x272 --rsm 256 \
           --out "$caps/sequences/$scene"
         step "quality $scene" "$bench" quality --capture "$caps/$scene" --sequence "$caps/sequences/$scene" \

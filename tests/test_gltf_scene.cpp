@@ -54,6 +54,10 @@ struct RoomOptions {
   std::string mesh_name = "room";
   bool missing_texture = false;
   bool spot_light = true;
+  // A greyscale height map (bump.png) on the floor material, as converted OBJ files carry it:
+  // kInExtras names it only in the material's extras (the MTL's map_bump) with a texture that no
+  // material slot uses; kAsNormalTexture also makes it the floor's normalTexture.
+  enum class HeightMap { kNone, kInExtras, kAsNormalTexture } height_map = HeightMap::kNone;
 };
 
 // A closed 4 x 3 x 4 m room seen from inside: the floor (y = 0) carries a 16x16 checker texture of
@@ -153,6 +157,19 @@ fs::path write_gltf_room(const fs::path& dir, const RoomOptions& opt = {}) {
         {"spot", {{"innerConeAngle", 0.3}, {"outerConeAngle", kOuterCone}}}}});
   if (!opt.spot_light) doc["extensions"]["KHR_lights_punctual"]["lights"][0].erase("spot");
   doc["nodes"][2]["extensions"]["KHR_lights_punctual"]["light"] = 0;
+  if (opt.height_map != RoomOptions::HeightMap::kNone) {
+    Rgb8Image bump{8, 8, {}};
+    for (uint32_t i = 0; i < 64; ++i) {
+      const auto h = static_cast<uint8_t>(i % 8 < 4 ? 40 : 220);
+      bump.rgb.insert(bump.rgb.end(), {h, h, h});
+    }
+    write_png_atomic(dir / "bump.png", bump);
+    doc["images"].push_back({{"uri", "bump.png"}});
+    doc["textures"].push_back({{"source", 1}, {"sampler", 0}});
+    doc["materials"][0]["extras"]["mtl"] = {{"map_bump", "bump.png"}, {"bump", "bump.png"}};
+    if (opt.height_map == RoomOptions::HeightMap::kAsNormalTexture)
+      doc["materials"][0]["normalTexture"] = {{"index", 1}};
+  }
   const fs::path file = dir / "room.gltf";
   std::ofstream(file) << doc.dump(1);
   return file;
@@ -281,6 +298,31 @@ TEST(GltfImport, BadNormalsAreRepairedAndSaidSo) {
     const glm::vec3 fn = triangle_normal(m, static_cast<uint32_t>(t / 3));
     for (int k = 0; k < 3; ++k) EXPECT_GT(glm::dot(fn, m.vertices[m.indices[t + static_cast<std::size_t>(k)]].normal), 0.5f);
   }
+}
+
+// Only normalTexture is a normal map: a height map that a converted OBJ names in the material's
+// extras (the Sibenik cathedral's map_bump, docs/scenes.md) leaves the file's normals as they are.
+TEST(GltfImport, OnlyNormalTextureIsANormalMap) {
+  const test::TempDir dir_temp("gltf_height_map");
+  const fs::path& dir = dir_temp.path();
+  const GltfImport plain = import_gltf(write_gltf_room(dir));
+  RoomOptions in_extras;
+  in_extras.height_map = RoomOptions::HeightMap::kInExtras;
+  const GltfImport extras = import_gltf(write_gltf_room(dir, in_extras));
+  ASSERT_EQ(extras.scene.materials.size(), 2u);
+  EXPECT_EQ(extras.scene.materials[0].normal_texture, -1);
+  EXPECT_EQ(extras.scene.textures.size(), 1u) << "the checker only: nothing reads the height map";
+  ASSERT_EQ(extras.scene.mesh.vertices.size(), plain.scene.mesh.vertices.size());
+  for (std::size_t i = 0; i < plain.scene.mesh.vertices.size(); ++i) {
+    EXPECT_EQ(extras.scene.mesh.vertices[i].normal, plain.scene.mesh.vertices[i].normal);
+    EXPECT_EQ(extras.scene.mesh.vertices[i].tangent, plain.scene.mesh.vertices[i].tangent);
+  }
+  // The same map given as normalTexture is read as one (linear, with tangents for the floor).
+  RoomOptions as_normal;
+  as_normal.height_map = RoomOptions::HeightMap::kAsNormalTexture;
+  const GltfImport normal = import_gltf(write_gltf_room(dir, as_normal));
+  ASSERT_GE(normal.scene.materials[0].normal_texture, 0);
+  EXPECT_FALSE(normal.scene.textures[static_cast<std::size_t>(normal.scene.materials[0].normal_texture)].srgb);
 }
 
 TEST(GltfImport, FilesTheTestBreaksNameTheProblem) {

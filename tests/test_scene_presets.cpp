@@ -8,6 +8,7 @@
 #include <cctype>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <string>
 
 #include "gpu_test.hpp"
@@ -56,7 +57,7 @@ std::string input_error_of(const std::function<void()>& f) {
 
 TEST(ScenePresets, TheCommittedPresetsParseAndNameThePaperTables) {
   EXPECT_EQ(scene_preset_names(scene_preset_files(kPresetDir)),
-            (std::vector<std::string>{"conference-room", "sponza"}));
+            (std::vector<std::string>{"conference-room", "sibenik", "sponza"}));
   const ScenePreset sponza = read_scene_preset(kPresetDir / "sponza.json");
   EXPECT_EQ(sponza.paper_table, 1u);
   EXPECT_EQ(sponza.sizes.gbuffer_width, 1920u);
@@ -64,6 +65,33 @@ TEST(ScenePresets, TheCommittedPresetsParseAndNameThePaperTables) {
   const ScenePreset room = read_scene_preset(kPresetDir / "conference-room.json");
   EXPECT_EQ(room.paper_table, 2u);
   EXPECT_FLOAT_EQ(*room.light.cone_half_angle_deg, 35.0f);
+  const ScenePreset sibenik = read_scene_preset(kPresetDir / "sibenik.json");
+  EXPECT_EQ(sibenik.paper_table, 0u) << "Fig. 5's lower row only: the paper has no table for it";
+  EXPECT_EQ(sibenik.model.front(), "sibenik/sibenik.gltf");
+  EXPECT_EQ(sibenik.sizes.rsm_size, 512u);
+}
+
+// The Sibenik cathedral is a paper scene of no paper table (DESIGN.md §3.4): even with every
+// preset's model at hand, neither table picks it, and each picks its own scene.
+TEST(ScenePresets, SibenikIsNoTablesScene) {
+  test::TempDir tmp("no_table");
+  for (const ScenePresetFile& file : built_in_scene_presets()) {
+    const ScenePreset preset = parse_scene_preset(file);
+    fs::create_directories((tmp.path() / preset.model.front()).parent_path());
+    std::ofstream(tmp.path() / preset.model.front()) << "{}";
+  }
+  const SceneLibrary all{built_in_scene_presets(), AssetSearch{{{tmp.path(), "--assets"}}}};
+  EXPECT_EQ(table_scene(1, all).scene, "sponza");
+  EXPECT_EQ(table_scene(2, all).scene, "conference-room");
+  EXPECT_TRUE(table_scene(1, all).paper);
+  EXPECT_TRUE(table_scene(2, all).paper);
+  CaptureMeta meta;
+  meta.scene = "sibenik";
+  meta.source = SceneSource{};
+  meta.source->preset = "sibenik";
+  meta.source->paper_table = find_scene_preset(all.presets, "sibenik").paper_table;
+  EXPECT_EQ(paper_table_of(meta), 0) << "its capture is timed as a scene of no paper table (OUT/sibenik.json)";
+  EXPECT_EQ(table_file_stem(paper_table_of(meta), meta.scene), "sibenik");
 }
 
 // The programs read the presets built into them, never the checkout: the same files, byte for byte
@@ -152,7 +180,7 @@ TEST(ScenePresets, TheSourceNamesTheModelRelativeToItsAssetDirectory) {
 
 TEST(ScenePresets, UnknownSceneNamesListTheProceduralScenesAndThePresets) {
   const std::string what = input_error_of([] { find_scene_preset(built_in_scene_presets(), "nosuch"); });
-  for (const char* name : {"atrium", "tiny", "sponza", "conference-room"})
+  for (const char* name : {"atrium", "tiny", "sponza", "conference-room", "sibenik"})
     EXPECT_NE(what.find(name), std::string::npos) << what;
 }
 
@@ -216,15 +244,24 @@ TEST_F(ScenePresetsTest, AStaleCaptureIsReRecordedAndAFreshOneReused) {
   EXPECT_EQ(resized.capture.gbuffer.width, 64u);
 }
 
-TEST_F(ScenePresetsTest, BothPaperScenesRecordAtReducedSizeWhenTheirModelsAreHere) {
+// Every preset (the paper's scenes) records at reduced size from its real model; those whose model
+// is not on VSGL_ASSETS are skipped by name once the others have been recorded.
+TEST_F(ScenePresetsTest, ThePaperScenesRecordAtReducedSizeWhenTheirModelsAreHere) {
   const SceneLibrary library = default_scene_library({});
-  for (const char* name : {"sponza", "conference-room"}) {
+  // At least this many triangles: the paper's 262k, 331k and "75k" scenes (this Sibenik copy lost
+  // 1,720 of the archive's 75,284 triangles, docs/scenes.md).
+  const std::map<std::string, uint64_t> min_triangles{
+      {"sponza", 260000}, {"conference-room", 330000}, {"sibenik", 73000}};
+  ASSERT_EQ(scene_preset_names(library.presets).size(), min_triangles.size()) << "a new preset: add it here";
+  std::vector<std::string> missing;
+  for (const std::string& name : scene_preset_names(library.presets)) {
+    SCOPED_TRACE(name);
     const ScenePreset preset = find_scene_preset(library.presets, name);
     try {
       find_preset_model(preset, library.assets);
     } catch (const InputError&) {
-      GTEST_SKIP() << "the paper scene " << name
-                   << "'s model is not on VSGL_ASSETS (ctest sets it from the cache variable VSGL_TEST_ASSETS)";
+      missing.push_back(name);
+      continue;
     }
     test::TempDir tmp(name);
     const NamedScene scene = load_named_scene(name, library);
@@ -235,11 +272,18 @@ TEST_F(ScenePresetsTest, BothPaperScenesRecordAtReducedSizeWhenTheirModelsAreHer
     ASSERT_TRUE(cap.meta.source.has_value());
     EXPECT_EQ(cap.meta.source->paper_table, preset.paper_table);
     EXPECT_EQ(paper_table_of(cap.meta), static_cast<int>(preset.paper_table));
-    EXPECT_GT(cap.meta.source->triangles, 200000u) << "the paper's scenes have 262k and 331k triangles";
+    ASSERT_EQ(min_triangles.count(name), 1u) << "a new preset: add it to min_triangles";
+    EXPECT_GE(cap.meta.source->triangles, min_triangles.at(name));
     EXPECT_NE(std::find(preset.model.begin(), preset.model.end(), cap.meta.source->file), preset.model.end())
         << cap.meta.source->file << ": the sidecar names the model relative to its asset directory";
     EXPECT_TRUE(cap.rsm.has_pdf);
     (void)r;
+  }
+  if (!missing.empty()) {
+    std::string names;
+    for (const std::string& n : missing) names += (names.empty() ? "" : ", ") + n;
+    GTEST_SKIP() << "the paper scene(s) " << names
+                 << " have no model on VSGL_ASSETS (ctest sets it from the cache variable VSGL_TEST_ASSETS)";
   }
 }
 

@@ -111,6 +111,12 @@ TEST(SceneIdentity, FollowsFromTheCaptureSidecar) {
   EXPECT_EQ(paper.kind, SceneKind::kPaper);
   EXPECT_EQ(paper.preset, "sponza");
   EXPECT_EQ(paper.triangles, 262267u);
+  // A preset of no paper table (sibenik, Fig. 5 only) is still the paper's scene, not a user's.
+  meta.scene = "sibenik";
+  meta.source->preset = "sibenik";
+  meta.source->paper_table = 0;
+  EXPECT_EQ(capture_scene_identity(meta).kind, SceneKind::kPaper);
+  EXPECT_EQ(capture_scene_identity(meta).preset, "sibenik");
   // A file given directly, named like a paper scene, is the user's.
   meta.source->preset.clear();
   meta.source->paper_table = 0;

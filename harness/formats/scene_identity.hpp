@@ -11,7 +11,7 @@
 namespace vsgl {
 
 enum class SceneKind {
-  kPaper,       // a preset of the paper's scenes (sponza, conference-room) from its real model
+  kPaper,       // a preset of the paper's scenes (sponza, conference-room, sibenik) from its real model
   kStandIn,     // a procedural scene timed in place of a paper table's scene (atrium, conference)
   kProcedural,  // any other procedural scene (the tiny test scene)
   kUser,        // a model file given directly (record --model)

@@ -9,7 +9,7 @@ SceneIdentity capture_scene_identity(const CaptureMeta& meta) {
   s.name = meta.scene;
   if (meta.source) {
     const SceneSource& src = *meta.source;
-    s.kind = !src.preset.empty() && src.paper_table != 0 ? SceneKind::kPaper : SceneKind::kUser;
+    s.kind = !src.preset.empty() ? SceneKind::kPaper : SceneKind::kUser;
     s.preset = src.preset;
     s.model_file = src.file;
     s.content_hash = src.content_hash;

@@ -5,8 +5,9 @@
 
 namespace vsgl {
 
-// A preset with a paper table is the paper's scene; a procedural scene that a paper table uses
-// is its stand-in; a file given directly (or through a preset of no paper table) is the user's.
+// A preset is the paper's scene, with a paper table (sponza, conference-room) or without one
+// (sibenik, Fig. 5 only; DESIGN.md §3.4); a procedural scene that a paper table uses is its
+// stand-in; a file given directly is the user's.
 SceneIdentity capture_scene_identity(const CaptureMeta& meta);
 
 }  // namespace vsgl

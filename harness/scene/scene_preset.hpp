@@ -1,9 +1,10 @@
 #pragma once
 // A named scene as data (DESIGN.md §3.4): one JSON file per scene in harness/scene/presets/, naming
 // the model file to load (found through the asset search path, asset_search.hpp), the camera, the
-// spot light, the default sizes and the motion of a sequence (--frames). The paper's two scenes,
-// sponza (Table 1) and conference-room (Table 2), are presets; the files are built into the
-// program (core/embedded_files.hpp), so a scene is added by adding a file there and rebuilding.
+// spot light, the default sizes and the motion of a sequence (--frames). The paper's scenes are
+// presets: sponza (Table 1), conference-room (Table 2) and sibenik (Fig. 5 only, no table); the
+// files are built into the program (core/embedded_files.hpp), so a scene is added by adding a file
+// there and rebuilding.
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -18,7 +19,7 @@ namespace vsgl {
 struct ScenePreset {
   std::string name;          // the file's stem: `record --scene NAME`
   std::string description;   // one line, for listings
-  uint32_t paper_table = 0;  // the paper table this scene reproduces (1, 2), 0 for none
+  uint32_t paper_table = 0;  // the paper table this scene reproduces (1, 2), 0 for none (sibenik)
   // Candidate model paths, relative to an asset directory, in order of preference (.gltf, .glb
   // or .obj); the first found is loaded.
   std::vector<std::string> model;
