@@ -122,7 +122,7 @@ glm::vec3 fis_power(FisVariant variant, glm::vec3 mean_flux, const FisKernel& ke
                     const VirtualSquare& square);
 
 // What a device's VSGL at `level` (the level the device chose) for `sample` should carry: the
-// power of the fetches from the CPU's pyramids of M0, M1, M2 (fis_power), and per component how
+// power of the fetches from the CPU's pyramids of M0 (fis_power), and per component how
 // far a device may be from it: the fetches' filter error (fetch_error_bound at `precision`)
 // carried through Eq. 4 (Tok15: M ef / max(N p, K)) or, to first order, Eq. 5 (modified:
 // M / (N p_bar) (ef + |f| ep / p_bar), ep the error of p_bar's own fetch).
@@ -133,7 +133,7 @@ struct FisPowerBound {
 FisPowerBound fis_power_bound(FisVariant variant, const MomentPyramids& moments, const SamplePoint& sample, float level,
                               const FisParams& params, FilterPrecision precision);
 
-// The whole generator: N VSGLs from the pyramids of M0, M1, M2 (the PDF is M2's .w). Throws
+// The whole generator: N VSGLs from the pyramids of M0 ... M4 (the PDF is M2's .w). Throws
 // InputError for N = 0, N larger than the texels of nonzero PDF, K <= 0 or not finite, pyramids
 // of different sizes, or an all-zero PDF.
 std::vector<VsglRecord> reference_fis(const MomentPyramids& moments, FisVariant variant, const FisParams& params);
