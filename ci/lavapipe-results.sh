@@ -100,7 +100,7 @@ for s in "${steps[@]}"; do
           --out "$ladder_capture"
         step "reference ladder $scene" "$bench" quality --capture "$caps/$scene" --reference-capture "$ladder_capture" \
           --reference-rsm 0 --error-stride 16 --frames 2 --k-sweep 1 --generators fis_tok15 \
-          --out "$out/reference-ladder/$scene"
+          --out "$out/reference-ladder"
       done ;;
     shade)
       for scene in "${scenes[@]}"; do
