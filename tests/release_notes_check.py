@@ -68,7 +68,7 @@ for key, row in readme_rows.items():
     if mine is None:
         failures.append(f"claim {key}: not in the notes")
         continue
-    for column in (2, 3):
+    for column in range(2, len(row)):
         if not row[column].startswith(mine[column]) or not mine[column]:
             failures.append(f"claim {key}, column {column}: notes '{mine[column]}', README '{row[column]}'")
 
