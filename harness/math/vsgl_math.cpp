@@ -35,15 +35,17 @@ float banerjee_sharpness(float r) {
   return std::clamp(rc * (3.0f - r2) / (1.0f - r2), 0.0f, kMaxSharpness);
 }
 
+float reflection_lobe_sharpness(float roughness, float cos_n) {
+  const float alpha = std::max(roughness, kMinRoughness);
+  return std::clamp((2.0f / (alpha * alpha)) / (4.0f * std::max(cos_n, kMinCosine)), 0.0f, kMaxSharpness);
+}
+
 glm::vec3 texel_specular_direction(glm::vec3 P, glm::vec3 N, float roughness, glm::vec3 source_pos) {
   const glm::vec3 to_source = source_pos - P;
   const float dist2 = glm::dot(to_source, to_source);
   const glm::vec3 omega_in = dist2 > 0.0f ? to_source * (1.0f / std::sqrt(dist2)) : N;
-  const float alpha = std::max(roughness, kMinRoughness);
-  const float cos_in = glm::dot(N, omega_in);
-  const float lambda_s =
-      std::clamp((2.0f / (alpha * alpha)) / (4.0f * std::max(cos_in, kMinCosine)), 0.0f, kMaxSharpness);
-  return mean_resultant_length(lambda_s) * glm::reflect(-omega_in, N);
+  return mean_resultant_length(reflection_lobe_sharpness(roughness, glm::dot(N, omega_in))) *
+         glm::reflect(-omega_in, N);
 }
 
 float luminance(glm::vec3 c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
@@ -165,9 +167,7 @@ glm::vec3 vsgl_two_lobe_radiance(const VsglRecord& v, glm::vec3 x, glm::vec3 n, 
 
 TwoLobes surface_lobes(glm::vec3 n, glm::vec3 wo, glm::vec3 rho_d, glm::vec3 rho_s, float roughness) {
   TwoLobes f;
-  const float alpha = std::max(roughness, kMinRoughness);
-  f.sharpness =
-      std::clamp((2.0f / (alpha * alpha)) / (4.0f * std::max(glm::dot(n, wo), kMinCosine)), 0.0f, kMaxSharpness);
+  f.sharpness = reflection_lobe_sharpness(roughness, glm::dot(n, wo));
   f.axis = glm::reflect(-wo, n);
   f.diffuse = rho_d / kPi;
   f.specular = rho_s * sg_normalization(f.sharpness);

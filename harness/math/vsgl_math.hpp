@@ -30,6 +30,8 @@ std::string shading_model_text();
 float mean_resultant_length(float lambda);
 // Banerjee's inverse of A: lambda = r (3 - r^2) / (1 - r^2), r in [0, 0.9999], lambda in [0, 1e4].
 float banerjee_sharpness(float r);
+// The NDF sharpness 2/alpha^2 warped to the reflection lobe at cosine cos_n (Wang et al. 2009).
+float reflection_lobe_sharpness(float roughness, float cos_n);
 // A texel's specular lobe as an averaged direction A(lambda_s) reflect(-omega_in, N) (DESIGN.md §7).
 glm::vec3 texel_specular_direction(glm::vec3 P, glm::vec3 N, float roughness, glm::vec3 source_pos);
 float luminance(glm::vec3 c);  // Rec. 709

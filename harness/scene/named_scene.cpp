@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "harness/capture/capture_files.hpp"
 #include "harness/core/error.hpp"
 #include "harness/core/platform_environment.hpp"
 #include "harness/core/printable_text.hpp"
@@ -91,8 +92,7 @@ std::string capture_staleness(const CaptureMeta& meta, uint32_t gbuffer_width, u
     return "its model's content was " + meta.source->content_hash + ", and the model found now is " +
            scene.source->content_hash;
   if (meta.frame != 0 || meta.frames != 1) return "it is a frame of a sequence";
-  if (meta.brsm_importance != kBrsmImportanceModel || meta.brsm_bias_alpha != double{gpu::kBiasReductionAlpha})
-    return "its BRSM PDF was made by an older importance (DESIGN.md §8)";
+  if (std::string why = brsm_importance_mismatch(meta, /*rsm_has_pdf=*/true); !why.empty()) return why;
   const Scene now = scene.frame(0, 1);
   if (!near(meta.camera.position, now.camera.position) || !near(meta.camera.target, now.camera.target) ||
       !near(meta.camera.fov_y_deg, now.camera.fov_y_deg))

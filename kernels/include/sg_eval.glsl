@@ -123,8 +123,7 @@ vec3 vsgl_two_lobe_radiance(Vsgl v, vec3 x, vec3 n, TwoLobes f) {
 // Wang et al. 2009), so that its directional albedo is rho_s <axis_r, n>.
 TwoLobes surface_lobes(vec3 n, vec3 wo, vec3 rho_d, vec3 rho_s, float roughness) {
   TwoLobes f;
-  float alpha = max(roughness, VSGL_MIN_ROUGHNESS);
-  f.sharpness = clamp((2.0 / (alpha * alpha)) / (4.0 * max(dot(n, wo), VSGL_MIN_COSINE)), 0.0, VSGL_MAX_SHARPNESS);
+  f.sharpness = reflection_lobe_sharpness(roughness, dot(n, wo));
   f.axis = reflect(-wo, n);
   f.diffuse = rho_d / VSGL_PI;
   f.specular = rho_s * sg_normalization(f.sharpness);

@@ -36,6 +36,14 @@ float banerjee_sharpness(float r) {
   return clamp(rc * (3.0 - r2) / (1.0 - r2), 0.0, VSGL_MAX_SHARPNESS);
 }
 
+// The SG NDF sharpness 2/alpha^2 warped to the reflection lobe about a direction at cosine cos_n to the
+// normal (Wang et al. 2009), alpha floored at 1e-3, the cosine at 1e-4, clamped to [0, 1e4]: the
+// specular lobe of a texel (toward its source) and of a receiver (toward its viewer) alike.
+float reflection_lobe_sharpness(float roughness, float cos_n) {
+  float alpha = max(roughness, VSGL_MIN_ROUGHNESS);
+  return clamp((2.0 / (alpha * alpha)) / (4.0 * max(cos_n, VSGL_MIN_COSINE)), 0.0, VSGL_MAX_SHARPNESS);
+}
+
 // The specular lobe of a texel lit (or seen) from source_pos as an averaged direction (Tok15 §3.2,
 // Toksvig): A(lambda_s) * reflect(-omega_in, N), a normalized SG whose mean direction vector
 // mipmaps linearly. lambda_s warps the SG NDF sharpness 2/alpha^2 to the reflection lobe (Wang et
@@ -46,10 +54,7 @@ vec3 texel_specular_direction(vec3 P, vec3 N, float roughness, vec3 source_pos) 
   float dist2 = dot(to_source, to_source);
   // A source on the texel itself has no direction; fall back to the normal (no NaN).
   vec3 omega_in = dist2 > 0.0 ? to_source * inversesqrt(dist2) : N;
-  float alpha = max(roughness, VSGL_MIN_ROUGHNESS);
-  float cos_in = dot(N, omega_in);
-  float lambda_s = clamp((2.0 / (alpha * alpha)) / (4.0 * max(cos_in, VSGL_MIN_COSINE)), 0.0, VSGL_MAX_SHARPNESS);
-  return mean_resultant_length(lambda_s) * reflect(-omega_in, N);
+  return mean_resultant_length(reflection_lobe_sharpness(roughness, dot(N, omega_in))) * reflect(-omega_in, N);
 }
 
 // Rec. 709 luminance: the camera view's power weight w and PDF.
