@@ -166,6 +166,9 @@ TEST(QualityCli, TinyCaptureWritesJsonMarkdownAndPictures) {
   const auto& ladder = ref["ladder"];
   EXPECT_EQ(ladder["rsm_strides"], nlohmann::ordered_json::array({16, 8, 4, 2}));
   EXPECT_EQ(ladder["rsm_sides"], nlohmann::ordered_json::array({4, 8, 16, 32}));
+  // Every rung's mean luminance, the reference's last: lit pixels exist, so each is positive.
+  ASSERT_EQ(ladder["mean_luminance"].size(), 4u);
+  for (const auto& y : ladder["mean_luminance"]) EXPECT_GT(y.get<double>(), 0.0);
   for (const char* metric : {"relative_rmse", "p99_pixel_error", "flip", "rel_mse", "scaled_rmse"}) {
     const auto& l = ladder["metrics"][metric];
     ASSERT_EQ(l["differences"].size(), 3u) << metric;

@@ -361,5 +361,13 @@ TEST(QualityError, RelativeRmseAndPercentile) {
   EXPECT_THROW(image_error(RadianceImage{1, 1, {grey(1.0f)}}, ref), InputError);
 }
 
+// The ladder's mean luminance counts the pixels with a surface only: the background (alpha 0),
+// however bright, is not averaged in, and an image without a surface reads 0.
+TEST(QualityError, MeanLuminanceOfTheSurfacePixels) {
+  const RadianceImage img{3, 1, {glm::vec4(1, 1, 1, 1), glm::vec4(3, 3, 3, 1), glm::vec4(100, 100, 100, 0)}};
+  EXPECT_NEAR(mean_surface_luminance(img), 2.0, 1e-6);
+  EXPECT_EQ(mean_surface_luminance(RadianceImage{1, 1, {glm::vec4(5, 5, 5, 0)}}), 0.0);
+}
+
 }  // namespace
 }  // namespace vsgl

@@ -169,6 +169,7 @@ ReferenceLadder made_up_ladder() {
   ReferenceLadder l;
   l.rsm_strides = {8, 4, 2, 1};
   l.rsm_sides = {64, 128, 256, 512};
+  l.mean_luminances = {0.03125, 0.0625, 0.046875, 0.046875};
   l.metrics["relative_rmse"] = {{0.08, 0.04, 0.02}, {0.5, 0.5}, 0.5, 0.02};
   l.metrics["p99_pixel_error"] = {{0.0, 0.5, 0.25},
                                   {std::numeric_limits<double>::infinity(), 0.5},
@@ -222,6 +223,19 @@ TEST(QualityModel, SchemaSixLadderRoundTripsAndRenders) {
       << md;
   EXPECT_NE(md.find("| remaining error eps_inf = own rho / (1 - rho) | inf | | 0.02 | |"), std::string::npos) << md;
   EXPECT_NE(md.find("is decided only where (1 + b) eps_inf"), std::string::npos) << md;
+  EXPECT_EQ(back.reference_detail->ladder->mean_luminances, (std::vector<double>{0.03125, 0.0625, 0.046875, 0.046875}));
+  EXPECT_NE(md.find("per rung: 8 (64^2) 0.0312, 4 (128^2) 0.0625, 2 (256^2) 0.0469, 1 (512^2) 0.0469."),
+            std::string::npos)
+      << md;
+  // One mean luminance per rung, or the document is refused by pointer.
+  nlohmann::ordered_json short_by_one = doc;
+  short_by_one["reference"]["ladder"]["mean_luminance"].erase(3);
+  try {
+    quality_model_from_json(short_by_one, "q.json");
+    ADD_FAILURE() << "a ladder with 3 mean luminances for 4 rungs was read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/reference/ladder/mean_luminance"), std::string::npos) << e.what();
+  }
 }
 
 // A schema-6 document judges its reference claims by the ladder: without one it is refused, by

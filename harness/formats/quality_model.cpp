@@ -220,7 +220,11 @@ json ladder_json(const ReferenceLadder& l) {
                          {"rate", finite_or_null(m.rate)},
                          {"remaining_error", finite_or_null(m.remaining)}};
   }
-  return json{{"rsm_strides", l.rsm_strides}, {"rsm_sides", l.rsm_sides}, {"metrics", metrics}, {"note", l.note}};
+  json out{{"rsm_strides", l.rsm_strides}, {"rsm_sides", l.rsm_sides}};
+  if (!l.mean_luminances.empty()) out["mean_luminance"] = l.mean_luminances;
+  out["metrics"] = metrics;
+  out["note"] = l.note;
+  return out;
 }
 
 ReferenceLadder read_ladder(const JsonReader& r, const json& o, const std::string& p) {
@@ -237,6 +241,12 @@ ReferenceLadder read_ladder(const JsonReader& r, const json& o, const std::strin
   if (l.rsm_sides.size() != l.rsm_strides.size())
     r.fail(r.child(p, "rsm_sides"),
            "has " + std::to_string(l.rsm_sides.size()) + " rungs, rsm_strides " + std::to_string(l.rsm_strides.size()));
+  if (o.contains("mean_luminance")) {
+    l.mean_luminances = r.numbers(o, p, "mean_luminance");
+    if (l.mean_luminances.size() != l.rsm_strides.size())
+      r.fail(r.child(p, "mean_luminance"), "has " + std::to_string(l.mean_luminances.size()) + " rungs, rsm_strides " +
+                                               std::to_string(l.rsm_strides.size()));
+  }
   l.note = r.string(o, p, "note");
   for (const auto& [name, v] : r.object(o, p, "metrics").items()) {
     const std::string mp = p + "/metrics/" + name;

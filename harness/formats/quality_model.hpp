@@ -159,6 +159,9 @@ struct ReferenceLadderMetric {
 struct ReferenceLadder {
   std::vector<uint32_t> rsm_strides;  // the rungs, coarsest first, the reference's own stride last
   std::vector<uint32_t> rsm_sides;    // their RSM sides: the VPL source RSM's side / stride, rounded up
+  // Each rung's mean luminance over the pixels with a surface (quality_metrics.hpp); empty in the
+  // schema-6 documents written before it was recorded.
+  std::vector<double> mean_luminances;
   std::map<std::string, ReferenceLadderMetric> metrics;  // by frame metric (frame_error.hpp)
   std::string note;                                      // how many rungs there were, and what that leaves decided
 };

@@ -271,6 +271,17 @@ PowerMetrics power_metrics(const std::vector<VsglRecord>& vsgls, double flux) {
   return m;
 }
 
+double mean_surface_luminance(const RadianceImage& image) {
+  double sum = 0;
+  std::size_t count = 0;
+  for (const glm::vec4& p : image.pixels)
+    if (p.a > 0.0f) {
+      sum += pixel_luminance(p);
+      ++count;
+    }
+  return count == 0 ? 0.0 : sum / static_cast<double>(count);
+}
+
 ImageError image_error(const RadianceImage& image, const RadianceImage& reference) {
   if (image.width != reference.width || image.height != reference.height)
     throw InputError("image error: the image is " + std::to_string(image.width) + "x" + std::to_string(image.height) +

@@ -121,6 +121,10 @@ double total_flux(const std::vector<glm::vec4>& m0);
 // ---- Error against a reference ---------------------------------------------------------------
 // The Rec. 709 luminance of a radiance pixel (alpha ignored), in double for the sums below.
 double pixel_luminance(glm::vec4 p);
+// The mean luminance of the pixels with a surface (alpha > 0); 0 where there is none. The
+// reference ladder records it per rung (DESIGN.md §11a): a reference that leaks light through a
+// near-field tail brightens as its RSM grows, one that converges stays flat.
+double mean_surface_luminance(const RadianceImage& image);
 struct ImageError {
   double relative_rmse = 0;  // sqrt(sum |L - R|^2 / sum |R|^2) over rgb of the pixels with a surface
   // 99th percentile over those pixels of |Y(L) - Y(R)| / mean Y(R) (luminance, relative to the

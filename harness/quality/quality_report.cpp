@@ -257,7 +257,15 @@ void write_ladder(std::ostringstream& md, const ReferenceLadder& l) {
   for (const auto& [metric, lm] : l.metrics) md << " " << ladder_num(lm.rate, "none") << " | |";
   md << "\n| remaining error eps_inf = own rho / (1 - rho) |";
   for (const auto& [metric, lm] : l.metrics) md << " " << ladder_num(lm.remaining, "inf") << " | |";
-  md << "\n\n" << kLadderRule << "\n\n";
+  md << "\n";
+  if (!l.mean_luminances.empty()) {
+    // Flat where the reference converges; rising with the RSM where light leaks (DESIGN.md §11a).
+    md << "\nMean luminance of the pixels with a surface, per rung:";
+    for (std::size_t i = 0; i < l.mean_luminances.size() && i < l.rsm_strides.size(); ++i)
+      md << (i == 0 ? " " : ", ") << rung(i) << " " << num(l.mean_luminances[i]);
+    md << ".\n";
+  }
+  md << "\n" << kLadderRule << "\n\n";
 }
 
 void write_reference_error(std::ostringstream& md, const QualityModel& m) {

@@ -438,6 +438,7 @@ struct QualityRun {
     rungs.push_back(&ref_image);
     ladder.rsm_strides.push_back(ref_stride);
     for (uint32_t s : ladder.rsm_strides) ladder.rsm_sides.push_back((rsm_side + s - 1) / s);
+    for (const RadianceImage* image : rungs) ladder.mean_luminances.push_back(mean_surface_luminance(*image));
     FrameSeries differences;  // by metric, coarsest pair first
     for (std::size_t i = 0; i + 1 < rungs.size(); ++i)
       add_image_error(differences, frame_image_error(*rungs[i], *rungs[i + 1], flip));
