@@ -17,6 +17,7 @@
 #include "harness/core/atomic_file.hpp"
 #include "harness/capture/capture.hpp"
 #include "harness/capture/capture_files.hpp"
+#include "harness/capture/visibility_geometry.hpp"
 #include "harness/core/error.hpp"
 #include "harness/capture/exr_io.hpp"
 #include "child_process.hpp"
@@ -227,6 +228,107 @@ TEST(CaptureIo, RoundTripIsBitExact) {
   ASSERT_NE(rsm.find("flux_diffuse.R"), nullptr);
   EXPECT_EQ(rsm.find("flux_diffuse.R")->type, ExrSampleType::kFloat);
   EXPECT_EQ(rsm.find("flux_diffuse.R")->values, capture.rsm.planes[kDR]);
+}
+
+// Two triangles and three points: enough to see every field come back.
+VisibilityGeometry small_geometry() {
+  VisibilityGeometry g;
+  g.triangle_vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {0, 1, 1.5f}};
+  g.points = {{{0.25f, 0.25f, 0}, {0, 0, 1}}, {{0.5f, 0.25f, 1}, {0, 0, -1}}, {{0.1f, 0.7f, 0}, {0, 0, 1}}};
+  g.point_seed = 0x1234567890abcdefull;
+  return g;
+}
+
+// The visibility geometry (DESIGN.md §8a) travels with the capture: its file beside the EXRs, its
+// counts, seed and hash in the sidecar, read back bit for bit; without it, the capture is as before.
+TEST(CaptureIo, VisibilityGeometryRoundTripsThroughTheSidecar) {
+  TempDir temp;
+  Capture capture = make_capture();
+  capture.visibility_geometry = small_geometry();
+  const CaptureMeta written = write_capture(capture, temp.path());
+  EXPECT_EQ(file_names(temp.path()),
+            (std::set<std::string>{"capture.json", "gbuffer.exr", "rsm.exr", kVisibilityGeometryFile}));
+  ASSERT_TRUE(written.visibility_geometry);
+  const nlohmann::ordered_json sidecar = read_json(temp.path() / "capture.json");
+  EXPECT_EQ(sidecar["visibility_geometry"]["triangles"], 2);
+  EXPECT_EQ(sidecar["visibility_geometry"]["points"], 3);
+  EXPECT_EQ(sidecar["visibility_geometry"]["point_seed"], 0x1234567890abcdefull);
+  std::ifstream in(temp.path() / kVisibilityGeometryFile, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(sidecar["visibility_geometry"]["hash"], bytes_hash(bytes));
+  EXPECT_EQ(bytes.size(), 40u + 2 * 36 + 3 * 24);
+
+  const Capture loaded = load_capture(temp.path());
+  EXPECT_FALSE(loaded.visibility_geometry);  // read only by the commands that shade with visibility
+  const VisibilityGeometry back = load_visibility_geometry(temp.path(), loaded.meta);
+  const VisibilityGeometry want = small_geometry();
+  EXPECT_EQ(back.triangle_vertices, want.triangle_vertices);
+  ASSERT_EQ(back.points.size(), want.points.size());
+  for (std::size_t i = 0; i < want.points.size(); ++i) {
+    EXPECT_EQ(back.points[i].position, want.points[i].position);
+    EXPECT_EQ(back.points[i].normal, want.points[i].normal);
+  }
+  EXPECT_EQ(back.point_seed, want.point_seed);
+
+  // Written again without it, the capture names none and the old file is gone.
+  const CaptureMeta plain = write_capture(make_capture(), temp.path());
+  EXPECT_FALSE(plain.visibility_geometry);
+  EXPECT_EQ(file_names(temp.path()), (std::set<std::string>{"capture.json", "gbuffer.exr", "rsm.exr"}));
+}
+
+// A capture recorded without the geometry is refused by name of the option that records it; a
+// changed, short or long file, a non-finite or non-unit value, or a sidecar file name that is a
+// path are refused naming the file and the problem.
+TEST(CaptureIo, VisibilityGeometryMissingOrDamagedIsRefused) {
+  {
+    TempDir temp;
+    const CaptureMeta meta = write_capture(make_capture(), temp.path());
+    expect_input_error([&] { load_visibility_geometry(temp.path(), meta); },
+                       {"capture.json", "no visibility geometry", "--visibility-points", "--visibility none"});
+  }
+  TempDir temp;
+  Capture capture = make_capture();
+  capture.visibility_geometry = small_geometry();
+  const CaptureMeta meta = write_capture(capture, temp.path());
+  const fs::path file = temp.path() / kVisibilityGeometryFile;
+  std::string bytes;
+  {
+    std::ifstream in(file, std::ios::binary);
+    bytes.assign((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  }
+  const auto write_bytes = [&](const std::string& b) {
+    std::ofstream out(file, std::ios::binary | std::ios::trunc);
+    out.write(b.data(), static_cast<std::streamsize>(b.size()));
+  };
+  std::string changed = bytes;
+  changed[60] ^= 0x01;  // inside the first triangle
+  write_bytes(changed);
+  expect_input_error([&] { load_visibility_geometry(temp.path(), meta); },
+                     {kVisibilityGeometryFile, "hash", "record the capture again"});
+  write_bytes(bytes);
+  EXPECT_NO_THROW(load_visibility_geometry(temp.path(), meta));
+
+  const std::string where = "g.bin";
+  expect_input_error([&] { decode_visibility_geometry(std::span(bytes.data(), bytes.size() - 4), where); },
+                     {"g.bin", "announces 2 triangles and 3 points"});
+  expect_input_error([&] { decode_visibility_geometry(bytes + "x", where); }, {"g.bin", "announces"});
+  expect_input_error([&] { decode_visibility_geometry(std::string("not a file"), where); }, {"g.bin", "VSGLVIS1"});
+  VisibilityGeometry bad = small_geometry();
+  bad.points[1].position.y = std::numeric_limits<float>::quiet_NaN();
+  expect_input_error([&] { decode_visibility_geometry(encode_visibility_geometry(bad), where); },
+                     {"point 1", "finite"});
+  bad = small_geometry();
+  bad.points[2].normal = {0, 0, 2};
+  expect_input_error([&] { decode_visibility_geometry(encode_visibility_geometry(bad), where); }, {"point 2", "unit"});
+  bad = small_geometry();
+  bad.triangle_vertices[4].x = std::numeric_limits<float>::infinity();
+  expect_input_error([&] { decode_visibility_geometry(encode_visibility_geometry(bad), where); },
+                     {"triangle 1", "not finite"});
+
+  nlohmann::ordered_json sidecar = read_json(temp.path() / "capture.json");
+  sidecar["visibility_geometry"]["file"] = "../elsewhere.bin";
+  std::ofstream(temp.path() / "capture.json") << sidecar.dump(2);
+  expect_load_fails(temp.path(), {"visibility_geometry", "file name"});
 }
 
 TEST(CaptureIo, RsmWithoutPdfRoundTripsWithoutPdfChannel) {

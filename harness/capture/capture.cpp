@@ -37,13 +37,15 @@ void ViewImage::resize(ViewKind k, uint32_t w, uint32_t h) {
 std::string plane_hash(const std::vector<float>& plane) {
   // The hash is defined over the little-endian bytes of the floats.
   static_assert(std::endian::native == std::endian::little);
+  return bytes_hash(std::string_view(reinterpret_cast<const char*>(plane.data()), plane.size() * sizeof(float)));
+}
+
+std::string bytes_hash(std::string_view bytes) {
   constexpr uint64_t kOffsetBasis = 14695981039346656037ull;
   constexpr uint64_t kPrime = 1099511628211ull;
   uint64_t hash = kOffsetBasis;
-  const auto* bytes = reinterpret_cast<const unsigned char*>(plane.data());
-  const std::size_t size = plane.size() * sizeof(float);
-  for (std::size_t i = 0; i < size; ++i) {
-    hash ^= bytes[i];
+  for (const char c : bytes) {
+    hash ^= static_cast<unsigned char>(c);
     hash *= kPrime;
   }
   char text[8 + 16 + 1];

@@ -12,6 +12,7 @@
 
 #include <glm/glm.hpp>
 
+#include "harness/capture/visibility_geometry.hpp"
 #include "harness/math/fis_params.hpp"
 #include "harness/math/vsgl_math.hpp"
 #include "kernels/include/interface/shading.h"
@@ -115,17 +116,25 @@ struct CaptureMeta {
   // Filled by write_capture / checked by load_capture: "fnv1a64:<16 hex>" per channel name.
   std::array<std::string, kChannelCount> gbuffer_hashes;
   std::array<std::string, kChannelCount> rsm_hashes;
+  // The scene's triangles and point sampling for visibility (visibility_geometry.hpp, DESIGN.md
+  // §8a); none in a capture recorded without them or before they were recorded.
+  std::optional<VisibilityGeometryRecord> visibility_geometry;
 };
 
 struct Capture {
   CaptureMeta meta;
   ViewImage gbuffer;  // camera view
   ViewImage rsm;      // light view
+  // Written by write_capture when present; load_capture leaves it empty (load_visibility_geometry
+  // reads it for the commands that shade with visibility).
+  std::optional<VisibilityGeometry> visibility_geometry;
   const ViewImage& view(ViewKind k) const { return k == ViewKind::kCamera ? gbuffer : rsm; }
 };
 
 // 64-bit FNV-1a of a plane's bytes, as "fnv1a64:%016x". Identifies inputs exactly.
 std::string plane_hash(const std::vector<float>& plane);
+// The same hash over any bytes (the visibility geometry file, visibility_geometry.hpp).
+std::string bytes_hash(std::string_view bytes);
 
 // Channels stored in a file: all of them, less the PDF when the view has none.
 inline int stored_channel_count(bool has_pdf) { return has_pdf ? kChannelCount : kPdf; }

@@ -215,9 +215,17 @@ CaptureMeta write_capture(const Capture& capture, const std::filesystem::path& d
     meta.rsm_hashes[c] = plane_hash(capture.rsm.planes[c]);
   }
 
-  // The images first, the sidecar last: the sidecar's rename commits the capture.
+  // The images and the visibility geometry first, the sidecar last: the sidecar's rename commits
+  // the capture.
   write_file_atomic(gbuffer_path, encode_view(capture.gbuffer, path_text(gbuffer_path)));
   write_file_atomic(rsm_path, encode_view(capture.rsm, path_text(rsm_path)));
+  meta.visibility_geometry.reset();
+  if (capture.visibility_geometry) {
+    const std::string bytes = encode_visibility_geometry(*capture.visibility_geometry);
+    VisibilityGeometryRecord rec = visibility_geometry_record(*capture.visibility_geometry, bytes);
+    write_file_atomic(dir / rec.file, bytes);
+    meta.visibility_geometry = std::move(rec);
+  }
   std::string sidecar;
   try {
     sidecar = sidecar_text(meta, capture);
@@ -225,6 +233,9 @@ CaptureMeta write_capture(const Capture& capture, const std::filesystem::path& d
     throw InputError(path_text(sidecar_path) + ": cannot write the capture sidecar: " + e.what());
   }
   write_text_atomic(sidecar_path, sidecar);
+  // A geometry file the new sidecar does not name is an older capture's: gone, so the directory
+  // holds one capture.
+  if (!meta.visibility_geometry) std::filesystem::remove(dir / kVisibilityGeometryFile, ec);
   return meta;
 }
 

@@ -117,6 +117,12 @@ std::string sidecar_text(const CaptureMeta& meta, const Capture& capture) {
   if (meta.brsm_pyramid) doc["brsm_pyramid"] = pyramid_path_name(*meta.brsm_pyramid);
   if (!meta.brsm_importance.empty())
     doc["brsm_importance"] = {{"model", meta.brsm_importance}, {"bias_reduction_alpha", meta.brsm_bias_alpha}};
+  if (const auto& g = meta.visibility_geometry)
+    doc["visibility_geometry"] = {{"file", g->file},
+                                  {"triangles", g->triangles},
+                                  {"points", g->points},
+                                  {"point_seed", g->point_seed},
+                                  {"hash", g->hash}};
   doc["gbuffer"] = view_json(capture.gbuffer, meta.gbuffer_hashes);
   doc["rsm"] = view_json(capture.rsm, meta.rsm_hashes);
   return doc.dump(2) + "\n";
@@ -291,6 +297,19 @@ CaptureMeta read_meta(const JsonReader& reader, const json& doc) {
     const json& importance = reader.object(doc, "", "brsm_importance");
     meta.brsm_importance = reader.string(importance, "brsm_importance", "model");
     meta.brsm_bias_alpha = reader.number(importance, "brsm_importance", "bias_reduction_alpha");
+  }
+  if (doc.contains("visibility_geometry")) {
+    const json& g = reader.object(doc, "", "visibility_geometry");
+    VisibilityGeometryRecord rec;
+    rec.file = reader.string(g, "visibility_geometry", "file");
+    // The file lies beside the sidecar: a name, never a path that could point elsewhere.
+    if (rec.file.empty() || rec.file.find_first_of("/\\:") != std::string::npos || rec.file == "." || rec.file == "..")
+      reader.fail("visibility_geometry", "key \"file\" must be a file name in the capture directory");
+    rec.triangles = reader.uint64(g, "visibility_geometry", "triangles");
+    rec.points = reader.uint64(g, "visibility_geometry", "points");
+    rec.point_seed = reader.uint64(g, "visibility_geometry", "point_seed");
+    rec.hash = reader.string(g, "visibility_geometry", "hash");
+    meta.visibility_geometry = std::move(rec);
   }
   return meta;
 }
