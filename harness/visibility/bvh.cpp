@@ -31,7 +31,7 @@ struct Box {
 };
 
 struct Split {
-  int axis = -1;       // -1: none (every centroid in one bin on every axis)
+  int axis = -1;       // -1: none (the centroids coincide on every axis)
   uint32_t plane = 0;  // bins [0, plane) go left
   uint32_t left_count = 0;
   float cost = kInfinity;  // half areas times triangle counts of both sides
