@@ -22,6 +22,7 @@
 #include "kernels/include/interface/raster.h"
 #include "kernels/include/interface/shading.h"
 #include "kernels/include/interface/testing.h"
+#include "kernels/include/interface/visibility.h"
 
 namespace vsgl {
 namespace {
@@ -72,6 +73,7 @@ const std::map<std::string, Expected>& kernels() {
       {"kmeans_segsum_clusters.comp", {sizeof(gpu::KmeansSumPush), 1}},
       {"shade_vsgls.comp", {sizeof(gpu::ShadePush), 2}},
       {"brsm_pdf.comp", {sizeof(gpu::BrsmPush), 2}},
+      {"visibility_segments.comp", {sizeof(gpu::VisibilityPush), 1}},
       {"scene.vert", {sizeof(gpu::RasterPush), 0}},
       {"capture.frag", {sizeof(gpu::RasterPush), 0}},
       {"test_division.comp", {sizeof(gpu::TestCountPush), 1}},
