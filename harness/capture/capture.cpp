@@ -1,5 +1,7 @@
 #include "harness/capture/capture.hpp"
 
+#include "harness/core/content_hash.hpp"
+
 #include <bit>
 #include <cstdio>
 
@@ -40,17 +42,6 @@ std::string plane_hash(const std::vector<float>& plane) {
   return bytes_hash(std::string_view(reinterpret_cast<const char*>(plane.data()), plane.size() * sizeof(float)));
 }
 
-std::string bytes_hash(std::string_view bytes) {
-  constexpr uint64_t kOffsetBasis = 14695981039346656037ull;
-  constexpr uint64_t kPrime = 1099511628211ull;
-  uint64_t hash = kOffsetBasis;
-  for (const char c : bytes) {
-    hash ^= static_cast<unsigned char>(c);
-    hash *= kPrime;
-  }
-  char text[8 + 16 + 1];
-  std::snprintf(text, sizeof text, "fnv1a64:%016llx", static_cast<unsigned long long>(hash));
-  return text;
-}
+std::string bytes_hash(std::string_view bytes) { return fnv1a64_text(bytes); }
 
 }  // namespace vsgl

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cstdio>
 
+#include "harness/core/content_hash.hpp"
 #include "harness/core/error.hpp"
 
 namespace vsgl {
@@ -25,18 +26,8 @@ std::string soup_content_hash(const TriangleSoup& soup) {
   // Over the little-endian bytes of the floats, x y z per vertex (glm::vec3 holds exactly those).
   static_assert(std::endian::native == std::endian::little);
   static_assert(sizeof(glm::vec3) == 3 * sizeof(float));
-  constexpr uint64_t kOffsetBasis = 14695981039346656037ull;
-  constexpr uint64_t kPrime = 1099511628211ull;
-  uint64_t hash = kOffsetBasis;
-  const auto* bytes = reinterpret_cast<const unsigned char*>(soup.vertices.data());
-  const std::size_t size = soup.vertices.size() * sizeof(glm::vec3);
-  for (std::size_t i = 0; i < size; ++i) {
-    hash ^= bytes[i];
-    hash *= kPrime;
-  }
-  char text[8 + 16 + 1];
-  std::snprintf(text, sizeof text, "fnv1a64:%016llx", static_cast<unsigned long long>(hash));
-  return text;
+  return fnv1a64_text(
+      std::string_view(reinterpret_cast<const char*>(soup.vertices.data()), soup.vertices.size() * sizeof(glm::vec3)));
 }
 
 }  // namespace vsgl

@@ -13,27 +13,14 @@
 
 #include <glm/glm.hpp>
 
+#include "harness/core/content_hash.hpp"
 #include "harness/core/error.hpp"
 #include "harness/scene/gltf_scene.hpp"
 
 namespace vsgl::gltf {
 
-// FNV-1a, 64 bit, over several byte ranges in turn.
-struct Fnv1a {
-  uint64_t h = 0xcbf29ce484222325ull;
-  void add(const void* data, std::size_t bytes) {
-    const auto* p = static_cast<const unsigned char*>(data);
-    for (std::size_t i = 0; i < bytes; ++i) {
-      h ^= p[i];
-      h *= 0x100000001b3ull;
-    }
-  }
-  std::string text() const {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "fnv1a64:%016llx", static_cast<unsigned long long>(h));
-    return buf;
-  }
-};
+// FNV-1a, 64 bit, over several byte ranges in turn (core/content_hash.hpp).
+using Fnv1a = Fnv1a64;
 
 inline std::string quote_name(const std::string& name) { return "'" + escape_name(name) + "'"; }
 
