@@ -79,6 +79,7 @@ const std::map<std::string, Expected>& kernels() {
       {"scene.vert", {sizeof(gpu::RasterPush), 0}},
       {"capture.frag", {sizeof(gpu::RasterPush), 0}},
       {"test_division.comp", {sizeof(gpu::TestCountPush), 1}},
+      {"test_ism_lookup.comp", {sizeof(gpu::IsmQueryPush), 1}},
       {"test_vsgl_math.comp", {sizeof(gpu::TestCountPush), 1}},
       {"test_workload.comp", {sizeof(gpu::TestWorkloadPush), 1}},
   };
