@@ -15,7 +15,7 @@ fi
 control=$1
 shift
 needles=(VSGL_TEST_PAUSE_AT VSGL_TEST_PAUSE_NOTIFY debug-slow debug_slowdown DebugSlow pause_at_write
-  test_workload.comp test_division.comp test_vsgl_math.comp)
+  test_workload.comp test_division.comp test_vsgl_math.comp test_ism_lookup.comp)
 failures=0
 for needle in "${needles[@]}"; do
   if ! grep -aqF -- "$needle" "$control"; then

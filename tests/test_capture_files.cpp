@@ -234,7 +234,7 @@ TEST(CaptureIo, RoundTripIsBitExact) {
 VisibilityGeometry small_geometry() {
   VisibilityGeometry g;
   g.triangle_vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {0, 1, 1.5f}};
-  g.points = {{{0.25f, 0.25f, 0}, {0, 0, 1}}, {{0.5f, 0.25f, 1}, {0, 0, -1}}, {{0.1f, 0.7f, 0}, {0, 0, 1}}};
+  g.points = {{{0.25f, 0.25f, 0}, {0, 0, 1}, 0}, {{0.5f, 0.25f, 1}, {0, 0, -1}, 1}, {{0.1f, 0.7f, 0}, {0, 0, 1}, 0}};
   g.point_seed = 0x1234567890abcdefull;
   return g;
 }
@@ -256,7 +256,7 @@ TEST(CaptureIo, VisibilityGeometryRoundTripsThroughTheSidecar) {
   std::ifstream in(temp.path() / kVisibilityGeometryFile, std::ios::binary);
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   EXPECT_EQ(sidecar["visibility_geometry"]["hash"], bytes_hash(bytes));
-  EXPECT_EQ(bytes.size(), 40u + 2 * 36 + 3 * 24);
+  EXPECT_EQ(bytes.size(), 40u + 2 * 36 + 3 * 28);
 
   const Capture loaded = load_capture(temp.path());
   EXPECT_FALSE(loaded.visibility_geometry);  // read only by the commands that shade with visibility
@@ -267,6 +267,7 @@ TEST(CaptureIo, VisibilityGeometryRoundTripsThroughTheSidecar) {
   for (std::size_t i = 0; i < want.points.size(); ++i) {
     EXPECT_EQ(back.points[i].position, want.points[i].position);
     EXPECT_EQ(back.points[i].normal, want.points[i].normal);
+    EXPECT_EQ(back.points[i].triangle, want.points[i].triangle);
   }
   EXPECT_EQ(back.point_seed, want.point_seed);
 
@@ -320,6 +321,10 @@ TEST(CaptureIo, VisibilityGeometryMissingOrDamagedIsRefused) {
   bad = small_geometry();
   bad.points[2].normal = {0, 0, 2};
   expect_input_error([&] { decode_visibility_geometry(encode_visibility_geometry(bad), where); }, {"point 2", "unit"});
+  bad = small_geometry();
+  bad.points[0].triangle = 2;  // the file holds triangles 0 and 1
+  expect_input_error([&] { decode_visibility_geometry(encode_visibility_geometry(bad), where); },
+                     {"point 0", "triangle 2", "holds 2"});
   bad = small_geometry();
   bad.triangle_vertices[4].x = std::numeric_limits<float>::infinity();
   expect_input_error([&] { decode_visibility_geometry(encode_visibility_geometry(bad), where); },

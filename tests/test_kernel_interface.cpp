@@ -18,6 +18,7 @@
 #include "harness/vk/spirv_reflection.hpp"
 #include "kernels/include/interface/brsm.h"
 #include "kernels/include/interface/fis.h"
+#include "kernels/include/interface/ism.h"
 #include "kernels/include/interface/kmeans.h"
 #include "kernels/include/interface/raster.h"
 #include "kernels/include/interface/shading.h"
@@ -74,9 +75,13 @@ const std::map<std::string, Expected>& kernels() {
       {"shade_vsgls.comp", {sizeof(gpu::ShadePush), 2}},
       {"brsm_pdf.comp", {sizeof(gpu::BrsmPush), 2}},
       {"visibility_segments.comp", {sizeof(gpu::VisibilityPush), 1}},
+      {"ism_splat.comp", {sizeof(gpu::IsmParams), 1}},
+      {"ism_pull.comp", {sizeof(gpu::IsmPyramidPush), 1}},
+      {"ism_push.comp", {sizeof(gpu::IsmPyramidPush), 1}},
       {"scene.vert", {sizeof(gpu::RasterPush), 0}},
       {"capture.frag", {sizeof(gpu::RasterPush), 0}},
       {"test_division.comp", {sizeof(gpu::TestCountPush), 1}},
+      {"test_ism_lookup.comp", {sizeof(gpu::IsmQueryPush), 1}},
       {"test_vsgl_math.comp", {sizeof(gpu::TestCountPush), 1}},
       {"test_workload.comp", {sizeof(gpu::TestWorkloadPush), 1}},
   };

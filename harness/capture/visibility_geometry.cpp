@@ -19,7 +19,7 @@ constexpr char kMagic[8] = {'V', 'S', 'G', 'L', 'V', 'I', 'S', '1'};
 constexpr uint32_t kVersion = 1;
 constexpr std::size_t kHeaderBytes = 8 + 4 + 4 + 3 * 8;
 constexpr std::size_t kTriangleBytes = 9 * sizeof(float);
-constexpr std::size_t kPointBytes = 6 * sizeof(float);
+constexpr std::size_t kPointBytes = 6 * sizeof(float) + sizeof(uint32_t);
 // Normals are written as unit vectors in float32; anything further off was not written by us.
 constexpr float kUnitTolerance = 1e-3f;
 
@@ -61,6 +61,7 @@ std::string encode_visibility_geometry(const VisibilityGeometry& g) {
   for (const SurfacePoint& p : g.points) {
     put(out, p.position);
     put(out, p.normal);
+    put(out, p.triangle);
   }
   return out;
 }
@@ -95,9 +96,13 @@ VisibilityGeometry decode_visibility_geometry(std::span<const char> bytes, const
     SurfacePoint& p = g.points[i];
     p.position = take_vec3(bytes, at);
     p.normal = take_vec3(bytes, at);
+    p.triangle = take<uint32_t>(bytes, at);
     if (!finite(p.position) || !finite(p.normal) || std::abs(glm::length(p.normal) - 1.0f) > kUnitTolerance)
       throw InputError(where + ": point " + std::to_string(i) +
                        " has a position or normal that is not finite, or a normal not of unit length");
+    if (p.triangle >= triangles)
+      throw InputError(where + ": point " + std::to_string(i) + " lies on triangle " + std::to_string(p.triangle) +
+                       ", but the file holds " + std::to_string(triangles));
   }
   return g;
 }

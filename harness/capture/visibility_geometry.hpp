@@ -13,17 +13,13 @@
 
 #include <glm/glm.hpp>
 
+#include "harness/math/surface_point.hpp"
+
 namespace vsgl {
 
 struct CaptureMeta;
 
 inline constexpr const char* kVisibilityGeometryFile = "visibility_geometry.bin";
-
-// A point on the scene's surface and the geometric normal of the triangle it was drawn on.
-struct SurfacePoint {
-  glm::vec3 position{0.0f};
-  glm::vec3 normal{0.0f, 0.0f, 1.0f};
-};
 
 struct VisibilityGeometry {
   std::vector<glm::vec3> triangle_vertices;  // world space, three per triangle
@@ -42,10 +38,12 @@ struct VisibilityGeometryRecord {
 };
 
 // The file's bytes: the magic "VSGLVIS1", a uint32 version (1) and a zero uint32, the uint64
-// triangle count, point count and seed, then 9 floats per triangle and 6 per point.
+// triangle count, point count and seed, then 9 floats per triangle, and per point 6 floats
+// (position, normal) and the uint32 index of its triangle.
 std::string encode_visibility_geometry(const VisibilityGeometry& geometry);
 // Throws InputError naming `where` for a short or long file, a wrong magic or version, or a
-// position or normal that is not finite or a normal that is not of unit length.
+// position or normal that is not finite, a normal that is not of unit length, or a point whose
+// triangle is not in the file.
 VisibilityGeometry decode_visibility_geometry(std::span<const char> bytes, const std::string& where);
 
 // The sidecar's record of `geometry` written as `encoded` (its encode_visibility_geometry bytes):

@@ -53,7 +53,7 @@ void write_seed(const std::filesystem::path& out_dir, const std::string& name, b
   if (geometry) {
     vsgl::VisibilityGeometry g;
     g.triangle_vertices = {{0, 0, -2}, {2, 0, -2}, {0, 2, -2}, {0, 0, 0}, {0, 2, 0}, {2, 0, 0}};
-    g.points = {{{0.5f, 0.5f, -2}, {0, 0, 1}}, {{0.25f, 0.5f, 0}, {0, 0, -1}}};
+    g.points = {{{0.5f, 0.5f, -2}, {0, 0, 1}, 0}, {{0.25f, 0.5f, 0}, {0, 0, -1}, 1}};
     g.point_seed = 7;
     c.visibility_geometry = std::move(g);
   }
