@@ -11,6 +11,11 @@
 #include "gpu_test.hpp"
 #include "harness/capture/capture.hpp"
 #include "harness/capture/capture_files.hpp"
+#include "harness/capture/visibility_geometry.hpp"
+#include "harness/core/error.hpp"
+#include "harness/scene/capture_recorder.hpp"
+#include "harness/scene/scene.hpp"
+#include "harness/scene/visibility_recording.hpp"
 #include "test_support.hpp"
 
 namespace vsgl {
@@ -86,6 +91,37 @@ TEST(Cli, RecordWritesALoadableCaptureWithItsBrsmPdf) {
   // The BRSM PDF is recorded data, built on the buffer pyramid wherever it binds (DESIGN.md §8).
   EXPECT_EQ(c.meta.brsm_pyramid, PyramidPath::kBuffer);
   EXPECT_NE(r.output.find("camera VSGLs on the buffer pyramid"), std::string::npos) << r.output;
+  // One frame stores the visibility geometry (DESIGN.md §3, §8a) by default: every triangle of the
+  // scene and 2^20 points on them, the same as the library draws from the same scene and seed.
+  ASSERT_TRUE(c.meta.visibility_geometry) << r.output;
+  const VisibilityGeometry g = load_visibility_geometry(dir, c.meta);
+  const Scene tiny = make_scene("tiny");
+  EXPECT_EQ(g.triangle_count(), tiny.mesh.indices.size() / 3);
+  EXPECT_EQ(g.points.size(), kDefaultVisibilityPoints);
+  const VisibilityGeometry want = scene_visibility_geometry(tiny, kDefaultVisibilityPoints, kVisibilityPointSeed);
+  EXPECT_EQ(g.triangle_vertices, want.triangle_vertices);
+  EXPECT_EQ(g.points.back().position, want.points.back().position);
+  EXPECT_NE(r.output.find("visibility geometry: " + std::to_string(g.triangle_count()) + " triangles, 1048576 points"),
+            std::string::npos)
+      << r.output;
+}
+
+// --visibility-points sets the count, 0 stores none: such a capture is refused by what shades
+// with visibility, naming the option.
+TEST(Cli, RecordVisibilityPointsSetsOrDropsTheGeometry) {
+  const test::TempDir dir_temp("cli_record_points");
+  const std::filesystem::path& dir = dir_temp.path();
+  auto r = run_cli("record --scene tiny --gbuffer 48x32 --rsm 16 --visibility-points 4096 --out " + dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  Capture c = load_capture(dir);
+  ASSERT_TRUE(c.meta.visibility_geometry);
+  EXPECT_EQ(load_visibility_geometry(dir, c.meta).points.size(), 4096u);
+  r = run_cli("record --scene tiny --gbuffer 48x32 --rsm 16 --visibility-points 0 --out " + dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  c = load_capture(dir);
+  EXPECT_FALSE(c.meta.visibility_geometry);
+  EXPECT_FALSE(std::filesystem::exists(dir / kVisibilityGeometryFile));
+  EXPECT_THROW(load_visibility_geometry(dir, c.meta), InputError);
 }
 
 TEST(Cli, RecordAnimatedSequenceWritesOneCapturePerFrame) {
@@ -98,6 +134,7 @@ TEST(Cli, RecordAnimatedSequenceWritesOneCapturePerFrame) {
   EXPECT_EQ(f2.meta.frame, 2u);
   EXPECT_EQ(f2.meta.frames, 3u);
   EXPECT_NE(f0.meta.light.position, f2.meta.light.position);
+  EXPECT_FALSE(f0.meta.visibility_geometry);  // a sequence stores none unless asked
 }
 
 TEST(Cli, BadInvocationsExitWithTheDocumentedCodes) {

@@ -78,6 +78,9 @@ struct RecordOptions {
   uint32_t rsm = 512;
   bool sizes_given = false;  // --gbuffer or --rsm: else a preset's own sizes
   uint32_t frames = 1;
+  // Points of the visibility geometry; unset: kDefaultVisibilityPoints for one frame, none for a
+  // sequence (its frames share the scene's triangles, and 28 MiB a frame adds up).
+  std::optional<uint32_t> visibility_points;
   bool ground = false;
   GltfCameraChoice camera;
   GltfLightChoice light;
@@ -93,6 +96,10 @@ void print_recorded(const std::string& name, const std::filesystem::path& dir, u
       name.c_str(), f + 1, frames, path_text(dir).c_str(), sizes.gbuffer_width, sizes.gbuffer_height, sizes.rsm_size,
       r.render_and_brsm_ms, r.brsm_gpu_ms, r.brsm_camera_vsgls, path ? pyramid_path_name(*path) : "unrecorded",
       r.write_ms, static_cast<double>(directory_bytes(dir)) / (1 << 20));
+  if (const auto& g = r.capture.meta.visibility_geometry)
+    std::printf("  visibility geometry: %llu triangles, %llu points (%s)\n",
+                static_cast<unsigned long long>(g->triangles), static_cast<unsigned long long>(g->points),
+                g->hash.c_str());
 }
 
 std::filesystem::path frame_dir(const std::filesystem::path& base, uint32_t f, uint32_t frames) {
@@ -110,9 +117,13 @@ void print_import(const GltfImport& import, double import_ms) {
   for (const std::string& note : import.notes) std::printf("  note: %s\n", note.c_str());
 }
 
+uint32_t visibility_points(const RecordOptions& o) {
+  return o.visibility_points.value_or(o.frames == 1 ? kDefaultVisibilityPoints : 0u);
+}
+
 // A user's file (--model, --gltf): its frames recorded into OUT or captures/<its scene name>.
 int record_model_file(RecordOptions& o, GpuSession& session, const std::string& file, bool any_format) {
-  const RecordSizes sizes{o.gbuffer.first, o.gbuffer.second, o.rsm};
+  const RecordSizes sizes{o.gbuffer.first, o.gbuffer.second, o.rsm, visibility_points(o)};
   const auto t0 = std::chrono::steady_clock::now();
   const GltfImport import = any_format ? import_model(path_from_utf8(file), o.camera, o.light, o.ground)
                                        : import_gltf(path_from_utf8(file), o.camera, o.light, o.ground);
@@ -165,8 +176,9 @@ int run_record(RecordOptions& o) {
       std::printf("scene %s: %s\n", name.c_str(), scene.preset->description.c_str());
       print_import(*scene.import, scene.import_ms);
     }
-    const RecordSizes sizes =
+    RecordSizes sizes =
         o.sizes_given || !scene.preset ? RecordSizes{o.gbuffer.first, o.gbuffer.second, o.rsm} : scene.default_sizes;
+    sizes.visibility_points = visibility_points(o);
     const std::filesystem::path base = o.out ? path_from_utf8(*o.out) : std::filesystem::path("captures") / name;
     for (uint32_t f = 0; f < o.frames; ++f) {
       const auto dir = frame_dir(base, f, o.frames);
@@ -214,6 +226,10 @@ Command add_record_command(CLI::App& parent) {
   app->add_option("--frames", o->frames, "animated sequence of F frames (moving light and camera) in DIR/frame_NNNN")
       ->check(at_least(1))
       ->capture_default_str();
+  add_optional(*app, "--visibility-points", o->visibility_points,
+               "points of the scene's surface stored with the capture for shading with visibility, beside its "
+               "triangles (DESIGN.md §8a; 0: none, and such a capture shades with --visibility none only)")
+      ->default_str(std::to_string(kDefaultVisibilityPoints) + " for one frame, 0 for --frames > 1");
   CLI::App* view = app->add_option_group("glTF view", "camera and light of a --gltf file");
   std::vector<CLI::Option*> gltf_only{
       add_optional(*view, "--camera", o->camera.camera, "the file's camera, by name or index")

@@ -9,6 +9,7 @@
 #include "harness/core/sorted_json.hpp"
 #include "harness/scene/brsm_pdf.hpp"
 #include "harness/scene/scene.hpp"
+#include "harness/scene/visibility_recording.hpp"
 
 namespace vsgl {
 
@@ -45,6 +46,8 @@ RecordedCapture record_capture(Device& device, const Scene& scene, const RecordS
   CaptureRecorder recorder(device);
   out.capture = recorder.record(scene, sizes, frame, frames);
   out.capture.meta.source = source;
+  if (sizes.visibility_points > 0)
+    out.capture.visibility_geometry = scene_visibility_geometry(scene, sizes.visibility_points, kVisibilityPointSeed);
   refuse_empty_views(out.capture, scene.name, false);
   const BrsmBuild brsm = build_brsm_pdf(device, out.capture);  // DESIGN.md §8: once per capture
   refuse_empty_views(out.capture, scene.name, true);
