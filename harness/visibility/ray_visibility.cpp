@@ -16,6 +16,18 @@ void require_at_most(uint64_t asked, uint64_t limit, const char* limit_name, con
                            " bytes, and the device allows " + std::to_string(limit) + " (" + limit_name + ")");
 }
 
+// Each of the two buffers against maxStorageBufferRange and maxMemoryAllocationSize.
+void require_each_buffer_fits(const VisibilityLimits& limits, uint64_t node_bytes, uint64_t triangle_bytes,
+                              const std::string& device_name) {
+  const std::string nodes = "the BVH's node buffer", triangles = "the BVH's triangle buffer";
+  require_at_most(node_bytes, limits.storage_buffer_range, "maxStorageBufferRange", nodes, device_name);
+  require_at_most(triangle_bytes, limits.storage_buffer_range, "maxStorageBufferRange", triangles, device_name);
+  if (limits.max_allocation != 0) {
+    require_at_most(node_bytes, limits.max_allocation, "maxMemoryAllocationSize", nodes, device_name);
+    require_at_most(triangle_bytes, limits.max_allocation, "maxMemoryAllocationSize", triangles, device_name);
+  }
+}
+
 }  // namespace
 
 VisibilityLimits visibility_limits(const DeviceInfo& info) {
@@ -34,15 +46,17 @@ uint32_t visibility_chunk_queries(const VisibilityLimits& limits) {
   return static_cast<uint32_t>(chunk);
 }
 
+void require_bvh_buffers_fit(const VisibilityLimits& limits, uint64_t node_bytes, uint64_t triangle_bytes,
+                             const std::string& device_name) {
+  require_each_buffer_fits(limits, node_bytes, triangle_bytes, device_name);
+  if (limits.device_local_bytes != 0)
+    require_at_most(node_bytes + triangle_bytes, limits.device_local_bytes, "the device-local heap",
+                    "the BVH and its triangles", device_name);
+}
+
 void require_visibility_buffers_fit(const VisibilityLimits& limits, uint64_t node_bytes, uint64_t triangle_bytes,
                                     const std::string& device_name) {
-  const std::string nodes = "the BVH's node buffer", triangles = "the BVH's triangle buffer";
-  require_at_most(node_bytes, limits.storage_buffer_range, "maxStorageBufferRange", nodes, device_name);
-  require_at_most(triangle_bytes, limits.storage_buffer_range, "maxStorageBufferRange", triangles, device_name);
-  if (limits.max_allocation != 0) {
-    require_at_most(node_bytes, limits.max_allocation, "maxMemoryAllocationSize", nodes, device_name);
-    require_at_most(triangle_bytes, limits.max_allocation, "maxMemoryAllocationSize", triangles, device_name);
-  }
+  require_each_buffer_fits(limits, node_bytes, triangle_bytes, device_name);
   const uint32_t chunk = visibility_chunk_queries(limits);
   if (chunk == 0)
     throw DeviceLimitError(device_name + " cannot bind one segment query (" +

@@ -38,8 +38,14 @@ VisibilityLimits visibility_limits(const DeviceInfo& info);
 uint32_t visibility_chunk_queries(const VisibilityLimits& limits);
 
 // Throws DeviceLimitError, naming the device, the buffer, the limit, its value and the bytes asked,
-// where the node or triangle buffer exceeds maxStorageBufferRange or maxMemoryAllocationSize,
-// not one query fits a dispatch, or the four buffers together exceed the device-local heap.
+// where the node or triangle buffer exceeds maxStorageBufferRange or maxMemoryAllocationSize, or
+// the two together the device-local heap: the check of a kernel that binds the BVH and makes its
+// own segments (the shading pass's exact visibility, DESIGN.md §8.1).
+void require_bvh_buffers_fit(const VisibilityLimits& limits, uint64_t node_bytes, uint64_t triangle_bytes,
+                             const std::string& device_name);
+// The same for RayVisibility: DeviceLimitError where the node or triangle buffer exceeds
+// maxStorageBufferRange or maxMemoryAllocationSize, not one query fits a dispatch, or the four
+// buffers together exceed the device-local heap.
 void require_visibility_buffers_fit(const VisibilityLimits& limits, uint64_t node_bytes, uint64_t triangle_bytes,
                                     const std::string& device_name);
 
