@@ -73,6 +73,8 @@ const std::map<std::string, Expected>& kernels() {
       {"kmeans_segsum_pieces.comp", {sizeof(gpu::KmeansSumPush), 1}},
       {"kmeans_segsum_clusters.comp", {sizeof(gpu::KmeansSumPush), 1}},
       {"shade_vsgls.comp", {sizeof(gpu::ShadePush), 2}},
+      {"shade_vsgls_ism.comp", {sizeof(gpu::ShadeVisibilityPush), 2}},
+      {"shade_vsgls_exact.comp", {sizeof(gpu::ShadeVisibilityPush), 2}},
       {"brsm_pdf.comp", {sizeof(gpu::BrsmPush), 2}},
       {"visibility_segments.comp", {sizeof(gpu::VisibilityPush), 1}},
       {"ism_splat.comp", {sizeof(gpu::IsmParams), 1}},

@@ -9,6 +9,8 @@
 #include "harness/vk/device.hpp"
 #include "harness/generators/device_view.hpp"
 #include "harness/core/error.hpp"
+#include "harness/quality/shading_visibility.hpp"
+#include "harness/visibility/imperfect_shadow_maps.hpp"
 #include "kernels/include/interface/shading.h"
 
 namespace vsgl {
@@ -18,6 +20,23 @@ uint32_t shade_chunk_vsgls(uint64_t pixels) {
   const uint64_t tile = uint64_t{gpu::kShadeGroupSize} * gpu::kShadeGroupSize;
   const uint64_t fit = kShadeEvaluationsPerDispatch / std::max<uint64_t>(pixels, 1);
   return static_cast<uint32_t>(std::max(tile, fit / tile * tile));
+}
+
+uint32_t shade_cost_factor(ShadingVisibility mode) {
+  switch (mode) {
+    case ShadingVisibility::kIsm: return kShadeIsmCostFactor;
+    case ShadingVisibility::kExact: return kShadeExactCostFactor;
+    case ShadingVisibility::kNone: break;
+  }
+  return 1;
+}
+
+uint32_t shade_chunk_vsgls(uint64_t pixels, ShadingVisibility mode) {
+  if (mode == ShadingVisibility::kNone) return shade_chunk_vsgls(pixels);
+  const uint64_t tile = uint64_t{gpu::kShadeGroupSize} * gpu::kShadeGroupSize;
+  const uint64_t fit = kShadeEvaluationsPerDispatch / shade_cost_factor(mode) / std::max<uint64_t>(pixels, 1);
+  const uint64_t chunk = fit >= tile ? fit / tile * tile : std::max<uint64_t>(fit, 1);
+  return static_cast<uint32_t>(std::min<uint64_t>(chunk, UINT32_MAX));
 }
 
 uint32_t binding_window_vsgls(const Device& device, uint32_t vsgl_count, uint32_t chunk, uint32_t vsgls_per_binding) {
@@ -40,6 +59,13 @@ uint32_t binding_window_vsgls(const Device& device, uint32_t vsgl_count, uint32_
 
 RadianceImage shade_camera_view(Device& device, const DeviceView& camera, const Buffer& vsgls, uint32_t vsgl_count,
                                 uint32_t stride, uint32_t vsgls_per_dispatch, uint32_t vsgls_per_binding) {
+  return shade_camera_view(device, camera, vsgls, vsgl_count, stride, ShadeVisibility{}, vsgls_per_dispatch,
+                           vsgls_per_binding);
+}
+
+RadianceImage shade_camera_view(Device& device, const DeviceView& camera, const Buffer& vsgls, uint32_t vsgl_count,
+                                uint32_t stride, const ShadeVisibility& visibility, uint32_t vsgls_per_dispatch,
+                                uint32_t vsgls_per_binding) {
   if (stride == 0) throw InputError("shading pass: the stride must be at least 1");
   if (camera.kind != ViewKind::kCamera)
     throw InputError("shading pass: it shades the camera view (G-buffer), not the " + camera.label);
@@ -51,10 +77,32 @@ RadianceImage shade_camera_view(Device& device, const DeviceView& camera, const 
   image.width = shaded_extent(camera.square.width, stride);
   image.height = shaded_extent(camera.square.height, stride);
   const std::size_t count = std::size_t{image.width} * image.height;
-  const uint32_t chunk = vsgls_per_dispatch != 0 ? vsgls_per_dispatch : shade_chunk_vsgls(count);
+  const ShadingVisibility mode = visibility.mode;
+  gpu::ShadeVisibilityParams vis{};
+  std::vector<BufferBinding> occluder_bindings;
+  const char* kernel = "shade_vsgls.comp";
+  uint32_t push_bytes = sizeof(gpu::ShadePush);
+  if (mode == ShadingVisibility::kIsm) {
+    if (visibility.maps == nullptr || visibility.maps->map_count() < vsgl_count)
+      throw InputError("shading pass: shading " + std::to_string(vsgl_count) +
+                       " VSGLs with imperfect shadow maps needs one map per VSGL");
+    vis.ism = visibility.maps->params();
+    occluder_bindings = {visibility.maps->maps()};
+    kernel = "shade_vsgls_ism.comp";
+  } else if (mode == ShadingVisibility::kExact) {
+    if (visibility.occluders == nullptr)
+      throw InputError("shading pass: exact visibility needs the occluders on the device");
+    vis.node_count = visibility.occluders->node_count();
+    vis.epsilon = visibility.occluders->epsilon();
+    // Bindings 3 and 4 need a buffer even where nothing occludes (node_count 0: never read).
+    occluder_bindings = {visibility.occluders->nodes(), visibility.occluders->triangles()};
+    kernel = "shade_vsgls_exact.comp";
+  }
+  if (mode != ShadingVisibility::kNone) push_bytes = sizeof(gpu::ShadeVisibilityPush);
+  const uint32_t chunk = vsgls_per_dispatch != 0 ? vsgls_per_dispatch : shade_chunk_vsgls(count, mode);
 
   Buffer radiance(device, count * sizeof(glm::vec4), MemoryUsage::kDeviceLocal, "shade.radiance");
-  ComputePipeline pipeline(device, {"shade_vsgls.comp", 3, sizeof(gpu::ShadePush),
+  ComputePipeline pipeline(device, {kernel, static_cast<uint32_t>(3 + occluder_bindings.size()), push_bytes,
                                     work_group_size_2d(gpu::kShadeGroupSize, gpu::kShadeGroupSize)});
   const uint32_t window = binding_window_vsgls(device, vsgl_count, chunk, vsgls_per_binding);
   // One binding of at most `window` VSGLs at a time (the records past maxStorageBufferRange cannot
@@ -67,7 +115,8 @@ RadianceImage shade_camera_view(Device& device, const DeviceView& camera, const 
                    buffer_bindings({camera.layers(),
                                     {BufferBinding(vsgls, VkDeviceSize{window_first} * sizeof(VsglRecord),
                                                    VkDeviceSize{window_count} * sizeof(VsglRecord))},
-                                    {radiance}}),
+                                    {radiance},
+                                    occluder_bindings}),
                    "shade.set");
     for (uint32_t first = window_first; first < window_first + window_count; first += chunk) {
       const uint32_t n = std::min(chunk, window_first + window_count - first);
@@ -80,13 +129,21 @@ RadianceImage shade_camera_view(Device& device, const DeviceView& camera, const 
                                 first - window_first,
                                 first == 0 ? 0u : 1u,
                                 glm::vec4(camera.source_position, 1.0f)};
+      // The maps follow the VSGLs' order: the binding's first VSGL has map window_first.
+      vis.map_first = window_first;
+      const gpu::ShadeVisibilityPush visibility_push{push, vis};
       device.submit_and_wait(
           [&](VkCommandBuffer cmd) {
             CommandStream stream(cmd);
             // The VSGLs (and an earlier chunk's sums) were written by an earlier submission.
             stream.full_barrier();
-            stream.dispatch(pipeline, set, push, div_up(image.width, gpu::kShadeGroupSize),
-                            div_up(image.height, gpu::kShadeGroupSize));
+            const uint32_t groups_x = div_up(image.width, gpu::kShadeGroupSize);
+            const uint32_t groups_y = div_up(image.height, gpu::kShadeGroupSize);
+            if (mode == ShadingVisibility::kNone) {
+              stream.dispatch(pipeline, set, push, groups_x, groups_y);
+            } else {
+              stream.dispatch(pipeline, set, visibility_push, groups_x, groups_y);
+            }
           },
           "shading pass");
     }
@@ -106,6 +163,24 @@ glm::vec4 shade_pixel_reference(const ViewImage& gbuffer, uint32_t x, uint32_t y
   const glm::vec3 wo = glm::normalize(camera_position - P);
   glm::vec3 sum(0.0f);
   for (const VsglRecord& v : vsgls) sum += vsgl_radiance_surface(v, P, N, wo, rho_d, rho_s, roughness);
+  return glm::vec4(sum, 1.0f);
+}
+
+glm::vec4 shade_pixel_reference(const ViewImage& gbuffer, uint32_t x, uint32_t y, glm::vec3 camera_position,
+                                const std::vector<VsglRecord>& vsgls, const VsglVisibility& visibility) {
+  if (gbuffer.at(kValid, x, y) <= 0.5f) return glm::vec4(0.0f);
+  const glm::vec3 P(gbuffer.at(kPX, x, y), gbuffer.at(kPY, x, y), gbuffer.at(kPZ, x, y));
+  const glm::vec3 N(gbuffer.at(kNX, x, y), gbuffer.at(kNY, x, y), gbuffer.at(kNZ, x, y));
+  const glm::vec3 rho_d(gbuffer.at(kDR, x, y), gbuffer.at(kDG, x, y), gbuffer.at(kDB, x, y));
+  const glm::vec3 rho_s(gbuffer.at(kSR, x, y), gbuffer.at(kSG, x, y), gbuffer.at(kSB, x, y));
+  const float roughness = gbuffer.at(kRoughness, x, y);
+  const glm::vec3 wo = glm::normalize(camera_position - P);
+  glm::vec3 sum(0.0f);
+  for (uint32_t n = 0; n < vsgls.size(); ++n) {
+    glm::vec3 L = vsgl_radiance_surface(vsgls[n], P, N, wo, rho_d, rho_s, roughness);
+    if (L.r + L.g + L.b > 0.0f) L *= visibility(n, P, N);
+    sum += L;
+  }
   return glm::vec4(sum, 1.0f);
 }
 

@@ -3,6 +3,7 @@
 #ifndef VSGL_INTERFACE_SHADING_H
 #define VSGL_INTERFACE_SHADING_H
 #include "interop.h"
+#include "ism.h"
 
 VSGL_INTERFACE_BEGIN
 
@@ -28,6 +29,22 @@ struct ShadePush {
 };
 VSGL_LAYOUT(ShadePush, 48);
 VSGL_VEC4_AT(ShadePush, camera_position, 32);
+
+// What the variants with visibility read beside ShadePush (shade_vsgls_ism.comp, _exact.comp;
+// DESIGN.md §8.1): their push block is { ShadePush pc; ShadeVisibilityParams vis; }.
+struct ShadeVisibilityParams {
+  IsmParams ism;    // ism: the maps' parameters (interface/ism.h)
+  uint map_first;   // ism: the map of the binding's first VSGL (maps follow the VSGLs' order)
+  uint node_count;  // exact: the BVH's nodes (0: nothing occludes)
+  float epsilon;    // exact: crossings within this distance (world units) of either end do not count
+};
+VSGL_LAYOUT(ShadeVisibilityParams, 48);
+
+struct ShadeVisibilityPush {
+  ShadePush shade;
+  ShadeVisibilityParams vis;
+};
+VSGL_LAYOUT(ShadeVisibilityPush, 96);
 
 VSGL_INTERFACE_END
 
