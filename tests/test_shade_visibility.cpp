@@ -3,20 +3,24 @@
 // wall; one occluder between one VSGL and the receivers (exact and ISM give that VSGL nothing,
 // and without the occluder everything it gives without visibility); the ISM variant against the
 // lookup kernel of the maps (test_ism_lookup.comp) and against exact; chunking, the device's
-// limits.
+// limits, and `vsgl-bench shade --visibility`.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <map>
 #include <string>
 #include <vector>
 
+#include "cli_runner.hpp"
 #include "gpu_test.hpp"
 #include "harness/core/error.hpp"
 #include "harness/generators/device_view.hpp"
 #include "harness/generators/fis/fis_generator.hpp"
+#include "harness/quality/png_image.hpp"
 #include "harness/quality/shading_pass.hpp"
 #include "harness/quality/shading_visibility.hpp"
 #include "harness/scene/brsm_pdf.hpp"
@@ -445,6 +449,107 @@ TEST(ShadeVisibilityNames, RoundTripAndRefuseOthers) {
   TriangleSoup soup{{{0.0f, 0.0f, 0.0f}, {3.0f, 0.0f, 0.0f}, {0.0f, 4.0f, 0.0f}}};
   EXPECT_FLOAT_EQ(exact_visibility_epsilon(soup), 5.0f * kExactVisibilityEpsilon);
   EXPECT_EQ(exact_visibility_epsilon(TriangleSoup{}), 0.0f);
+}
+
+// `vsgl-bench shade --visibility` as a user meets it.
+class ShadeVisibilityCli : public ::testing::Test {
+ protected:
+  static std::string validate() { return test::test_validation() ? " --validate" : ""; }
+  static bool has_files(const std::filesystem::path& dir) {
+    return std::filesystem::exists(dir) && !std::filesystem::is_empty(dir);
+  }
+};
+
+TEST_F(ShadeVisibilityCli, ExactWritesItsPictureAndSaysSo) {
+  const test::TempDir dir_temp("cli_shade_visibility");
+  const std::filesystem::path& dir = dir_temp.path();
+  const auto capture = dir / "tiny";
+  const auto rec = test::run_cli("record --scene tiny --gbuffer 96x64 --rsm 32 --out " + capture.string());
+  ASSERT_EQ(rec.exit_code, 0) << rec.output;
+  const std::string shade =
+      "shade --capture " + capture.string() + " --vsgls 64 --stride 2 --generators fis_tok15" + validate();
+  const auto exact = test::run_cli(shade + " --visibility exact --out " + (dir / "exact").string());
+  ASSERT_EQ(exact.exit_code, 0) << exact.output;
+  EXPECT_NE(exact.output.find("visibility exact"), std::string::npos) << exact.output;
+  const auto read = [](const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::vector<char>((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  };
+  const auto exact_png = read(dir / "exact" / "shade_tiny_fis_tok15.png");
+  ASSERT_FALSE(exact_png.empty()) << exact.output;
+  const Rgb8Image picture = decode_png(exact_png, "exact");
+  EXPECT_EQ(picture.width, 48u);
+  EXPECT_EQ(picture.height, 32u);
+
+  // The default is the paper's: ISM, its settings named; --ism-side changes them.
+  const auto ism = test::run_cli(shade + " --ism-side 32 --out " + (dir / "ism").string());
+  ASSERT_EQ(ism.exit_code, 0) << ism.output;
+  EXPECT_NE(ism.output.find("visibility ism (imperfect shadow maps of 32x32, 8192 points per map"), std::string::npos)
+      << ism.output;
+  const auto none = test::run_cli(shade + " --visibility none --out " + (dir / "none").string());
+  ASSERT_EQ(none.exit_code, 0) << none.output;
+  EXPECT_NE(none.output.find("no visibility"), std::string::npos) << none.output;
+  EXPECT_NE(read(dir / "none" / "shade_tiny_fis_tok15.png"), exact_png) << "exact visibility changed nothing";
+}
+
+TEST_F(ShadeVisibilityCli, ACaptureWithoutVisibilityGeometryIsRefused) {
+  const test::TempDir dir_temp("cli_shade_no_geometry");
+  const std::filesystem::path& dir = dir_temp.path();
+  const auto capture = dir / "tiny";
+  const auto rec =
+      test::run_cli("record --scene tiny --gbuffer 48x32 --rsm 32 --visibility-points 0 --out " + capture.string());
+  ASSERT_EQ(rec.exit_code, 0) << rec.output;
+  const std::string shade = "shade --capture " + capture.string() + " --vsgls 16 --stride 2" + validate();
+  for (const char* mode : {"ism", "exact"}) {
+    SCOPED_TRACE(mode);
+    const auto refused = test::run_cli(shade + " --visibility " + mode + " --out " + (dir / mode).string());
+    EXPECT_EQ(refused.exit_code, 3) << refused.output;
+    EXPECT_NE(refused.output.find("--visibility-points"), std::string::npos) << refused.output;
+    EXPECT_NE(refused.output.find("--visibility none"), std::string::npos) << refused.output;
+    EXPECT_FALSE(has_files(dir / mode)) << "a refused run wrote files";
+  }
+  const auto none = test::run_cli(shade + " --visibility none --out " + (dir / "none").string());
+  EXPECT_EQ(none.exit_code, 0) << none.output;
+  EXPECT_TRUE(has_files(dir / "none"));
+}
+
+TEST_F(ShadeVisibilityCli, BadSettingsAreUsageErrorsAndMapsBeyondTheDeviceAreRefused) {
+  const test::TempDir dir_temp("cli_shade_settings");
+  const std::filesystem::path& dir = dir_temp.path();
+  const std::string shade = "shade --capture " + (dir / "nowhere").string() + " --out " + (dir / "out").string();
+  for (const std::string& bad :
+       {std::string("--ism-side 63"), std::string("--ism-side 8192"), std::string("--ism-side x"),
+        std::string("--ism-points-per-map 0"), std::string("--ism-bias 1"), std::string("--ism-bias -0.1"),
+        std::string("--ism-normal-offset -1"), std::string("--ism-pcf-radius 9"), std::string("--visibility shadows"),
+        std::string("--visibility exact --ism-side 32")}) {
+    SCOPED_TRACE(bad);
+    const auto r = test::run_cli_without_vulkan(shade + " " + bad);
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+  }
+  const auto side = test::run_cli_without_vulkan(shade + " --ism-side 63");
+  EXPECT_EQ(side.exit_code, 2) << side.output;
+  EXPECT_NE(side.output.find("power of two"), std::string::npos) << side.output;
+  const auto only_ism = test::run_cli_without_vulkan(shade + " --visibility none --ism-bias 0.1");
+  EXPECT_NE(only_ism.output.find("--ism-bias"), std::string::npos) << only_ism.output;
+
+  // 1024 maps of 4096^2 (91 GB) fit no device's binding: refused naming the limit, before any
+  // generator runs, and nothing is written.
+  const auto capture = dir / "tiny";
+  const auto rec = test::run_cli("record --scene tiny --gbuffer 48x32 --rsm 32 --out " + capture.string());
+  ASSERT_EQ(rec.exit_code, 0) << rec.output;
+  const auto big = test::run_cli("shade --capture " + capture.string() + " --vsgls 1024 --ism-side 4096 --out " +
+                                 (dir / "big").string() + validate());
+  EXPECT_EQ(big.exit_code, 4) << big.output;
+  EXPECT_NE(big.output.find("cannot hold the imperfect shadow maps"), std::string::npos) << big.output;
+  EXPECT_NE(big.output.find("maxStorageBufferRange"), std::string::npos) << big.output;
+  EXPECT_FALSE(has_files(dir / "big"));
+  // More points per map than the capture holds (2^20) is bad input naming both options.
+  const auto points = test::run_cli("shade --capture " + capture.string() + " --ism-points-per-map 2000000 --out " +
+                                    (dir / "points").string() + validate());
+  EXPECT_EQ(points.exit_code, 3) << points.output;
+  EXPECT_NE(points.output.find("--visibility-points"), std::string::npos) << points.output;
+  EXPECT_NE(points.output.find("--ism-points-per-map"), std::string::npos) << points.output;
+  EXPECT_FALSE(has_files(dir / "points"));
 }
 
 }  // namespace

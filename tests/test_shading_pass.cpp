@@ -250,7 +250,8 @@ TEST(ShadingCli, WritesOnePngPerGeneratorDeterministically) {
   const auto capture = dir / "tiny";
   const auto rec = test::run_cli("record --scene tiny --gbuffer 96x64 --rsm 32 --out " + capture.string());
   ASSERT_EQ(rec.exit_code, 0) << rec.output;
-  const std::string shade = "shade --capture " + capture.string() + " --vsgls 64 --stride 2" +
+  // Without visibility (the default is the ISM's, tests/test_shade_visibility.cpp).
+  const std::string shade = "shade --capture " + capture.string() + " --vsgls 64 --stride 2 --visibility none" +
                             (test::test_validation() ? " --validate" : "") + " --out ";
   const auto first = test::run_cli(shade + (dir / "a").string());
   ASSERT_EQ(first.exit_code, 0) << first.output;

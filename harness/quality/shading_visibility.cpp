@@ -94,6 +94,10 @@ VisibleShading::VisibleShading(Device& device, const ShadingVisibilitySettings& 
 
 void VisibleShading::require_maps_fit(uint32_t map_count) const {
   if (settings_.mode != ShadingVisibility::kIsm) return;
+  if (settings_.ism.points_per_map > geometry_->points.size())
+    throw InputError("imperfect shadow maps: " + std::to_string(settings_.ism.points_per_map) +
+                     " points per map, but the capture holds " + std::to_string(geometry_->points.size()) +
+                     " (record it with more --visibility-points, or give fewer --ism-points-per-map)");
   const gpu::IsmParams params = ism_params(settings_.ism, static_cast<uint32_t>(geometry_->points.size()), map_count);
   require_ism_fits(device_.info().limits, params, device_.info().name);
 }

@@ -87,7 +87,8 @@ class VisibleShading {
   VisibleShading(Device& device, const ShadingVisibilitySettings& settings, const VisibilityGeometry* geometry);
 
   // kIsm: checks the maps of `map_count` VSGLs against the settings and the capture's points
-  // (InputError) and against the device's limits (DeviceLimitError) without building them.
+  // (InputError; more points per map than the capture holds names the options of `record` and
+  // `shade` that set them) and against the device's limits (DeviceLimitError) without building them.
   void require_maps_fit(uint32_t map_count) const;
 
   // shade_camera_view with the first `vsgl_count` records of `vsgls` and this visibility; kIsm
