@@ -63,9 +63,10 @@ RadianceImage shade_camera_view(Device& device, const DeviceView& camera, const 
                            vsgls_per_binding);
 }
 
-RadianceImage shade_camera_view(Device& device, const DeviceView& camera, const Buffer& vsgls, uint32_t vsgl_count,
-                                uint32_t stride, const ShadeVisibility& visibility, uint32_t vsgls_per_dispatch,
-                                uint32_t vsgls_per_binding) {
+ShadingRecording::ShadingRecording(Device& device, const DeviceView& camera, const Buffer& vsgls, uint32_t vsgl_count,
+                                   uint32_t stride, const ShadeVisibility& visibility, uint32_t vsgls_per_dispatch,
+                                   uint32_t vsgls_per_binding)
+    : device_(&device) {
   if (stride == 0) throw InputError("shading pass: the stride must be at least 1");
   if (camera.kind != ViewKind::kCamera)
     throw InputError("shading pass: it shades the camera view (G-buffer), not the " + camera.label);
@@ -73,23 +74,22 @@ RadianceImage shade_camera_view(Device& device, const DeviceView& camera, const 
   if (vsgls.size() < VkDeviceSize{vsgl_count} * sizeof(VsglRecord))
     throw InputError("shading pass: the VSGL buffer '" + vsgls.name() + "' holds fewer than " +
                      std::to_string(vsgl_count) + " records");
-  RadianceImage image;
-  image.width = shaded_extent(camera.square.width, stride);
-  image.height = shaded_extent(camera.square.height, stride);
-  const std::size_t count = std::size_t{image.width} * image.height;
-  const ShadingVisibility mode = visibility.mode;
+  width_ = shaded_extent(camera.square.width, stride);
+  height_ = shaded_extent(camera.square.height, stride);
+  const std::size_t count = std::size_t{width_} * height_;
+  mode_ = visibility.mode;
   gpu::ShadeVisibilityParams vis{};
   std::vector<BufferBinding> occluder_bindings;
   const char* kernel = "shade_vsgls.comp";
   uint32_t push_bytes = sizeof(gpu::ShadePush);
-  if (mode == ShadingVisibility::kIsm) {
+  if (mode_ == ShadingVisibility::kIsm) {
     if (visibility.maps == nullptr || visibility.maps->map_count() < vsgl_count)
       throw InputError("shading pass: shading " + std::to_string(vsgl_count) +
                        " VSGLs with imperfect shadow maps needs one map per VSGL");
     vis.ism = visibility.maps->params();
     occluder_bindings = {visibility.maps->maps()};
     kernel = "shade_vsgls_ism.comp";
-  } else if (mode == ShadingVisibility::kExact) {
+  } else if (mode_ == ShadingVisibility::kExact) {
     if (visibility.occluders == nullptr)
       throw InputError("shading pass: exact visibility needs the occluders on the device");
     vis.node_count = visibility.occluders->node_count();
@@ -98,32 +98,31 @@ RadianceImage shade_camera_view(Device& device, const DeviceView& camera, const 
     occluder_bindings = {visibility.occluders->nodes(), visibility.occluders->triangles()};
     kernel = "shade_vsgls_exact.comp";
   }
-  if (mode != ShadingVisibility::kNone) push_bytes = sizeof(gpu::ShadeVisibilityPush);
-  const uint32_t chunk = vsgls_per_dispatch != 0 ? vsgls_per_dispatch : shade_chunk_vsgls(count, mode);
+  if (mode_ != ShadingVisibility::kNone) push_bytes = sizeof(gpu::ShadeVisibilityPush);
+  const uint32_t chunk = vsgls_per_dispatch != 0 ? vsgls_per_dispatch : shade_chunk_vsgls(count, mode_);
 
-  Buffer radiance(device, count * sizeof(glm::vec4), MemoryUsage::kDeviceLocal, "shade.radiance");
-  ComputePipeline pipeline(device, {kernel, static_cast<uint32_t>(3 + occluder_bindings.size()), push_bytes,
-                                    work_group_size_2d(gpu::kShadeGroupSize, gpu::kShadeGroupSize)});
+  radiance_ = Buffer(device, count * sizeof(glm::vec4), MemoryUsage::kDeviceLocal, "shade.radiance");
+  pipeline_.emplace(device, ComputePipelineDesc{kernel, static_cast<uint32_t>(3 + occluder_bindings.size()), push_bytes,
+                                                work_group_size_2d(gpu::kShadeGroupSize, gpu::kShadeGroupSize)});
   const uint32_t window = binding_window_vsgls(device, vsgl_count, chunk, vsgls_per_binding);
   // One binding of at most `window` VSGLs at a time (the records past maxStorageBufferRange cannot
-  // be bound at once); its chunks in order, one submission each: a driver's watchdog (about 2 s on
-  // Windows) limits each submission, and no chunk holds more than kShadeEvaluationsPerDispatch
-  // VSGL evaluations.
+  // be bound at once); its chunks in order, each its own dispatch (shade_camera_view submits each on
+  // its own): no chunk holds more than kShadeEvaluationsPerDispatch VSGL evaluations.
   for (uint32_t window_first = 0; window_first < vsgl_count; window_first += window) {
     const uint32_t window_count = std::min(window, vsgl_count - window_first);
-    BindingSet set(device, pipeline,
-                   buffer_bindings({camera.layers(),
-                                    {BufferBinding(vsgls, VkDeviceSize{window_first} * sizeof(VsglRecord),
-                                                   VkDeviceSize{window_count} * sizeof(VsglRecord))},
-                                    {radiance},
-                                    occluder_bindings}),
-                   "shade.set");
+    sets_.emplace_back(device, *pipeline_,
+                       buffer_bindings({camera.layers(),
+                                        {BufferBinding(vsgls, VkDeviceSize{window_first} * sizeof(VsglRecord),
+                                                       VkDeviceSize{window_count} * sizeof(VsglRecord))},
+                                        {radiance_},
+                                        occluder_bindings}),
+                       "shade.set");
     for (uint32_t first = window_first; first < window_first + window_count; first += chunk) {
       const uint32_t n = std::min(chunk, window_first + window_count - first);
       const gpu::ShadePush push{camera.square.width,
                                 camera.square.height,
-                                image.width,
-                                image.height,
+                                width_,
+                                height_,
                                 stride,
                                 n,
                                 first - window_first,
@@ -131,25 +130,52 @@ RadianceImage shade_camera_view(Device& device, const DeviceView& camera, const 
                                 glm::vec4(camera.source_position, 1.0f)};
       // The maps follow the VSGLs' order: the binding's first VSGL has map window_first.
       vis.map_first = window_first;
-      const gpu::ShadeVisibilityPush visibility_push{push, vis};
-      device.submit_and_wait(
-          [&](VkCommandBuffer cmd) {
-            CommandStream stream(cmd);
-            // The VSGLs (and an earlier chunk's sums) were written by an earlier submission.
-            stream.full_barrier();
-            const uint32_t groups_x = div_up(image.width, gpu::kShadeGroupSize);
-            const uint32_t groups_y = div_up(image.height, gpu::kShadeGroupSize);
-            if (mode == ShadingVisibility::kNone) {
-              stream.dispatch(pipeline, set, push, groups_x, groups_y);
-            } else {
-              stream.dispatch(pipeline, set, visibility_push, groups_x, groups_y);
-            }
-          },
-          "shading pass");
+      chunks_.push_back({sets_.size() - 1, gpu::ShadeVisibilityPush{push, vis}});
     }
   }
-  image.pixels = download_vector<glm::vec4>(device, radiance, count);
+}
+
+ShadingRecording::~ShadingRecording() = default;
+
+void ShadingRecording::record_chunk(CommandStream& stream, std::size_t index) const {
+  const Chunk& c = chunks_.at(index);
+  // The VSGLs (and an earlier chunk's sums) were written before, by this or an earlier submission.
+  stream.full_barrier();
+  const uint32_t groups_x = div_up(width_, gpu::kShadeGroupSize);
+  const uint32_t groups_y = div_up(height_, gpu::kShadeGroupSize);
+  if (mode_ == ShadingVisibility::kNone) {
+    stream.dispatch(*pipeline_, sets_[c.set], c.push.shade, groups_x, groups_y);
+  } else {
+    stream.dispatch(*pipeline_, sets_[c.set], c.push, groups_x, groups_y);
+  }
+}
+
+void ShadingRecording::record(CommandStream& stream) const {
+  for (std::size_t i = 0; i < chunks_.size(); ++i) record_chunk(stream, i);
+}
+
+RadianceImage ShadingRecording::read() const {
+  RadianceImage image;
+  image.width = width_;
+  image.height = height_;
+  image.pixels = download_vector<glm::vec4>(*device_, radiance_, std::size_t{width_} * height_);
   return image;
+}
+
+RadianceImage shade_camera_view(Device& device, const DeviceView& camera, const Buffer& vsgls, uint32_t vsgl_count,
+                                uint32_t stride, const ShadeVisibility& visibility, uint32_t vsgls_per_dispatch,
+                                uint32_t vsgls_per_binding) {
+  const ShadingRecording shading(device, camera, vsgls, vsgl_count, stride, visibility, vsgls_per_dispatch,
+                                 vsgls_per_binding);
+  // One submission per chunk: a driver's watchdog (about 2 s on Windows) limits each submission.
+  for (std::size_t i = 0; i < shading.chunk_count(); ++i)
+    device.submit_and_wait(
+        [&](VkCommandBuffer cmd) {
+          CommandStream stream(cmd);
+          shading.record_chunk(stream, i);
+        },
+        "shading pass");
+  return shading.read();
 }
 
 glm::vec4 shade_pixel_reference(const ViewImage& gbuffer, uint32_t x, uint32_t y, glm::vec3 camera_position,

@@ -11,8 +11,10 @@
 // alpha) with wo = normalize(camera - P), summed in VSGL index order (V_n = 1 without visibility);
 // pixels without geometry are black. GPU kernels: kernels/shade_vsgls*.comp; CPU twin:
 // shade_pixel_reference() (same order, float32).
+#include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -20,10 +22,13 @@
 #include "harness/capture/capture.hpp"
 #include "harness/math/vsgl_math.hpp"
 #include "harness/quality/radiance_image.hpp"
+#include "harness/vk/buffer.hpp"
+#include "harness/vk/compute_pipeline.hpp"
+#include "kernels/include/interface/shading.h"
 
 namespace vsgl {
 
-class Buffer;
+class CommandStream;
 class Device;
 class ImperfectShadowMaps;
 class ShadingOccluders;
@@ -84,6 +89,42 @@ RadianceImage shade_camera_view(Device& device, const DeviceView& camera, const 
 RadianceImage shade_camera_view(Device& device, const DeviceView& camera, const Buffer& vsgls, uint32_t vsgl_count,
                                 uint32_t stride, const ShadeVisibility& visibility, uint32_t vsgls_per_dispatch = 0,
                                 uint32_t vsgls_per_binding = 0);
+
+// The shading pass set up once and recorded where the caller wants it: shade_camera_view submits
+// each chunk on its own; `frame` records every chunk into its frame's command buffer (DESIGN.md
+// §9.2). The arguments and their checks are shade_camera_view's; the VSGL buffer, the view and the
+// maps must outlive it.
+class ShadingRecording {
+ public:
+  ShadingRecording(Device& device, const DeviceView& camera, const Buffer& vsgls, uint32_t vsgl_count, uint32_t stride,
+                   const ShadeVisibility& visibility, uint32_t vsgls_per_dispatch = 0, uint32_t vsgls_per_binding = 0);
+  ~ShadingRecording();
+  ShadingRecording(const ShadingRecording&) = delete;
+  ShadingRecording& operator=(const ShadingRecording&) = delete;
+
+  std::size_t chunk_count() const { return chunks_.size(); }
+  // A full barrier, then chunk `index`'s dispatch (the first chunk overwrites the image, the others add).
+  void record_chunk(CommandStream& stream, std::size_t index) const;
+  // Every chunk in order.
+  void record(CommandStream& stream) const;
+  // The image the last recorded pass wrote, read back.
+  RadianceImage read() const;
+  uint32_t width() const { return width_; }
+  uint32_t height() const { return height_; }
+
+ private:
+  struct Chunk {
+    std::size_t set = 0;  // index into sets_
+    gpu::ShadeVisibilityPush push;
+  };
+  Device* device_;
+  ShadingVisibility mode_ = ShadingVisibility::kNone;
+  uint32_t width_ = 0, height_ = 0;
+  Buffer radiance_;
+  std::optional<ComputePipeline> pipeline_;
+  std::vector<BindingSet> sets_;
+  std::vector<Chunk> chunks_;
+};
 
 // VSGLs per binding of the shading pass: all `vsgl_count` where they fit `vsgls_per_binding` (0: the
 // device's maxStorageBufferRange), else the most whole `chunk`s that fit and start at an offset the

@@ -36,34 +36,67 @@ float brsm_texel_weight(const ViewImage& rsm, uint32_t x, uint32_t y, glm::vec3 
   return importance;
 }
 
-BrsmBuild build_brsm_pdf(Device& device, Capture& capture, uint32_t camera_vsgls) {
-  const auto wall_start = std::chrono::steady_clock::now();
-  const DeviceView camera = upload_view(device, capture, ViewKind::kCamera);
+struct BrsmPdfPass::State {
+  std::optional<FisGenerator> camera_fis;
   FisParams params;
+  uint32_t rsm_width = 0, rsm_height = 0;
+  glm::vec3 light_position{0.0f};
+  Buffer pdf;
+  std::optional<ComputePipeline> pipeline;
+  std::optional<BindingSet> set;
+};
+
+BrsmPdfPass::BrsmPdfPass(Device& device, const Capture& capture, const DeviceView& camera,
+                         std::vector<BufferBinding> rsm_layers, uint32_t camera_vsgls)
+    : state_(std::make_unique<State>()) {
+  State& st = *state_;
+  FisParams& params = st.params;
   params.vsgl_count = std::min(camera_vsgls, camera.samplable_texels);
   // The BRSM PDF is recorded data: the buffer path keeps it bit-exact with the CPU reference and
   // identical on every device (the texture path's filter precision is the device's). A G-buffer
   // whose buffer pyramid the device cannot bind (3840x2176 needs 358 MB a moment layer, lavapipe
   // binds 128 MiB) takes the texture path instead: recordable, no longer bit-identical across devices.
   params.pyramid = PyramidPath::kBuffer;
-  std::optional<FisGenerator> built;
   try {
-    built.emplace(device, camera, FisVariant::kModified, params);
+    st.camera_fis.emplace(device, camera, FisVariant::kModified, params);
   } catch (const DeviceLimitError& e) {
     params.pyramid = PyramidPath::kTexture;
-    built.emplace(device, camera, FisVariant::kModified, params);
+    st.camera_fis.emplace(device, camera, FisVariant::kModified, params);
     std::cerr << program_name() << ": the BRSM PDF of '" << capture.meta.scene
               << "' is built on the texture path (its PDF is then the device's, not bit-identical across devices): "
               << e.what() << "\n";
   }
-  FisGenerator& camera_fis = *built;
+  const ViewImage& rsm = capture.rsm;
+  st.rsm_width = rsm.width;
+  st.rsm_height = rsm.height;
+  st.light_position = capture.meta.light.position;
+  st.pdf = Buffer(device, rsm.texels() * sizeof(float), MemoryUsage::kDeviceLocal, "brsm.pdf");
+  st.pipeline.emplace(device, ComputePipelineDesc{"brsm_pdf.comp", 3, sizeof(gpu::BrsmPush),
+                                                  work_group_size_2d(gpu::kBrsmGroupSize, gpu::kBrsmGroupSize)});
+  st.set.emplace(device, *st.pipeline, buffer_bindings({std::move(rsm_layers), {st.camera_fis->vsgls()}, {st.pdf}}),
+                 "brsm.set");
+}
 
+BrsmPdfPass::~BrsmPdfPass() = default;
+
+void BrsmPdfPass::record(CommandStream& stream) {
+  State& st = *state_;
+  record_untimed(*st.camera_fis, stream);
+  const gpu::BrsmPush push{st.rsm_width, st.rsm_height, st.params.vsgl_count, 0, glm::vec4(st.light_position, 1.0f)};
+  stream.dispatch(*st.pipeline, *st.set, push, div_up(st.rsm_width, gpu::kBrsmGroupSize),
+                  div_up(st.rsm_height, gpu::kBrsmGroupSize));
+}
+
+const Buffer& BrsmPdfPass::pdf() const { return state_->pdf; }
+uint32_t BrsmPdfPass::camera_vsgls() const { return state_->params.vsgl_count; }
+PyramidPath BrsmPdfPass::pyramid() const { return state_->params.pyramid; }
+
+BrsmBuild build_brsm_pdf(Device& device, Capture& capture, uint32_t camera_vsgls) {
+  const auto wall_start = std::chrono::steady_clock::now();
+  const DeviceView camera = upload_view(device, capture, ViewKind::kCamera);
   const ViewImage& rsm = capture.rsm;
   const LayeredTexels rsm_texels = upload_layers(device, rsm, "brsm.rsm_texels");
-  Buffer pdf(device, rsm.texels() * sizeof(float), MemoryUsage::kDeviceLocal, "brsm.pdf");
-  ComputePipeline pipeline(device, {"brsm_pdf.comp", 3, sizeof(gpu::BrsmPush),
-                                    work_group_size_2d(gpu::kBrsmGroupSize, gpu::kBrsmGroupSize)});
-  BindingSet set(device, pipeline, buffer_bindings({rsm_texels.layers(), {camera_fis.vsgls()}, {pdf}}), "brsm.set");
+  BrsmPdfPass pass(device, capture, camera, rsm_texels.layers(), camera_vsgls);
 
   std::optional<TimestampPool> timestamps;
   if (device.info().timestamps()) timestamps.emplace(device, 2, "brsm.timestamps");
@@ -74,17 +107,13 @@ BrsmBuild build_brsm_pdf(Device& device, Capture& capture, uint32_t camera_vsgls
           timestamps->reset(cmd);
           timestamps->write(cmd);
         }
-        record_untimed(camera_fis, stream);
-        const gpu::BrsmPush push{rsm.width, rsm.height, params.vsgl_count, 0,
-                                 glm::vec4(capture.meta.light.position, 1.0f)};
-        stream.dispatch(pipeline, set, push, div_up(rsm.width, gpu::kBrsmGroupSize),
-                        div_up(rsm.height, gpu::kBrsmGroupSize));
+        pass.record(stream);
         if (timestamps) timestamps->write(cmd);
       },
       "brsm pdf");
 
   BrsmBuild out;
-  out.camera_vsgls = params.vsgl_count;
+  out.camera_vsgls = pass.camera_vsgls();
   if (timestamps) {
     const auto ticks = timestamps->read_ticks();
     out.gpu_ms = timestamps->interval_ns(ticks[0], ticks[1]) * 1e-6;
@@ -92,13 +121,13 @@ BrsmBuild build_brsm_pdf(Device& device, Capture& capture, uint32_t camera_vsgls
     out.gpu_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - wall_start).count();
   }
   auto& plane = capture.rsm.planes[kPdf];
-  plane = download_vector<float>(device, pdf, rsm.texels());
+  plane = download_vector<float>(device, pass.pdf(), rsm.texels());
   if (std::none_of(plane.begin(), plane.end(), [](float q) { return q > 0.0f; }))
     throw InputError("the BRSM PDF of scene '" + capture.meta.scene +
                      "' is zero everywhere: no texel lit by the spot light is seen by the camera");
   capture.rsm.has_pdf = true;
   capture.meta.brsm_build_ms = out.gpu_ms;
-  capture.meta.brsm_pyramid = params.pyramid;
+  capture.meta.brsm_pyramid = pass.pyramid();
   capture.meta.brsm_importance = std::string(kBrsmImportanceModel);
   capture.meta.brsm_bias_alpha = gpu::kBiasReductionAlpha;
   return out;

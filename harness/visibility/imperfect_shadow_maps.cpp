@@ -31,6 +31,11 @@ std::vector<IsmMapOrigin> map_origins(const std::vector<VsglRecord>& vsgls) {
   return out;
 }
 
+struct ImperfectShadowMaps::Kernels {
+  ComputePipeline splat, pull, push;
+  BindingSet splat_set, pull_set, push_set;
+};
+
 ImperfectShadowMaps::ImperfectShadowMaps(Device& device, const std::vector<SurfacePoint>& points,
                                          const std::vector<IsmMapOrigin>& origins, const IsmSettings& settings)
     : device_(&device),
@@ -56,49 +61,55 @@ ImperfectShadowMaps::ImperfectShadowMaps(Device& device, const std::vector<Surfa
                  MemoryUsage::kDeviceLocal, "ism.maps");
   upload(device, points_, positions.data(), positions.size() * sizeof(glm::vec4));
   upload(device, origins_, records.data(), records.size() * sizeof(gpu::IsmOrigin));
-  build(settings.fill_holes);
-}
-
-void ImperfectShadowMaps::build(bool fill_holes) {
-  Device& device = *device_;
+  fill_holes_ = settings.fill_holes;
   const auto group = work_group_size_1d(gpu::kIsmGroupSize);
   ComputePipeline splat(device, {"ism_splat.comp", 3, sizeof(gpu::IsmParams), group});
   ComputePipeline pull(device, {"ism_pull.comp", 1, sizeof(gpu::IsmPyramidPush), group});
   ComputePipeline push(device, {"ism_push.comp", 1, sizeof(gpu::IsmPyramidPush), group});
-  const BindingSet splat_set(device, splat, {points_, origins_, maps_}, "ism.splat.set");
-  const BindingSet pull_set(device, pull, {maps_}, "ism.pull.set");
-  const BindingSet push_set(device, push, {maps_}, "ism.push.set");
+  BindingSet splat_set(device, splat, {points_, origins_, maps_}, "ism.splat.set");
+  BindingSet pull_set(device, pull, {maps_}, "ism.pull.set");
+  BindingSet push_set(device, push, {maps_}, "ism.push.set");
+  kernels_.reset(new Kernels{std::move(splat), std::move(pull), std::move(push), std::move(splat_set),
+                             std::move(pull_set), std::move(push_set)});
+  device.submit_and_wait(
+      [&](VkCommandBuffer cmd) {
+        CommandStream stream(cmd);
+        record_build(stream);
+        dispatches_ = stream.dispatch_count();
+      },
+      "imperfect shadow maps");
+}
+
+ImperfectShadowMaps::~ImperfectShadowMaps() = default;
+ImperfectShadowMaps::ImperfectShadowMaps(ImperfectShadowMaps&&) noexcept = default;
+ImperfectShadowMaps& ImperfectShadowMaps::operator=(ImperfectShadowMaps&&) noexcept = default;
+
+void ImperfectShadowMaps::record_build(CommandStream& stream) const {
+  const Kernels& k = *kernels_;
+  VkCommandBuffer cmd = stream.get();
   const uint32_t levels = ism_level_count(params_.side);
   // Level l (side >> l) and the next coarser, for one dispatch of the pull or the push.
   const auto step = [&](uint32_t l) {
     return gpu::IsmPyramidPush{params_.map_count, params_.map_stride, ism_level_offset(params_.side, l),
                                params_.side >> l, ism_level_offset(params_.side, l + 1)};
   };
-  device.submit_and_wait(
-      [&](VkCommandBuffer cmd) {
-        CommandStream stream(cmd);
-        stream.full_barrier();  // the uploads
-        vkCmdFillBuffer(cmd, maps_.get(), 0, VK_WHOLE_SIZE, gpu::kIsmEmpty);
-        stream.full_barrier();
-        stream.dispatch(splat, splat_set, params_, div_up(params_.points_per_map, gpu::kIsmGroupSize),
-                        params_.map_count);
-        if (fill_holes) {
-          // Pull: each level from the finer one, down to 1 x 1; push: each level's empty texels
-          // from the coarser one, back up to level 0. Each dispatch reads what the previous wrote.
-          for (uint32_t l = 0; l + 1 < levels; ++l) {
-            const uint32_t coarse = params_.side >> (l + 1);
-            stream.compute_barrier();
-            stream.dispatch(pull, pull_set, step(l), div_up(coarse * coarse, gpu::kIsmGroupSize), params_.map_count);
-          }
-          for (uint32_t l = levels - 1; l-- > 0;) {
-            const uint32_t fine = params_.side >> l;
-            stream.compute_barrier();
-            stream.dispatch(push, push_set, step(l), div_up(fine * fine, gpu::kIsmGroupSize), params_.map_count);
-          }
-        }
-        dispatches_ = stream.dispatch_count();
-      },
-      "imperfect shadow maps");
+  stream.full_barrier();  // the uploads, or the origins' and points' writers
+  vkCmdFillBuffer(cmd, maps_.get(), 0, VK_WHOLE_SIZE, gpu::kIsmEmpty);
+  stream.full_barrier();
+  stream.dispatch(k.splat, k.splat_set, params_, div_up(params_.points_per_map, gpu::kIsmGroupSize), params_.map_count);
+  if (!fill_holes_) return;
+  // Pull: each level from the finer one, down to 1 x 1; push: each level's empty texels from the
+  // coarser one, back up to level 0. Each dispatch reads what the previous wrote.
+  for (uint32_t l = 0; l + 1 < levels; ++l) {
+    const uint32_t coarse = params_.side >> (l + 1);
+    stream.compute_barrier();
+    stream.dispatch(k.pull, k.pull_set, step(l), div_up(coarse * coarse, gpu::kIsmGroupSize), params_.map_count);
+  }
+  for (uint32_t l = levels - 1; l-- > 0;) {
+    const uint32_t fine = params_.side >> l;
+    stream.compute_barrier();
+    stream.dispatch(k.push, k.push_set, step(l), div_up(fine * fine, gpu::kIsmGroupSize), params_.map_count);
+  }
 }
 
 std::vector<float> ImperfectShadowMaps::read_level0() const {

@@ -6,6 +6,7 @@
 // kernels/include/ism_lookup.glsl. All maps live in one storage buffer (interface/ism.h's layout),
 // which every Vulkan device binds, including lavapipe and SwiftShader.
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -18,6 +19,7 @@
 
 namespace vsgl {
 
+class CommandStream;
 class Device;
 
 // Where a map looks from: a point and the axis of its hemisphere.
@@ -37,6 +39,13 @@ class ImperfectShadowMaps {
   // normal that is not unit length), DeviceLimitError where the maps do not fit the device.
   ImperfectShadowMaps(Device& device, const std::vector<SurfacePoint>& points, const std::vector<IsmMapOrigin>& origins,
                       const IsmSettings& settings = {});
+  ~ImperfectShadowMaps();
+  ImperfectShadowMaps(ImperfectShadowMaps&&) noexcept;
+  ImperfectShadowMaps& operator=(ImperfectShadowMaps&&) noexcept;
+
+  // Records the build again into `stream` (clear, splat, pull-push as the constructor ran it),
+  // after a full barrier: `frame` times it as the frame's ism phase (DESIGN.md §9.2).
+  void record_build(CommandStream& stream) const;
 
   const gpu::IsmParams& params() const { return params_; }
   const Buffer& maps() const { return maps_; }        // map_count x map_stride uints (interface/ism.h)
@@ -50,7 +59,7 @@ class ImperfectShadowMaps {
   std::vector<float> read_level0() const;
 
  private:
-  void build(bool fill_holes);
+  struct Kernels;  // the build's pipelines and binding sets, kept for record_build
 
   Device* device_;
   gpu::IsmParams params_{};
@@ -58,6 +67,8 @@ class ImperfectShadowMaps {
   Buffer origins_;
   Buffer maps_;
   uint32_t dispatches_ = 0;
+  bool fill_holes_ = true;
+  std::unique_ptr<Kernels> kernels_;
 };
 
 }  // namespace vsgl
