@@ -29,8 +29,8 @@ bool mentions(const std::string& text, const std::string& part) { return text.fi
 TEST(CliUsage, TopLevelHelpListsEveryCommandAndTheExitCodeTable) {
   const auto r = run_cli_without_vulkan("--help");
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  for (const char* command :
-       {"devices", "record", "verify", "shade", "quality", "tables", "sweep", "compare", "export", "dashboard"})
+  for (const char* command : {"devices", "record", "verify", "shade", "quality", "tables", "frame", "sweep", "compare",
+                              "export", "dashboard"})
     EXPECT_TRUE(mentions(r.output, command)) << command << "\n" << r.output;
   for (const auto& e : cli::exit_code_table())
     EXPECT_TRUE(mentions(r.output, e.meaning)) << e.meaning << "\n" << r.output;
@@ -60,8 +60,8 @@ TEST(CliUsage, TopLevelHelpListsEachCommandInOneLine) {
     EXPECT_LE(line.size(), 110u) << line;
     listed.push_back(m[1]);
   }
-  EXPECT_EQ(listed, (std::vector<std::string>{"devices", "record", "verify", "shade", "quality", "tables", "sweep",
-                                              "compare", "export", "dashboard"}));
+  EXPECT_EQ(listed, (std::vector<std::string>{"devices", "record", "verify", "shade", "quality", "tables", "frame",
+                                              "sweep", "compare", "export", "dashboard"}));
   EXPECT_FALSE(mentions(r.output, "geometric-mean summary")) << "the whole description is the command's\n" << r.output;
   const auto compare = run_cli_without_vulkan("compare --help");
   ASSERT_EQ(compare.exit_code, 0) << compare.output;
@@ -134,6 +134,11 @@ TEST(CliUsage, BadCommandLinesExitTwoBeforeVulkanNamingTheOption) {
            Case{"record --eye 0,0,0", "--gltf"},
            Case{"record --scene tiny --gltf " VSGL_SOURCE_DIR "/CMakeLists.txt", "--gltf"},
            Case{"shade --capture x --stride 0", "--stride"},
+           Case{"frame", "--capture"},
+           Case{"frame --capture x --stride 0", "--stride"},
+           Case{"frame --capture x --ism-side 48", "--ism-side"},
+           Case{"frame --capture x --vsgls 0", "--vsgls"},
+           Case{"frame --capture x --warmup 1", "--warmup"},
            Case{"shade --capture x --generators fis_nope", "fis_nope"},
            Case{"quality --capture x --k-sweep 1,zero", "--k-sweep"},
            Case{"quality --capture x --frames 1", "--frames"},

@@ -9,13 +9,14 @@
 namespace vsgl::cli {
 namespace {
 
-constexpr std::array<std::pair<std::string_view, std::string_view>, 10> kSummaries{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 11> kSummaries{{
     {"devices", "list the Vulkan devices, the default, and what runs on each"},
     {"record", "rasterize a scene preset, procedural scene or glTF/OBJ model into a capture"},
     {"verify", "check every generator on a capture against its CPU reference"},
     {"shade", "the camera view lit by each generator's VSGLs, as PNG (Fig. 5)"},
     {"quality", "the paper's quality claims measured on a capture (Fig. 1, 5, 6)"},
     {"tables", "time the generators: the paper's Tables 1 and 2 on this device"},
+    {"frame", "time the paper's frame phase by phase: RSM replay, PDF, VSGLs, ISM, shading"},
     {"sweep", "time the generators along parameter axes and fit their cost growth"},
     {"compare", "FASTER / SLOWER / SAME / AMBIGUOUS verdicts between two runs"},
     {"export", "a run's medians under stable names for github-action-benchmark or Bencher"},

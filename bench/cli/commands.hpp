@@ -18,6 +18,7 @@ struct Command {
 Command add_devices_command(CLI::App& parent);
 Command add_record_command(CLI::App& parent);
 Command add_tables_command(CLI::App& parent, const TablesExtension& extension = {});
+Command add_frame_command(CLI::App& parent);
 Command add_sweep_command(CLI::App& parent);
 Command add_verify_command(CLI::App& parent);
 Command add_shade_command(CLI::App& parent);

@@ -26,10 +26,10 @@ int vsgl_bench_command_line(int argc, char** argv, const TablesExtension& tables
   // A repeated single-value option keeps its last value, as before; list options say so.
   app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
   const std::vector<Command> commands{
-      add_devices_command(app),   add_record_command(app),  add_verify_command(app),
-      add_shade_command(app),     add_quality_command(app), add_tables_command(app, tables_extension),
-      add_sweep_command(app),     add_compare_command(app), add_export_command(app),
-      add_dashboard_command(app),
+      add_devices_command(app), add_record_command(app),    add_verify_command(app),
+      add_shade_command(app),   add_quality_command(app),   add_tables_command(app, tables_extension),
+      add_frame_command(app),   add_sweep_command(app),     add_compare_command(app),
+      add_export_command(app),  add_dashboard_command(app),
   };
   list_commands_in_one_line(app);  // each command's own --help keeps its whole description
   app.footer("`vsgl-bench <command> --help` lists a command's options.\n\n" + exit_codes_help());
@@ -41,8 +41,8 @@ int vsgl_bench_command_line(int argc, char** argv, const TablesExtension& tables
   for (const auto& c : commands)
     if (c.app->parsed()) return c.run();
   throw UsageError(
-      "a command is required: devices, record, verify, shade, quality, tables, sweep, compare, export "
-      "or dashboard");
+      "a command is required: devices, record, verify, shade, quality, tables, frame, sweep, compare, "
+      "export or dashboard");
 }
 
 }  // namespace vsgl::cli
