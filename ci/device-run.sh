@@ -3,6 +3,7 @@
 # and inside a wall-time budget. Steps run most valuable first, so a run cut short still brings
 # back what matters most:
 #   1 devices (--json) and nvidia-smi     5 tables with --pyramid buffer
+#                                          5b frame: the paper's frame phase by phase, each scene
 #   2 record sponza and conference-room    6 vsgl-mipbench (the three mipmapping strategies)
 #   3 verify both captures: both pyramid   7 vsgl-gbench
 #     paths, every generator               7b a short sweep: N x PDF sharpness (--time-budget)
@@ -228,6 +229,9 @@ if $quick; then
   replays=(--vsgl_replays=3 --vsgl_tables=1)
   gbench_quick=(--vsgl_generators=fis_tok15,fis_modified)
   sweep_args=(--quick --generators fis_tok15,fis_modified --axis vsgls=256,1024 --axis pdf-sharpness=1,2 --time-budget 20)
+  # lavapipe shades about 2e7 VSGL evaluations a second: every 8th pixel per axis (recorded in
+  # frame.json as not the paper's size) keeps a frame near a second.
+  frame_args="--quick --stride 8 --time-cap 10"
 else
   size=""
   reference_size="--rsm ${reference_rsm:-4096}"
@@ -238,8 +242,9 @@ else
   replays=()
   gbench_quick=()
   sweep_args=(--axis vsgls=256:16384:x4 --axis pdf-sharpness=0.5,1,2,4 --time-budget 50)
+  frame_args="--time-cap 25"
 fi
-export size reference_size
+export size reference_size frame_args
 
 # 1. The device, as Vulkan and the driver see it. The run stops here when the loader finds no
 # usable device, or (without --quick, whose rehearsal is on lavapipe) only CPU ones.
@@ -322,6 +327,18 @@ step tables_texture 150 30 "$bin/vsgl-bench" tables "${table_captures[@]}" --out
   "${paper[@]}" --no-progress --time-cap 45 "${tables_quick[@]}"
 step tables_buffer 120 30 "$bin/vsgl-bench" tables "${table_captures[@]}" --out "$run/buffer" --pyramid buffer \
   "${paper[@]}" --no-progress --time-cap 35 "${tables_quick[@]}"
+
+# 5b. The paper's frame phase by phase (DESIGN.md §9.2) on each scene's capture, at the paper's
+# sizes (N 1024, ISM 64^2, as recorded): per scene, its timing stops at the --time-cap in
+# $frame_args, leaving the step's limit room for the captures' uploads and the warm-ups.
+frame_scenes() {
+  # $frame_args unquoted: options
+  for scene in "$@"; do
+    "$bin/vsgl-bench" frame --capture "$captures/$scene" --out "$run/frame/$scene" \
+      --schema results/schema/frame.schema.json --no-progress $frame_args || return 1
+  done
+}
+step frame 120 30 frame_scenes "${scenes[@]}"
 
 # 6-7. The Google Benchmark binaries, JSON out. Their --vsgl_captures is a cache of the paper-size
 # captures: where a capture there has other sizes they record over it, so the --quick rehearsal,
