@@ -22,6 +22,7 @@
 #include "harness/report/paper_tables.hpp"
 #include "harness/report/table_json.hpp"
 #include "input_error.hpp"
+#include "synthetic_frame.hpp"
 #include "synthetic_sweep.hpp"
 #include "test_support.hpp"
 
@@ -252,6 +253,40 @@ TEST(DashboardPage, ScalingSectionSaysInOneLineThatThereIsNoSweep) {
   EXPECT_EQ(occurrences(section, "<svg"), 0u);
 }
 
+// A frame.json under the directory (`vsgl-bench frame`, DESIGN.md §9.2) gives the frame section: one
+// chart, a stacked bar per generator with a segment per phase, each with its number; without one,
+// the section says so. `dashboard` finds it by content, also where it is the only document.
+TEST(DashboardPage, AFrameJsonIsDrawnAsAStackedBarPerGeneratorOfTheFivePhases) {
+  const test::TempDir temp("dashboard_frame");
+  fs::create_directories(temp.path() / "run" / "tiny");
+  const FrameModel model = test::synthetic_frame();
+  std::ofstream(temp.path() / "run" / "tiny" / "frame.json") << to_json(model).dump(2) << "\n";
+  const auto frames = find_frame_runs(temp.path());
+  ASSERT_EQ(frames.size(), 1u);
+  const std::string html =
+      dashboard_html(find_table_runs(kResults), load_paper_tables(kResults / "paper/paper_tables.json"), "results",
+                     cli::dashboard_generators(), {}, frames);
+  const std::string section = between(html, "<section class=\"frame\"", "</section>");
+  ASSERT_FALSE(section.empty());
+  EXPECT_EQ(occurrences(section, "<svg"), 1u);
+  EXPECT_EQ(occurrences(section, "class=\"bar\""), model.generators.size()) << section;
+  for (const auto& g : model.generators)
+    for (const auto& p : g.phases)
+      EXPECT_NE(section.find(g.name + " " + p.phase + ": median "), std::string::npos) << g.name << " " << p.phase;
+  const std::string none =
+      between(dashboard_html(find_table_runs(kResults), load_paper_tables(kResults / "paper/paper_tables.json"),
+                             "results", cli::dashboard_generators(), {}),
+              "<section class=\"frame\"", "</section>");
+  EXPECT_NE(none.find("No frame JSON"), std::string::npos) << none;
+  EXPECT_EQ(occurrences(none, "<svg"), 0u);
+  const auto r = test::run_cli_without_vulkan("dashboard " + (temp.path() / "run").string() + " --out " +
+                                              (temp.path() / "site").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::string page = read_text(temp.path() / "site" / "index.html");
+  EXPECT_NE(page.find("<section class=\"frame\""), std::string::npos);
+  EXPECT_NE(page.find("kmeans vsgl_generation: median "), std::string::npos);
+}
+
 TEST(DashboardPage, TheCommittedSweepsLoadAndEachHasItsScalingSection) {
   const auto sweeps = find_sweep_runs(kResults);
   ASSERT_FALSE(sweeps.empty()) << "results/lavapipe/sweep/ is committed";
@@ -369,7 +404,7 @@ TEST(DashboardPage, OpensInHeadlessChromiumWithTheScalingSectionRendered) {
   make_results(dir / "results", two_sweeps(), false);
   const auto made = test::run_cli("dashboard " + (dir / "results").string() + " --out " + (dir / "site").string());
   ASSERT_EQ(made.exit_code, 0) << made.output;
-  EXPECT_NE(made.output.find("(0 table runs, 2 sweep files)"), std::string::npos) << made.output;
+  EXPECT_NE(made.output.find("(0 table runs, 2 sweep files, 0 frame files)"), std::string::npos) << made.output;
   const fs::path page = dir / "site/index.html";
   const std::string html = read_text(page);
   ASSERT_EQ(occurrences(html, "class=\"chart loglog\""), 2u);

@@ -37,7 +37,8 @@ Command add_dashboard_command(CLI::App& parent) {
   };
   auto o = std::make_shared<Options>();
   app->add_option("RESULTS_DIR", o->results,
-                  "directory searched for table JSON (any *.json that is one) and sweep JSON (sweep.json)")
+                  "directory searched for table JSON (any *.json that is one), sweep JSON (sweep.json) and frame JSON "
+                  "(frame.json)")
       ->required();
   app->add_option("--out", o->out, "output directory")->required()->type_name("DIR");
   add_optional(*app, "--paper", o->paper, "the paper's tables (default: the copy built into vsgl-bench)")
@@ -46,16 +47,18 @@ Command add_dashboard_command(CLI::App& parent) {
   return {app, [o] {
             const std::vector<BenchRun> runs = find_table_runs(path_from_utf8(o->results));
             const std::vector<SweepRun> sweeps = find_sweep_runs(path_from_utf8(o->results));
-            if (runs.empty() && sweeps.empty())
+            const std::vector<FrameRun> frames = find_frame_runs(path_from_utf8(o->results));
+            if (runs.empty() && sweeps.empty() && frames.empty())
               throw InputError(o->results +
-                               ": no table JSON (the output of `tables`) and no sweep JSON (sweep.json) found");
+                               ": no table JSON (the output of `tables`), no sweep JSON (sweep.json) and no frame JSON "
+                               "(frame.json) found");
             const nlohmann::ordered_json paper = paper_tables_or_built_in(
                 o->paper ? std::optional<std::filesystem::path>(path_from_utf8(*o->paper)) : std::nullopt);
             std::filesystem::create_directories(path_from_utf8(o->out));
             const std::filesystem::path page = path_from_utf8(o->out) / "index.html";
-            write_text_atomic(page, dashboard_html(runs, paper, o->results, dashboard_generators(), sweeps));
-            std::fprintf(stderr, "wrote %s (%zu table runs, %zu sweep files)\n", path_text(page).c_str(), runs.size(),
-                         sweeps.size());
+            write_text_atomic(page, dashboard_html(runs, paper, o->results, dashboard_generators(), sweeps, frames));
+            std::fprintf(stderr, "wrote %s (%zu table runs, %zu sweep files, %zu frame files)\n",
+                         path_text(page).c_str(), runs.size(), sweeps.size(), frames.size());
             return 0;
           }};
 }

@@ -198,6 +198,67 @@ std::string total_series(const std::vector<const BenchRun*>& runs, int table, co
 
 }  // namespace
 
+namespace {
+
+// The frame section: per frame run, a stacked bar per generator of the five phases (DESIGN.md §9.2).
+std::string frame_section_html(const std::vector<FrameRun>& frames, const std::string& source) {
+  static const char* const kPhaseColors[] = {"#9e9e9e", "#8c6bb1", "#2b8cbe", "#41ab5d", "#fd8d3c"};
+  std::ostringstream os;
+  os << "<section class=\"frame\" id=\"frame\">\n<h2>The frame (<code>vsgl-bench frame</code>)</h2>\n";
+  if (frames.empty()) {
+    os << "<p>No frame JSON (the output of <code>frame</code>) under <code>" << xml_escape(source) << "</code>.</p>\n";
+    return os.str() + "</section>\n";
+  }
+  os << "<p class=\"note\">Per generator the paper's frame phase by phase, median ms; <code>rsm_replay</code> "
+        "copies the recorded RSM (a replay, not the paper's RSM rendering).</p>\n<div class=\"charts\">\n";
+  const auto& names = frame_phase_names();
+  std::vector<LegendEntry> legend;
+  for (std::size_t p = 0; p < names.size(); ++p) legend.push_back(LegendEntry{names[p], names[p], kPhaseColors[p % 5]});
+  for (const FrameRun& f : frames) {
+    const FrameModel& m = f.model;
+    std::vector<StackedBar> bars;
+    for (const FrameGeneratorTiming& g : m.generators) {
+      StackedBar bar{g.name, {}};
+      for (std::size_t p = 0; p < g.phases.size(); ++p) {
+        const TimingStatistics& s = g.phases[p].stats;
+        bar.segments.push_back(BarSegment{g.phases[p].phase, s.median_ms,
+                                          g.name + " " + g.phases[p].phase + ": median " + fmt(s.median_ms) +
+                                              " ms (q1 " + fmt(s.q1_ms) + ", q3 " + fmt(s.q3_ms) + "), " +
+                                              fmt(100 * frame_phase_share(g, p)) + " % of the frame"});
+      }
+      bars.push_back(std::move(bar));
+    }
+    const std::string title = m.capture.scene + " on " + m.device.name + ", " + day(m.run.started_utc) +
+                              (m.config.paper_sizes ? "" : " (not the paper's sizes)") +
+                              (m.run.quick ? " --quick" : "");
+    os << stacked_bar_chart_svg(title, "frame", bars, legend, 460, 330) << "\n";
+  }
+  os << "</div>\n";
+  return os.str() + "</section>\n";
+}
+
+}  // namespace
+
+std::vector<FrameRun> find_frame_runs(const std::filesystem::path& results_dir) {
+  std::vector<FrameRun> out;
+  std::error_code ec;
+  if (!std::filesystem::is_directory(results_dir, ec)) return out;
+  for (const auto& e : std::filesystem::recursive_directory_iterator(results_dir)) {
+    if (!e.is_regular_file() || e.path().extension() != ".json") continue;
+    nlohmann::ordered_json doc;
+    try {
+      doc = read_json_file(e.path(), "a results file");
+    } catch (const InputError&) {
+      continue;  // not JSON: no frame document (find_table_runs speaks for the tables)
+    }
+    if (!doc.is_object() || !doc.contains("kind") || doc["kind"] != "frame") continue;
+    const std::string path = path_text(e.path());
+    out.push_back(FrameRun{path, frame_model_from_json(doc, path)});
+  }
+  std::sort(out.begin(), out.end(), [](const FrameRun& a, const FrameRun& b) { return a.path < b.path; });
+  return out;
+}
+
 std::vector<BenchRun> find_table_runs(const std::filesystem::path& results_dir) {
   if (!std::filesystem::is_directory(results_dir)) throw InputError(path_text(results_dir) + ": not a directory");
   std::vector<BenchRun> runs;
@@ -231,7 +292,7 @@ std::vector<BenchRun> find_table_runs(const std::filesystem::path& results_dir) 
 
 std::string dashboard_html(const std::vector<BenchRun>& runs, const nlohmann::ordered_json& paper,
                            const std::string& source, const std::vector<DashboardGenerator>& generators,
-                           const std::vector<SweepRun>& sweeps) {
+                           const std::vector<SweepRun>& sweeps, const std::vector<FrameRun>& frames) {
   std::map<std::string, std::string> series_colors;
   for (const auto& r : runs)
     for (const auto& [n, t] : r.tables)
@@ -298,6 +359,7 @@ std::string dashboard_html(const std::vector<BenchRun>& runs, const nlohmann::or
   }
 
   os << scaling_section_html(sweeps, source);
+  os << frame_section_html(frames, source);
 
   os << "<h2>Runs</h2>\n";
   if (runs.empty())

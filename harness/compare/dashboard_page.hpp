@@ -10,6 +10,8 @@
 //    one line per device, median with a q1..q3 whisker, on a log axis;
 //  - the scaling section: every sweep JSON under RESULTS_DIR, a log-log chart of the totals and a
 //    table of the growth fits per axis (dashboard_scaling.hpp);
+//  - the frame section: every frame JSON under RESULTS_DIR (`vsgl-bench frame`, DESIGN.md §9.2), a
+//    stacked bar per generator of the frame's five phases, one chart per run;
 //  - the list of runs (file, device, date, commit, flags).
 #include <filesystem>
 #include <string>
@@ -19,6 +21,7 @@
 
 #include "harness/compare/dashboard_scaling.hpp"
 #include "harness/compare/regression_run.hpp"
+#include "harness/formats/frame_model.hpp"
 
 namespace vsgl {
 
@@ -29,6 +32,16 @@ namespace vsgl {
 // commit, path; none is an empty list (a results directory may hold sweeps alone). Throws
 // InputError for a table JSON that cannot be read, and for a tableN.json that is not JSON.
 std::vector<BenchRun> find_table_runs(const std::filesystem::path& results_dir);
+
+// One frame document (`vsgl-bench frame`) and where it was found.
+struct FrameRun {
+  std::string path;  // as found under the results directory
+  FrameModel model;
+};
+
+// Every frame JSON under `results_dir` (recursively), known by its content ("kind": "frame"),
+// sorted by path. Other files are skipped. Throws InputError for a frame JSON the model refuses.
+std::vector<FrameRun> find_frame_runs(const std::filesystem::path& results_dir);
 
 // What the page shows of a generator, from the descriptor table (generators/generator_registry.hpp;
 // dashboard_generators() in bench/cli builds it): the bar label, whether the paper timed it, and its
@@ -45,6 +58,6 @@ struct DashboardGenerator {
 // scaling section, which with none says so.
 std::string dashboard_html(const std::vector<BenchRun>& runs, const nlohmann::ordered_json& paper,
                            const std::string& source, const std::vector<DashboardGenerator>& generators,
-                           const std::vector<SweepRun>& sweeps = {});
+                           const std::vector<SweepRun>& sweeps = {}, const std::vector<FrameRun>& frames = {});
 
 }  // namespace vsgl
