@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Files a run of ci/device-run.sh (its results.tar.gz, .tar.xz or .tar, brought back from the GPU
 # machine) under results/<device slug>/, keeping the run's own layout (devices.json, verify_*,
-# texture/ and buffer/ tables, mipbench.json, gbench.json, sweep/, tests/ with one gtest JSON per
+# texture/ and buffer/ tables, frame/, mipbench.json, gbench.json, sweep/, tests/ with one gtest JSON per
 # suite, run.log, build.env, each step's output), then regenerates results/dashboard/index.html
 # with `vsgl-bench dashboard` so the run shows there.
 #

@@ -2,7 +2,7 @@
 # Regenerates every committed lavapipe result from freshly recorded captures, in the order of
 # their importance: captures, verify, Tables 1-2, quality (every scene, with its sequence), the
 # reference ladder (Sponza against 2048^2 reference VPLs),
-# the shading pictures, the two compare reports, and the dashboard (+ screenshot when a headless
+# the shading pictures, the frame table, the two compare reports, and the dashboard (+ screenshot when a headless
 # Chromium is there). Each step's wall time goes to OUT/regenerate.log. Long: about 3 hours on
 # lavapipe on a 2-core machine (Sibenik's sequence and quality about 25 minutes of it). Not part of
 # .ci/run.
@@ -21,7 +21,7 @@
 # those cases are recorded as beyond the device and FIS is timed. VSGL_SWEEPS="rsm K" runs only
 # the sweeps named.
 # Usage: bash ci/lavapipe-results.sh [--stand-ins] [STEP...]   steps: record verify tables quality
-#        reference-ladder shade compare sweep dashboard (default: all, in that order). VSGL_BENCH=path/to/vsgl-bench to pick
+#        reference-ladder shade frame compare sweep dashboard (default: all, in that order). VSGL_BENCH=path/to/vsgl-bench to pick
 #        a build; the compare step's slowed run needs the test build of vsgl-bench beside it
 #        (tests/vsgl-bench-test-build of the same build folder, VSGL_BENCH_TEST_BUILD to pick it:
 #        the shipped program has no --debug-slow, docs/testing.md); --assets DIR is passed on to record and sweep (repeatable): the paper's scenes' models
@@ -46,7 +46,7 @@ while [[ $# -gt 0 ]]; do
   esac
   shift
 done
-[[ ${#steps[@]} -gt 0 ]] || steps=(record verify tables quality reference-ladder shade compare sweep dashboard)
+[[ ${#steps[@]} -gt 0 ]] || steps=(record verify tables quality reference-ladder shade frame compare sweep dashboard)
 if [[ $out == results/lavapipe && ${#assets[@]} -eq 0 && -z ${VSGL_ASSETS:-} && " ${steps[*]} " =~ " "(record|sweep|reference-ladder)" " ]]; then
   echo "ci/lavapipe-results.sh: where are the paper's scenes? pass --assets DIR or set VSGL_ASSETS (DIR/sponza, DIR/conference, DIR/sibenik), or use --stand-ins" >&2
   exit 2
@@ -103,8 +103,22 @@ for s in "${steps[@]}"; do
           --out "$out/reference-ladder"
       done ;;
     shade)
+      # Fig. 5 as the paper renders it: a 64^2 imperfect shadow map per VSGL (DESIGN.md §8.1), from
+      # the points the record step stores with each capture; and the same without visibility, to
+      # see what the maps take away.
       for scene in "${scenes[@]}"; do
-        step "shade $scene" "$bench" shade --capture "$caps/$scene" --stride 4 --validate --out "$out"
+        step "shade $scene" "$bench" shade --capture "$caps/$scene" --stride 4 --validate --visibility ism \
+          --out "$out/shade-ism"
+        step "shade $scene, no visibility" "$bench" shade --capture "$caps/$scene" --stride 4 --validate \
+          --visibility none --out "$out"
+      done ;;
+    frame)
+      # The paper's frame phase by phase (DESIGN.md §9.2): N 1024, 64^2 maps, the 512^2 RSM as
+      # recorded; the shading at G-buffer stride 8 (240x136), which frame.json records as not the
+      # paper's size: at 1920x1088 lavapipe shades one frame in about 4 minutes.
+      for scene in "${scenes[@]}"; do
+        step "frame $scene" "$bench" frame --capture "$caps/$scene" --stride 8 --quick --time-cap 60 \
+          --out "$out/frame/$scene" --no-progress
       done ;;
     compare)
       [[ -x "$test_build_bench" ]] || { echo "ci/lavapipe-results.sh: no $test_build_bench for the slowed run (build it: cmake --build --preset release --target vsgl-bench-test-build)" >&2; exit 2; }
