@@ -253,8 +253,11 @@ TEST(CaptureIo, VisibilityGeometryRoundTripsThroughTheSidecar) {
   EXPECT_EQ(sidecar["visibility_geometry"]["triangles"], 2);
   EXPECT_EQ(sidecar["visibility_geometry"]["points"], 3);
   EXPECT_EQ(sidecar["visibility_geometry"]["point_seed"], 0x1234567890abcdefull);
-  std::ifstream in(temp.path() / kVisibilityGeometryFile, std::ios::binary);
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string bytes;
+  {  // closed before the capture is written over (Windows does not remove an open file)
+    std::ifstream in(temp.path() / kVisibilityGeometryFile, std::ios::binary);
+    bytes.assign((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  }
   EXPECT_EQ(sidecar["visibility_geometry"]["hash"], bytes_hash(bytes));
   EXPECT_EQ(bytes.size(), 40u + 2 * 36 + 3 * 28);
 

@@ -15,6 +15,7 @@
 #include "harness/core/error.hpp"
 #include "harness/core/json_reader.hpp"
 #include "harness/formats/devices_model.hpp"
+#include "harness/formats/frame_model.hpp"
 #include "harness/formats/quality_model.hpp"
 #include "harness/formats/run_header.hpp"
 #include "harness/formats/sweep_model.hpp"
@@ -53,6 +54,8 @@ std::string read_through_model(const fs::path& file) {
   if (name == "sweep.json") return (void)read_sweep_file(file), "sweep";
   if (name == "quality.json")
     return (void)quality_model_from_json(read_json_file(file, "the quality report"), file.string()), "quality";
+  if (name == "frame.json")
+    return (void)frame_model_from_json(read_json_file(file, "the frame table"), file.string()), "frame";
   if (name == "paper_tables.json") return (void)load_paper_tables(file), "paper";
   if (name_starts_with(name, "table") || name == "gbench.json") return (void)load_bench_run(file), "run";
   return "";
@@ -67,7 +70,7 @@ TEST(CommittedResults, EveryDocumentReadsThroughItsModel) {
     EXPECT_FALSE(kind.empty()) << "no model reads this document";
     kinds.push_back(kind);
   }
-  for (const char* kind : {"devices", "verify", "sweep", "quality", "paper", "run"})
+  for (const char* kind : {"devices", "verify", "sweep", "quality", "frame", "paper", "run"})
     EXPECT_NE(std::find(kinds.begin(), kinds.end(), kind), kinds.end()) << "no committed " << kind << " document";
 }
 
