@@ -8,16 +8,11 @@
 #include <stdexcept>
 
 #include "harness/core/error.hpp"
+#include "harness/core/text_format.hpp"
 #include "harness/core/printable_text.hpp"
 
 namespace vsgl {
 namespace {
-
-std::string fixed(double v, int digits) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-  return buf;
-}
 
 std::string percent(double ratio_minus_one) {
   char buf[64];
@@ -144,9 +139,9 @@ std::string comparison_markdown(const BenchRun& base, const BenchRun& fresh, con
     const std::string name = r.total ? "**" + r.name + "**" : r.name;
     const std::string verdict = r.result.verdict == Verdict::kSame ? "SAME"
                                                                     : std::string("**") + verdict_name(r.result.verdict) + "**";
-    os << "| " << name << " | " << fixed(r.result.base_median, 4) << " | " << fixed(r.result.new_median, 4) << " | "
-       << percent(r.result.change) << " | " << p_text(r.result.p_value) << " | " << r.base_samples << "/" << r.new_samples
-       << " | " << verdict << " |\n";
+    os << "| " << name << " | " << fixed_text(r.result.base_median, 4) << " | " << fixed_text(r.result.new_median, 4)
+       << " | " << percent(r.result.change) << " | " << p_text(r.result.p_value) << " | " << r.base_samples << "/"
+       << r.new_samples << " | " << verdict << " |\n";
   }
   os << "\n## Summary\n\n";
   os << "- " << c.rows.size() << " rows compared: " << c.count(Verdict::kFaster) << " FASTER, " << c.count(Verdict::kSlower)

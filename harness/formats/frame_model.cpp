@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "harness/core/error.hpp"
+#include "harness/core/text_format.hpp"
 #include "harness/core/json_reader.hpp"
 #include "harness/core/statistics.hpp"
 
@@ -14,12 +15,6 @@ namespace vsgl {
 namespace {
 
 using ojson = nlohmann::ordered_json;
-
-std::string fixed(double v, int digits = 3) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-  return buf;
-}
 
 ojson stats_json(const TimingStatistics& s) { return to_json(s, StatisticsLayout::kTable); }
 
@@ -221,7 +216,7 @@ std::string frame_markdown(const FrameModel& m) {
   os << "Phases (each between two Vulkan timestamps, in one command buffer per frame, DESIGN.md §9.2):\n\n";
   for (const auto& n : frame_phase_names()) os << "- `" << n << "`: " << frame_phase_description(n) << "\n";
   os << "\nMedian of " << m.timing.repetitions << " rounds (stop: " << m.timing.stop_reason << ", worst IQR/median "
-     << fixed(m.timing.worst_relative_iqr) << ", " << fixed(m.timing.timed_seconds, 1)
+     << fixed_text(m.timing.worst_relative_iqr) << ", " << fixed_text(m.timing.timed_seconds, 1)
      << " s timed); the interval is the interquartile range [q1, q3]; the share is the median over the rounds of "
         "phase / frame. `frame` is the sum of the five phases in each round.\n";
   for (const auto& g : m.generators) {
@@ -229,11 +224,11 @@ std::string frame_markdown(const FrameModel& m) {
     os << "| phase | median (ms) | interval [q1, q3] (ms) | share of frame |\n|---|---:|---:|---:|\n";
     for (std::size_t p = 0; p < g.phases.size(); ++p) {
       const TimingStatistics& s = g.phases[p].stats;
-      os << "| " << g.phases[p].phase << " | " << fixed(s.median_ms) << " | [" << fixed(s.q1_ms) << ", "
-         << fixed(s.q3_ms) << "] | " << fixed(100 * frame_phase_share(g, p), 1) << " % |\n";
+      os << "| " << g.phases[p].phase << " | " << fixed_text(s.median_ms) << " | [" << fixed_text(s.q1_ms) << ", "
+         << fixed_text(s.q3_ms) << "] | " << fixed_text(100 * frame_phase_share(g, p), 1) << " % |\n";
     }
-    os << "| **frame** | **" << fixed(g.frame.median_ms) << "** | [" << fixed(g.frame.q1_ms) << ", "
-       << fixed(g.frame.q3_ms) << "] | 100 % |\n";
+    os << "| **frame** | **" << fixed_text(g.frame.median_ms) << "** | [" << fixed_text(g.frame.q1_ms) << ", "
+       << fixed_text(g.frame.q3_ms) << "] | 100 % |\n";
     os << "\n" << g.dispatch_calls << " dispatches per frame.\n";
   }
   return os.str();

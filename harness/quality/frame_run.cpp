@@ -7,6 +7,7 @@
 #include "harness/capture/capture_files.hpp"
 #include "harness/capture/visibility_geometry.hpp"
 #include "harness/core/atomic_file.hpp"
+#include "harness/core/text_format.hpp"
 #include "harness/core/embedded_files.hpp"
 #include "harness/core/error.hpp"
 #include "harness/core/json_schema_subset.hpp"
@@ -24,15 +25,6 @@
 
 namespace vsgl {
 namespace {
-
-std::string utc_now() {
-  const std::time_t now = std::time(nullptr);
-  std::tm tm{};
-  gmtime_r(&now, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return buf;
-}
 
 // One generator's frame as the timing runner sees a generator: five phases recorded into one
 // command buffer, the runner's boundary (a timestamp between full barriers) between them
@@ -152,7 +144,7 @@ FrameOutcome run_frame(Device& device, const FrameOptions& o,
   FrameModel& m = out.model;
   m.device = device_record(device.info());
   m.build = this_build();
-  m.run.started_utc = utc_now();
+  m.run.started_utc = utc_now_text();
   m.run.validation_layer = o.validation;
   m.run.quick = o.quick;
   m.run.protocol_compliant = o.timing.warmup >= 2 && o.timing.min_repetitions >= 10;

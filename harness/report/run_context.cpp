@@ -3,6 +3,7 @@
 #include <ctime>
 
 #include "harness/core/embedded_files.hpp"
+#include "harness/core/text_format.hpp"
 #include "harness/core/generator_ids.hpp"
 #include "harness/core/json_reader.hpp"
 #include "harness/generators/fis/fis_generator.hpp"
@@ -15,20 +16,11 @@ namespace {
 
 using ojson = nlohmann::ordered_json;
 
-std::string utc_now() {
-  const std::time_t now = std::time(nullptr);
-  std::tm tm{};
-  gmtime_r(&now, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return buf;
-}
-
 }  // namespace
 
 RunRecord run_record(const TablesOptions& o) {
   RunRecord run;
-  run.started_utc = utc_now();
+  run.started_utc = utc_now_text();
   run.validation_layer = o.validation;
   run.quick = o.quick;
   run.protocol_compliant = o.timing.warmup >= 2 && o.timing.min_repetitions >= 10;

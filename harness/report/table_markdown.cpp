@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "harness/core/error.hpp"
+#include "harness/core/text_format.hpp"
 #include "harness/core/generator_ids.hpp"
 #include "harness/report/table_claims.hpp"
 
@@ -13,12 +14,6 @@ namespace vsgl {
 namespace {
 
 using ojson = nlohmann::ordered_json;
-
-std::string fixed(double v, int digits = 3) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-  return buf;
-}
 
 std::string phase_title(const std::string& phase, const std::string& view) {
   if (phase == "additional") return view == "camera_view" ? "Additional G-buffer" : "Additional RSM";
@@ -30,10 +25,10 @@ std::string phase_title(const std::string& phase, const std::string& view) {
   return phase;
 }
 
-std::string signed_fixed(double v, int digits) { return (v > 0 ? "+" : "") + fixed(v, digits); }
+std::string signed_fixed(double v, int digits) { return (v > 0 ? "+" : "") + fixed_text(v, digits); }
 
 // Bytes and bytes/s in decimal units (GB = 1e9), as bandwidths are quoted.
-std::string gigabytes(double bytes, int digits = 2) { return fixed(bytes * 1e-9, digits); }
+std::string gigabytes(double bytes, int digits = 2) { return fixed_text(bytes * 1e-9, digits); }
 
 void row(std::ostringstream& os, const std::vector<std::string>& cells) {
   os << "|";
@@ -47,7 +42,7 @@ const T& need(const std::optional<T>& v, const char* what) {
   return *v;
 }
 
-std::string paper_cell(const std::optional<double>& v, int digits = 3) { return v ? fixed(*v, digits) : "—"; }
+std::string paper_cell(const std::optional<double>& v, int digits = 3) { return v ? fixed_text(*v, digits) : "—"; }
 
 // The generator's column name (its key when the file has no label).
 std::string label_of(const TableModel& t, const std::string& g) {
@@ -84,7 +79,7 @@ void write_heading(std::ostringstream& os, const TableModel& t, bool paper) {
     os << "; from " << src->format << " file `" << src->file << "` (" << src->triangles << " triangles, " << src->content_hash << ")";
   const TimingStop& timing = need(t.timing, "timing");
   os << ". Median of " << timing.repetitions << " repetitions (stop: " << timing.stop_reason << ", worst IQR/median "
-     << fixed(timing.worst_relative_iqr) << "), ms.\n\n";
+     << fixed_text(timing.worst_relative_iqr) << "), ms.\n\n";
 }
 
 // Per view the first three phases of every generator, then the generator totals.
@@ -112,7 +107,7 @@ void write_timing_table(std::ostringstream& os, const TableModel& t, bool paper)
           for (std::size_t i = 0; i < per_generator; ++i) cells.emplace_back("");
           continue;
         }
-        cells.push_back(phase_title(phases[p].phase, view) + ": " + fixed(phases[p].stats.median_ms));
+        cells.push_back(phase_title(phases[p].phase, view) + ": " + fixed_text(phases[p].stats.median_ms));
         if (paper) cells.push_back(paper_cell(phases[p].stats.paper_ms));
       }
       row(os, cells);
@@ -120,7 +115,7 @@ void write_timing_table(std::ostringstream& os, const TableModel& t, bool paper)
   }
   std::vector<std::string> total{"**Total**"};
   for (const GeneratorTiming& g : t.generators) {
-    total.push_back("**" + fixed(g.total.median_ms) + "**");
+    total.push_back("**" + fixed_text(g.total.median_ms) + "**");
     if (paper) total.push_back(paper_cell(g.total.paper_ms));
   }
   row(os, total);
@@ -136,27 +131,29 @@ void write_ratios(std::ostringstream& os, const TableRatios& r, bool paper) {
   ratio_row("ratio", "this run", "paper");
   ratio_row("---", "---:", "---:");
   for (const auto& [k, v] : r.modified_minus_tok15_us.value_or(KeyedRatios{}))
-    ratio_row("modified − Tok15, " + k + " (µs)", fixed(v.measured, 1), paper_cell(v.paper, 1));
+    ratio_row("modified − Tok15, " + k + " (µs)", fixed_text(v.measured, 1), paper_cell(v.paper, 1));
   for (const auto& [k, v] : r.kmeans_over_modified.value_or(KeyedRatios{}))
-    ratio_row(k + " / modified total", fixed(v.measured, 2), paper_cell(v.paper, 2));
+    ratio_row(k + " / modified total", fixed_text(v.measured, 2), paper_cell(v.paper, 2));
   for (const auto& [k, v] : r.table1_to_table2.value_or(KeyedRatios{}))
-    row(os, {k + " total, Table 2 / Table 1", fixed(v.measured, 3), paper_cell(v.paper, 3)});
+    row(os, {k + " total, Table 2 / Table 1", fixed_text(v.measured, 3), paper_cell(v.paper, 3)});
 }
 
 void write_paired(std::ostringstream& os, const PairedOverhead& p, bool paper) {
   os << "\n### Overhead of the modified FIS, paired by round (µs)\n\n"
      << "Per-round differences " << kFisModified << " − " << kFisTok15
      << " (same round, so drift and the shared passes' noise cancel): median, Hodges–Lehmann estimate and its "
-     << fixed(100 * p.nominal_confidence, 0) << " % distribution-free interval (Wilcoxon signed-rank).\n\n";
+     << fixed_text(100 * p.nominal_confidence, 0) << " % distribution-free interval (Wilcoxon signed-rank).\n\n";
   // The paper's column only for the paper's tables, as above.
   std::vector<std::string> columns{"difference", "median", "Hodges–Lehmann", "interval", "confidence", "rounds"};
   if (paper) columns.push_back("paper");
   row(os, columns);
   row(os, std::vector<std::string>(columns.size(), "---:"));
   const auto line = [&](const std::string& name, const PairedDifference& d) {
-    std::vector<std::string> cells{name, signed_fixed(d.median_us, 1), signed_fixed(d.hodges_lehmann_us, 1),
+    std::vector<std::string> cells{name,
+                                   signed_fixed(d.median_us, 1),
+                                   signed_fixed(d.hodges_lehmann_us, 1),
                                    "[" + signed_fixed(d.ci_low_us, 1) + ", " + signed_fixed(d.ci_high_us, 1) + "]",
-                                   fixed(100 * d.confidence, 1) + " %" + (d.reaches_nominal ? "" : " (short)"),
+                                   fixed_text(100 * d.confidence, 1) + " %" + (d.reaches_nominal ? "" : " (short)"),
                                    std::to_string(d.rounds)};
     if (paper) cells.push_back(paper_cell(d.paper_us, 1));
     row(os, cells);
@@ -172,9 +169,10 @@ void write_bandwidth(std::ostringstream& os, const TableModel& t, const TableBan
   const CopyBandwidthResult& copy = bw.copy;
   os << "\n### Physical limit: copy bandwidth and the streaming passes\n\n"
      << "Copy bandwidth (vkCmdCopyBuffer, read + written): **" << gigabytes(copy.bytes_per_s) << " GB/s** (buffers of "
-     << fixed(static_cast<double>(copy.buffer_bytes) / (1 << 20), 0) << " MiB, median of " << copy.samples_ms.size() << " copies";
+     << fixed_text(static_cast<double>(copy.buffer_bytes) / (1 << 20), 0) << " MiB, median of "
+     << copy.samples_ms.size() << " copies";
   if (!copy.reduced_because.empty())
-    os << "; smaller than the " << fixed(static_cast<double>(copy.requested_bytes) / (1 << 20), 0)
+    os << "; smaller than the " << fixed_text(static_cast<double>(copy.requested_bytes) / (1 << 20), 0)
        << " MiB asked: " << copy.reduced_because;
   os << "). Each pass's least traffic (" << bw.model << ") over its median time:\n\n";
   if (bw.passes.empty()) return;
@@ -183,11 +181,11 @@ void write_bandwidth(std::ostringstream& os, const TableModel& t, const TableBan
   for (const GeneratorTraffic& g : bw.passes)
     for (const auto& [view, passes] : g.views)
       for (const auto& [pass, v] : passes) {
-        std::string fraction = fixed(100 * v.fraction_of_copy, 1) + " %";
+        std::string fraction = fixed_text(100 * v.fraction_of_copy, 1) + " %";
         if (v.level_by_level_fraction_of_copy)
-          fraction += " (level by level: " + fixed(100 * *v.level_by_level_fraction_of_copy, 1) + " %)";
-        row(os, {label_of(t, g.generator), view, pass, fixed(static_cast<double>(v.min_bytes) * 1e-6, 1), fixed(v.median_ms),
-                 gigabytes(v.achieved_bytes_per_s), fraction});
+          fraction += " (level by level: " + fixed_text(100 * *v.level_by_level_fraction_of_copy, 1) + " %)";
+        row(os, {label_of(t, g.generator), view, pass, fixed_text(static_cast<double>(v.min_bytes) * 1e-6, 1),
+                 fixed_text(v.median_ms), gigabytes(v.achieved_bytes_per_s), fraction});
       }
 }
 
@@ -240,7 +238,7 @@ void write_table3(std::ostringstream& os, const TableModel& t, const std::vector
     os << "\n"
        << label_of(t, d->from) << " → " << label_of(t, d->to) << ": " << d->differing << " lines differ (" << d->removed
        << " removed, " << d->added << " added; net " << (d->net >= 0 ? "+" : "") << d->net << ")";
-    if (d->paper) os << "; the paper: " << fixed(*d->paper, 0) << " lines";
+    if (d->paper) os << "; the paper: " << fixed_text(*d->paper, 0) << " lines";
     os << ". " << counting->difference_rule << "\n";
   }
 }
