@@ -49,8 +49,8 @@ TEST(QualityCli, TinyCaptureWritesJsonMarkdownAndPictures) {
   const auto j = nlohmann::ordered_json::parse(in);
   EXPECT_EQ(j["schema"], "vsgl-quality");
   // stdev: sample (n - 1) since 3; flux origin and converged reference since 4; per-frame series
-  // since 5; the reference ladder since 6
-  EXPECT_EQ(j["schema_version"], 6);
+  // since 5; the reference ladder since 6; the errors against every rung since 7
+  EXPECT_EQ(j["schema_version"], 7);
   // What the writer writes is what the committed schema describes.
   for (const std::string& problem : validate_against_schema(
            j, test::read_json(std::filesystem::path(VSGL_SOURCE_DIR) / "results/schema/quality.schema.json")))
@@ -195,7 +195,17 @@ TEST(QualityCli, TinyCaptureWritesJsonMarkdownAndPictures) {
     EXPECT_EQ(j["k_sweep"][g][0]["per_frame_second_rung"]["relative_rmse"]["per_frame"],
               fs["generators"][g]["second_rung"]["relative_rmse"]["per_frame"])
         << g;
+    // ... and against the coarser rungs, strides 16 and 8 (schema 7), each a different image.
+    const auto& coarse = fs["generators"][g]["coarse_rungs"];
+    ASSERT_EQ(coarse.size(), 2u) << g;
+    EXPECT_EQ(coarse[0]["p99_pixel_error"]["per_frame"].size(), 3u) << g;
+    EXPECT_NE(coarse[0]["relative_rmse"]["per_frame"], coarse[1]["relative_rmse"]["per_frame"]) << g;
+    for (const auto& row : j["k_sweep"][g]) EXPECT_EQ(row["per_frame_coarse_rungs"].size(), 2u) << g;
+    EXPECT_EQ(j["k_sweep"][g][0]["per_frame_coarse_rungs"][1]["relative_rmse"]["per_frame"],
+              coarse[1]["relative_rmse"]["per_frame"])
+        << g;
   }
+  EXPECT_EQ(fs["coarse_rung_strides"], nlohmann::ordered_json::array({16, 8}));
   bool tail = false;
   for (const auto& c : j["claims"])
     if (c["measure"].get<std::string>().rfind("tail error", 0) == 0) {
@@ -204,6 +214,10 @@ TEST(QualityCli, TinyCaptureWritesJsonMarkdownAndPictures) {
       EXPECT_EQ(c["reference_rate"], ladder["metrics"]["p99_pixel_error"]["rate"]);
       EXPECT_EQ(c["reference_remaining_error"], ladder["metrics"]["p99_pixel_error"]["remaining_error"]);
       EXPECT_TRUE(c["second_rung"].contains("verdict")) << c.dump();
+      // The ratio against each of the four rungs, the reference's last (DESIGN.md §11a *Rule*).
+      ASSERT_EQ(c["rung_estimates"].size(), 4u) << c.dump();
+      EXPECT_EQ(c["rung_estimates"][3], c["estimate"]) << c.dump();
+      EXPECT_EQ(c["rung_estimates"][2], c["second_rung"]["estimate"]) << c.dump();
     }
   EXPECT_TRUE(tail) << j["claims"].dump();
 }

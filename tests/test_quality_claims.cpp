@@ -2,8 +2,8 @@
 // series whose answer is known: a clear reduction holds, a clear increase does not hold, a series
 // that straddles the bound is inconclusive; and the reference's rule (DESIGN.md §11a *Rule*,
 // quality/quality_reference.hpp) on made-up ladders: a claim on an error against the reference is
-// "reference not converged" unless (1 + b) eps_inf is below the distance and its verdict against
-// the stride-2 rung is the same.
+// "reference not converged" unless its interval, widened by how far the claim may still move as
+// the reference's RSM side doubles, gives the same verdict, and so does the stride-2 rung.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -37,7 +37,7 @@ ReferenceLadderMetric ladder_of(double own, double rate) {
 // converged reference (eps_inf 0.001 in both metrics the claims judge).
 QualityModel minimal_model() {
   QualityModel m;
-  m.schema_version = 6;
+  m.schema_version = 7;
   m.scene = "made-up";
   m.gbuffer_size = nlohmann::ordered_json::array({16, 8});
   m.rsm_size = nlohmann::ordered_json::array({8, 8});
@@ -145,67 +145,120 @@ TEST(QualityClaims, AnErrorClaimWaitsForAConvergedReference) {
   tok["relative_rmse"] = frames_of(0.3, 1.0);
   mod["relative_rmse"] = frames_of(0.3, 1.0);
   km["relative_rmse"] = frames_of(0.3, 1.0);  // modified equal to k-means: within 10 %
-  // Against the stride-2 rung the same frames, a little higher: the same verdicts.
-  for (const std::string& g : {kTok, kMod, kKm3})
-    for (const char* metric : {"p99_pixel_error", "relative_rmse"})
-      if (m.frames_static->generators[g].contains(metric))
-        for (double v : m.frames_static->generators[g][metric])
-          m.frames_static->second_rung[g][metric].push_back(1.01 * v);
+  // Against every coarser rung the same frames, a little higher: the claims do not move.
+  const auto scaled_rungs = [&](double factor) {
+    for (const std::string& g : {kTok, kMod, kKm3})
+      for (const char* metric : {"p99_pixel_error", "relative_rmse"})
+        if (m.frames_static->generators[g].contains(metric)) {
+          std::vector<double>& second = m.frames_static->second_rung[g][metric];
+          second.clear();
+          for (double v : m.frames_static->generators[g][metric]) second.push_back(factor * v);
+        }
+  };
+  scaled_rungs(1.01);
   nlohmann::ordered_json converged = m;
   add_claim_verdicts(converged);
   EXPECT_EQ(verdict_of(converged, "tail error"), "holds");
   EXPECT_EQ(verdict_of(converged, "k-means margin, kmeans_3d"), "holds");
-  // The claim keeps what the rule read: eps_inf 0.001, (1 + 1) x 0.001, the distance |1.6 - 2.0|,
-  // and the second rung's verdict.
+  // The claim keeps what the rule read: the ladder's own error, rate and eps_inf, the statistic per
+  // rung, its remaining movement, the widened interval, and the second rung's verdict.
   const auto tail = claim_of(converged, "tail error");
   EXPECT_EQ(tail.at("reference_metric"), "p99_pixel_error");
   EXPECT_NEAR(tail.at("reference_own_error").get<double>(), 0.001, 1e-15);
   EXPECT_NEAR(tail.at("reference_rate").get<double>(), 0.5, 1e-12);
   EXPECT_NEAR(tail.at("reference_remaining_error").get<double>(), 0.001, 1e-12);
-  EXPECT_NEAR(tail.at("reference_margin").get<double>(), 0.002, 1e-12);
-  EXPECT_NEAR(tail.at("judged_distance").get<double>(), 0.2 * tail.at(kTok).get<double>(), 1e-12);
+  ASSERT_EQ(tail.at("rung_estimates").size(), 2u);
+  EXPECT_NEAR(tail.at("rung_estimates")[0].get<double>(), 0.8, 1e-12);
+  EXPECT_NEAR(tail.at("rung_estimates")[1].get<double>(), 0.8, 1e-12);
+  EXPECT_NEAR(tail.at("reference_movement").get<double>(), 0.0, 1e-12);
+  EXPECT_NEAR(tail.at("widened_interval")[1].get<double>(), tail.at("interval")[1].get<double>(), 1e-12);
   EXPECT_EQ(tail.at("second_rung").at("verdict"), "holds");
   EXPECT_LT(tail.at("second_rung").at("interval")[1].get<double>(), 1.0);
+  EXPECT_FALSE(tail.contains("reference_margin"));
 
-  // The p99 ladder at 0.9 per doubling, own 0.05: eps_inf = 0.45, and (1 + 1) x 0.45 = 0.9 is not
-  // below the distance 0.2 x 1.9975 (the frames' mean). The k-means margin, on another metric's ladder, still holds.
+  // Against the stride-2 rung modified's tail is 15 % higher: the ratio moves 0.8 -> 0.911. On a
+  // ladder of rate 0.5 the movement 0.111 leaves the widened interval below 1; at 0.9 (9 x 0.111)
+  // it reaches 1. The k-means margin, on another metric's ladder, still holds.
+  for (double& v : m.frames_static->second_rung[kMod]["p99_pixel_error"]) v *= 1.15;
+  nlohmann::ordered_json moved = m;
+  add_claim_verdicts(moved);
+  EXPECT_EQ(verdict_of(moved, "tail error"), "holds");
   m.reference_detail->ladder->metrics["p99_pixel_error"] = ladder_of(0.05, 0.9);
   nlohmann::ordered_json unconverged = m;
   add_claim_verdicts(unconverged);
   EXPECT_TRUE(not_converged(verdict_of(unconverged, "tail error"))) << verdict_of(unconverged, "tail error");
-  EXPECT_NE(verdict_of(unconverged, "tail error").find("(1 + 1) x 0.45 = 0.9 >= distance 0.399"), std::string::npos)
+  EXPECT_NE(verdict_of(unconverged, "tail error").find("over the rungs, rate 0.9, remaining 1"), std::string::npos)
       << verdict_of(unconverged, "tail error");
   EXPECT_EQ(verdict_of(unconverged, "k-means margin, kmeans_3d"), "holds");
-  EXPECT_TRUE(claim_of(unconverged, "tail error").at("reference_margin").is_number());
 
-  // A converged ladder, but against the stride-2 rung modified is no better than Tok15: the two
-  // rungs disagree, so the reference does not decide.
+  // The coarser rungs count too: the same claim, still at rate 0.5 and unmoved at stride 2, but 60 %
+  // higher for modified at stride 4, is not decided ((1.267 - 0.8) x 0.5 = 0.233 of movement).
   m.reference_detail->ladder->metrics["p99_pixel_error"] = ladder_of(0.001, 0.5);
+  scaled_rungs(1.01);
+  m.frames_static->coarse_rung_strides = {8, 4};
+  for (const std::string& g : {kTok, kMod, kKm3}) {
+    m.frames_static->coarse_rungs[g] = {m.frames_static->second_rung[g], m.frames_static->second_rung[g]};
+    if (g == kMod)
+      for (double& v : m.frames_static->coarse_rungs[g][1]["p99_pixel_error"]) v *= 1.6;
+  }
+  nlohmann::ordered_json coarse = m;
+  add_claim_verdicts(coarse);
+  EXPECT_TRUE(not_converged(verdict_of(coarse, "tail error"))) << verdict_of(coarse, "tail error");
+  EXPECT_EQ(claim_of(coarse, "tail error").at("rung_estimates").size(), 4u);
+  EXPECT_EQ(verdict_of(coarse, "k-means margin, kmeans_3d"), "holds");
+  // ... and read back, the document keeps the coarser rungs.
+  const QualityModel back = quality_model_from_json(coarse, "made up");
+  EXPECT_EQ(back.frames_static->coarse_rung_strides, (std::vector<uint32_t>{8, 4}));
+  EXPECT_EQ(back.frames_static->coarse_rungs.at(kMod).size(), 2u);
+  m.frames_static->coarse_rungs.clear();
+  m.frames_static->coarse_rung_strides.clear();
+
+  // Against the stride-2 rung modified is no better than Tok15: the two rungs disagree, so the
+  // reference does not decide.
   m.frames_static->second_rung[kMod]["p99_pixel_error"] = m.frames_static->second_rung[kTok]["p99_pixel_error"];
   nlohmann::ordered_json disagree = m;
   add_claim_verdicts(disagree);
   EXPECT_TRUE(not_converged(verdict_of(disagree, "tail error"))) << verdict_of(disagree, "tail error");
-  EXPECT_NE(verdict_of(disagree, "tail error").find("holds against the reference, inconclusive against its stride-2"),
-            std::string::npos)
-      << verdict_of(disagree, "tail error");
-  EXPECT_EQ(claim_of(disagree, "tail error").at("second_rung").at("verdict"), "inconclusive");
+  EXPECT_TRUE(not_converged(verdict_of(disagree, "tail error")));
 
   // No stride-2 series: not decided either.
   m.frames_static->second_rung.clear();
   nlohmann::ordered_json no_second = m;
   add_claim_verdicts(no_second);
-  EXPECT_TRUE(not_converged(verdict_of(no_second, "tail error")));
+  EXPECT_EQ(verdict_of(no_second, "tail error"), "reference not converged (no estimate against the stride-2 rung)");
   EXPECT_EQ(claim_of(no_second, "tail error").at("second_rung").at("verdict"), "not measured");
 
   // The worst frame must agree with the interval.
-  for (const std::string& g : {kTok, kMod, kKm3})
-    for (const char* metric : {"p99_pixel_error", "relative_rmse"})
-      if (m.frames_static->generators[g].contains(metric))
-        m.frames_static->second_rung[g][metric] = m.frames_static->generators[g][metric];
+  scaled_rungs(1.0);
   mod["p99_pixel_error"][3] = 10.0;
   nlohmann::ordered_json worst = m;
   add_claim_verdicts(worst);
   EXPECT_NE(verdict_of(worst, "tail error"), "holds");
+}
+
+// A document before schema 7 was judged by an earlier rule: the reference-decided verdicts it
+// carries are kept as written, not judged again; without a ladder (schema 5) and without written
+// verdicts, nothing is decided.
+TEST(QualityClaims, ADocumentOfAnEarlierRuleKeepsItsReferenceVerdicts) {
+  QualityModel m = minimal_model();
+  m.schema_version = 6;
+  m.frames_static->generators[kTok]["p99_pixel_error"] = frames_of(2.0, 1.0);
+  m.frames_static->generators[kMod]["p99_pixel_error"] = frames_of(2.0, 0.8);
+  for (const std::string& g : {kTok, kMod})
+    m.frames_static->second_rung[g]["p99_pixel_error"] = m.frames_static->generators[g]["p99_pixel_error"];
+  nlohmann::ordered_json written = m;
+  add_claim_verdicts(written);
+  EXPECT_EQ(verdict_of(written, "tail error"), "holds");
+  for (auto& c : written.at("claims"))
+    if (c.at("measure").get<std::string>().rfind("tail error", 0) == 0) c["verdict"] = "reference not converged (x)";
+  add_claim_verdicts(written);
+  EXPECT_EQ(verdict_of(written, "tail error"), "reference not converged (x)");
+  // Schema 7 judges again.
+  m.schema_version = 7;
+  nlohmann::ordered_json current = m;
+  current["claims"] = written.at("claims");
+  add_claim_verdicts(current);
+  EXPECT_EQ(verdict_of(current, "tail error"), "holds");
 }
 
 // A schema-5 document has no ladder: the reference-decided verdicts it carries are kept as written,
@@ -260,86 +313,105 @@ TEST(QualityReferenceRule, TheRateComesFromThreeSuccessiveDifferences) {
   EXPECT_TRUE(std::isinf(reference_ladder_metric({0.08, std::nan(""), 0.02}).remaining));
 }
 
-ClaimVerdict verdict(Outcome outcome) {
-  ClaimVerdict v;
-  v.outcome = outcome;
-  v.rule = "interval below 1";
-  return v;
-}
-
-// A ratio claim with bound 1, distance 0.1, the same verdict against both rungs.
-ReferenceClaim ratio_claim(double distance, Outcome finest = Outcome::kHolds, Outcome second = Outcome::kHolds) {
+// A claim below bound 1 whose interval against the reference is [low, high], with the statistic
+// against each rung `estimates` (coarsest first, the reference's last) and the stride-2 verdict.
+ReferenceClaim below_one(double low, double high, std::vector<double> estimates,
+                         std::optional<Outcome> second = std::nullopt) {
   ReferenceClaim c;
-  c.ratio = true;
+  c.below = true;
   c.bound = 1.0;
-  c.distance = distance;
-  c.finest = verdict(finest);
-  c.second_rung = verdict(second);
+  c.finest = judge_below({low, high}, 1.0);
+  c.rung_estimates = std::move(estimates);
+  c.second_rung = judge_below({low, high}, 1.0);
+  if (second) c.second_rung->outcome = *second;
   return c;
 }
 
-TEST(QualityReferenceRule, AConvergedLadderDecides) {
-  const ReferenceLadderMetric ladder = reference_ladder_metric({0.08, 0.04, 0.02});  // eps_inf 0.02
-  const ClaimVerdict v = reference_decides(&ladder, ratio_claim(0.1));               // (1 + 1) x 0.02 = 0.04 < 0.1
-  EXPECT_TRUE(v.holds()) << v.reason;
-  EXPECT_TRUE(v.reason.empty());
-  EXPECT_NE(v.rule.find("interval below 1, decided only where (1 + b)"), std::string::npos) << v.rule;
-  // The rule decides, it does not judge: a verdict that does not hold on both rungs stays so.
-  EXPECT_TRUE(reference_decides(&ladder, ratio_claim(0.1, Outcome::kDoesNotHold, Outcome::kDoesNotHold)).fails());
+TEST(QualityReferenceRule, TheRemainingMovementIsTheLargestExtrapolatedStep) {
+  // Steps from the finest: 0.01, 0.02, 0.1; at rate 0.5 weighted 0.01, 0.01, 0.025; the largest,
+  // times 0.5 / (1 - 0.5).
+  EXPECT_NEAR(reference_movement(0.5, {1.0, 1.1, 1.12, 1.13}), 0.025, 1e-15);
+  // Two estimates: the one step's geometric tail.
+  EXPECT_NEAR(reference_movement(0.75, {0.9, 0.92}), 0.06, 1e-15);
+  // A step the claim did not move: no movement to come.
+  EXPECT_EQ(reference_movement(0.5, {0.9, 0.9, 0.9}), 0.0);
+  // No rate below 1, fewer than two estimates, an estimate that is not finite: infinite.
+  const double nan = std::nan("");
+  for (double m : {reference_movement(1.0, {0.9, 0.92}), reference_movement(nan, {0.9, 0.92}),
+                   reference_movement(0.5, {0.9}), reference_movement(0.5, {nan, 0.9, 0.92})})
+    EXPECT_TRUE(std::isinf(m));
 }
 
-TEST(QualityReferenceRule, ASlowOrDivergentLadderDoesNotDecide) {
-  // 0.9 per doubling: eps_inf = 9 x own = 0.18, and (1 + 1) x 0.18 = 0.36 >= 0.1.
-  const ReferenceLadderMetric slow = ladder_of(0.02, 0.9);
-  const ClaimVerdict v = reference_decides(&slow, ratio_claim(0.1));
+TEST(QualityReferenceRule, AClaimThatStaysClearOfTheBoundDecides) {
+  const ReferenceLadderMetric ladder = reference_ladder_metric({0.08, 0.04, 0.02});  // rate 0.5
+  // Steps 0.04, 0.03, 0.005 (coarsest first): the movement 0.015; [0.785, 0.865] is below 1.
+  const ClaimVerdict v = reference_decides(&ladder, below_one(0.80, 0.85, {0.9, 0.86, 0.83, 0.825}));
+  EXPECT_TRUE(v.holds()) << v.reason;
+  EXPECT_TRUE(v.reason.empty());
+  EXPECT_NE(v.rule.find("interval below 1, decided only where the interval widened"), std::string::npos) << v.rule;
+  // The rule decides, it does not judge: an interval wholly above the bound stays "does not hold".
+  ReferenceClaim above = below_one(1.10, 1.15, {1.2, 1.15, 1.13, 1.125}, Outcome::kDoesNotHold);
+  above.finest = judge_below({1.10, 1.15}, 1.0);
+  EXPECT_TRUE(reference_decides(&ladder, above).fails());
+}
+
+TEST(QualityReferenceRule, AClaimThatMovesAsFarAsTheBoundIsNotDecided) {
+  const ReferenceLadderMetric ladder = reference_ladder_metric({0.08, 0.04, 0.02});  // rate 0.5
+  // The last step 0.035 alone: [0.915, 1.015] reaches 1.
+  const ClaimVerdict v = reference_decides(&ladder, below_one(0.95, 0.98, {0.80, 0.88, 0.93, 0.965}));
   EXPECT_TRUE(v.inconclusive());
-  EXPECT_EQ(v.reason,
-            "reference not converged (own 0.02, rate 0.9, remaining 0.18: (1 + 1) x 0.18 = 0.36 >= distance 0.1)");
+  EXPECT_EQ(v.reason.rfind("reference not converged (the claim moved 0.08, 0.05, 0.035 over the rungs, rate 0.5, "
+                           "remaining 0.035: the widened interval [0.915, 1.0",
+                           0),
+            0u)
+      << v.reason;
+  EXPECT_NE(v.reason.find("] reaches the bound 1)"), std::string::npos) << v.reason;
+  // A last step that happens to be tiny does not hide a large earlier one: 0.145 at stride 4 to 2,
+  // shrinking by 0.5 to 0.072, widens [0.93, 0.96] past 1.
+  EXPECT_TRUE(reference_decides(&ladder, below_one(0.93, 0.96, {0.70, 0.80, 0.9449, 0.945})).inconclusive());
+  // The same claim on a faster reference decides: at rate 0.1 the movement is 0.0145.
+  const ReferenceLadderMetric fast = reference_ladder_metric({0.2, 0.02, 0.002});
+  EXPECT_TRUE(reference_decides(&fast, below_one(0.93, 0.96, {0.70, 0.80, 0.9449, 0.945})).holds());
+  // A "does not hold" whose widened interval reaches the bound is not decided either.
+  ReferenceClaim above = below_one(1.01, 1.03, {1.3, 1.2, 1.1, 1.02}, Outcome::kDoesNotHold);
+  EXPECT_TRUE(reference_decides(&ladder, above).inconclusive());
+}
+
+TEST(QualityReferenceRule, ASlowOrDivergentLadderOrAMissingRungDoesNotDecide) {
   // Rate 1 or more, a NaN difference: the reference does not converge.
   for (const ReferenceLadderMetric& l :
        {reference_ladder_metric({0.02, 0.02, 0.02}), reference_ladder_metric({0.01, 0.02, 0.04}),
         reference_ladder_metric({0.08, std::nan(""), 0.02})}) {
-    const ClaimVerdict d = reference_decides(&l, ratio_claim(10.0));
+    const ClaimVerdict d = reference_decides(&l, below_one(0.5, 0.6, {0.55, 0.55}));
     EXPECT_TRUE(d.inconclusive());
-    EXPECT_EQ(d.reason.rfind("reference not converged (own 0.0", 0), 0u) << d.reason;
     EXPECT_NE(d.reason.find("does not converge"), std::string::npos) << d.reason;
   }
-  // A NaN distance, one difference (no rate), no ladder at all.
   const ReferenceLadderMetric fast = reference_ladder_metric({0.08, 0.04, 0.02});
-  EXPECT_TRUE(reference_decides(&fast, ratio_claim(std::nan(""))).inconclusive());
   const ReferenceLadderMetric one = reference_ladder_metric({0.001});
-  EXPECT_EQ(reference_decides(&one, ratio_claim(10.0)).reason,
+  EXPECT_EQ(reference_decides(&one, below_one(0.5, 0.6, {0.55, 0.55})).reason,
             "reference not converged (no rate: 1 successive difference(s) of the rungs, two needed)");
-  EXPECT_EQ(reference_decides(nullptr, ratio_claim(10.0)).reason, "reference not converged (no reference ladder)");
-}
-
-TEST(QualityReferenceRule, TheEdgeAndTheFactorOfADifference) {
-  const ReferenceLadderMetric ladder = reference_ladder_metric({0.08, 0.04, 0.02});  // eps_inf 0.02
-  // A distance of exactly (1 + b) eps_inf is not decided (the margin must be below it).
-  const double edge = reference_margin(ladder, ratio_claim(0.0));
-  EXPECT_DOUBLE_EQ(edge, 0.04);
-  EXPECT_TRUE(reference_decides(&ladder, ratio_claim(edge)).inconclusive());
-  EXPECT_TRUE(reference_decides(&ladder, ratio_claim(std::nextafter(edge, 1.0))).holds());
-  // The bound scales a ratio's margin: b = 5 gives 6 x 0.02 = 0.12 ...
-  ReferenceClaim wide = ratio_claim(0.05);
-  wide.bound = 5.0;
-  EXPECT_DOUBLE_EQ(reference_margin(ladder, wide), 0.12);
-  EXPECT_TRUE(reference_decides(&ladder, wide).inconclusive());
-  // ... but not a difference's, whose margin is 2 eps_inf = 0.04 < 0.05.
-  wide.ratio = false;
-  EXPECT_DOUBLE_EQ(reference_margin(ladder, wide), 0.04);
-  EXPECT_TRUE(reference_decides(&ladder, wide).holds());
+  EXPECT_EQ(reference_decides(nullptr, below_one(0.5, 0.6, {0.55, 0.55})).reason,
+            "reference not converged (no reference ladder)");
+  EXPECT_EQ(reference_decides(&fast, below_one(0.5, 0.6, {0.55})).reason,
+            "reference not converged (no estimate against the stride-2 rung)");
+  ReferenceClaim no_interval = below_one(0.5, 0.6, {0.55, 0.55});
+  no_interval.finest.interval.reset();
+  EXPECT_EQ(reference_decides(&fast, no_interval).reason,
+            "reference not converged (no interval against the reference)");
+  // An interval that reaches the bound by itself keeps its own reason.
+  ReferenceClaim touching = below_one(0.9, 1.1, {1.0, 1.0});
+  touching.finest.reason = "inconclusive: the 95 % interval reaches the bound";
+  EXPECT_EQ(reference_decides(&fast, touching).reason, "inconclusive: the 95 % interval reaches the bound");
 }
 
 TEST(QualityReferenceRule, VerdictsThatDifferBetweenTheRungsDoNotDecide) {
   const ReferenceLadderMetric ladder = reference_ladder_metric({0.08, 0.04, 0.02});
-  const ClaimVerdict v = reference_decides(&ladder, ratio_claim(0.1, Outcome::kHolds, Outcome::kInconclusive));
+  const ClaimVerdict v = reference_decides(&ladder, below_one(0.5, 0.6, {0.55, 0.55}, Outcome::kInconclusive));
   EXPECT_TRUE(v.inconclusive());
   EXPECT_EQ(v.reason,
             "reference not converged (the verdicts differ: holds against the reference, inconclusive against its "
             "stride-2 rung)");
-  EXPECT_TRUE(reference_decides(&ladder, ratio_claim(0.1, Outcome::kDoesNotHold, Outcome::kHolds)).inconclusive());
-  ReferenceClaim unmeasured = ratio_claim(0.1);
+  ReferenceClaim unmeasured = below_one(0.5, 0.6, {0.55, 0.55});
   unmeasured.second_rung.reset();
   EXPECT_EQ(reference_decides(&ladder, unmeasured).reason,
             "reference not converged (no verdict against the stride-2 rung)");

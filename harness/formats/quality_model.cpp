@@ -165,6 +165,25 @@ FrameSeries read_series(const JsonReader& r, const json& o, const std::string& p
   return series;
 }
 
+// Series against several rungs (schema 7), coarsest first.
+json series_list_json(const std::vector<FrameSeries>& list) {
+  json out = json::array();
+  for (const FrameSeries& s : list) out.push_back(series_json(s));
+  return out;
+}
+
+std::vector<FrameSeries> read_series_list(const JsonReader& r, const json& o, const std::string& p,
+                                          std::string_view key) {
+  std::vector<FrameSeries> list;
+  const std::string lp = r.child(p, key);
+  for (std::size_t i = 0; const json& s : r.array(o, p, key)) {
+    const std::string sp = r.element(lp, i++);
+    if (!s.is_object()) r.wrong_type(s, sp, "an object");
+    list.push_back(read_series(r, s, sp));
+  }
+  return list;
+}
+
 // A generator's worst frame: the one of largest relative RMSE.
 json frame_errors_json(const FrameErrors& f) {
   json gens = json::object();
@@ -173,6 +192,8 @@ json frame_errors_json(const FrameErrors& f) {
     if (const auto it = series.find("relative_rmse"); it != series.end())
       g["worst_frame"] = std::max_element(it->second.begin(), it->second.end()) - it->second.begin();
     if (const auto it = f.second_rung.find(name); it != f.second_rung.end()) g["second_rung"] = series_json(it->second);
+    if (const auto it = f.coarse_rungs.find(name); it != f.coarse_rungs.end())
+      g["coarse_rungs"] = series_list_json(it->second);
     gens[name] = g;
   }
   json out{{"gbuffer_stride", f.gbuffer_stride},
@@ -181,6 +202,7 @@ json frame_errors_json(const FrameErrors& f) {
            {"flip", json{{"exposure", f.flip_exposure}, {"pixels_per_degree", f.flip_pixels_per_degree}}},
            {"generators", gens}};
   if (!f.second_rung_reference.empty()) out["second_rung_reference"] = f.second_rung_reference;
+  if (!f.coarse_rung_strides.empty()) out["coarse_rung_strides"] = f.coarse_rung_strides;
   return out;
 }
 
@@ -198,8 +220,17 @@ FrameErrors read_frame_errors(const JsonReader& r, const json& o, const std::str
     f.generators[g] = read_series(r, r.object(v, gp, "series"), gp + "/series");
     if (const json* second = r.optional_object(v, gp, "second_rung"))
       f.second_rung[g] = read_series(r, *second, gp + "/second_rung");
+    if (v.contains("coarse_rungs")) f.coarse_rungs[g] = read_series_list(r, v, gp, "coarse_rungs");
   }
   f.second_rung_reference = r.optional_string(o, p, "second_rung_reference").value_or("");
+  if (o.contains("coarse_rung_strides"))
+    for (std::size_t i = 0; const json& s : r.array(o, p, "coarse_rung_strides"))
+      f.coarse_rung_strides.push_back(static_cast<uint32_t>(r.uint64(s, r.element(p + "/coarse_rung_strides", i++))));
+  for (const auto& [g, rungs] : f.coarse_rungs)
+    if (rungs.size() != f.coarse_rung_strides.size())
+      r.fail(p + "/generators/" + g + "/coarse_rungs", "has " + std::to_string(rungs.size()) + " rung(s), but " +
+                                                           std::to_string(f.coarse_rung_strides.size()) +
+                                                           " coarse_rung_strides");
   return f;
 }
 
@@ -399,6 +430,8 @@ json k_sweep_json(const std::vector<std::pair<std::string, std::vector<KSweepRow
              {"power", power_json(row.power)}};
       if (!row.per_frame.empty()) r["per_frame"] = series_json(row.per_frame);
       if (!row.per_frame_second_rung.empty()) r["per_frame_second_rung"] = series_json(row.per_frame_second_rung);
+      if (!row.per_frame_coarse_rungs.empty())
+        r["per_frame_coarse_rungs"] = series_list_json(row.per_frame_coarse_rungs);
       out.push_back(r);
     }
     sweep[name] = out;
@@ -564,15 +597,23 @@ std::vector<KSweepRow> read_k_sweep_rows(const JsonReader& r, const json& rows, 
     const std::string p = r.element(gp, i);
     const json& row = rows[i];
     if (!row.is_object()) r.wrong_type(row, p, "an object");
-    out.push_back({r.number(row, p, "K"), r.number(row, p, "weighted_cv"), r.number(row, p, "power_stdev"),
-                   r.number(row, p, "power_relative_stdev"), r.uint32(row, p, "frames"),
+    out.push_back({r.number(row, p, "K"),
+                   r.number(row, p, "weighted_cv"),
+                   r.number(row, p, "power_stdev"),
+                   r.number(row, p, "power_relative_stdev"),
+                   r.uint32(row, p, "frames"),
                    read_error(r, r.object(row, p, "error"), p + "/error"),
                    read_coverage(r, r.object(row, p, "coverage"), p + "/coverage"),
-                   read_power(r, r.object(row, p, "power"), p + "/power"), FrameSeries{}, FrameSeries{}});
+                   read_power(r, r.object(row, p, "power"), p + "/power"),
+                   FrameSeries{},
+                   FrameSeries{},
+                   {}});
     if (const json* series = r.optional_object(row, p, "per_frame"))
       out.back().per_frame = read_series(r, *series, p + "/per_frame");
     if (const json* series = r.optional_object(row, p, "per_frame_second_rung"))
       out.back().per_frame_second_rung = read_series(r, *series, p + "/per_frame_second_rung");
+    if (row.contains("per_frame_coarse_rungs"))
+      out.back().per_frame_coarse_rungs = read_series_list(r, row, p, "per_frame_coarse_rungs");
   }
   return out;
 }

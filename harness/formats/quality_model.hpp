@@ -122,6 +122,11 @@ struct FrameErrors {
   // §11a *Rule*); empty where there is no such rung, and for the animated frames.
   std::map<std::string, FrameSeries> second_rung;
   std::string second_rung_reference;  // what second_rung is compared with; "" where it is empty
+  // Schema 7, static frames: the same against each rung coarser than the stride-2 one, coarsest
+  // first, their RSM strides in coarse_rung_strides, so a reference-decided claim is computed
+  // against every rung of the ladder (DESIGN.md §11a *Rule*); empty where the ladder has none.
+  std::vector<uint32_t> coarse_rung_strides;
+  std::map<std::string, std::vector<FrameSeries>> coarse_rungs;
 };
 
 struct KSweepRow {
@@ -135,6 +140,8 @@ struct KSweepRow {
   // Schema 6: "relative_rmse" of the same frames against the reference's stride-2 rung (the rule's
   // second verdict, DESIGN.md §11a); empty where there is no such rung.
   FrameSeries per_frame_second_rung;
+  // Schema 7: the same against each coarser rung, in frames_static's coarse_rung_strides order.
+  std::vector<FrameSeries> per_frame_coarse_rungs;
 };
 
 // The converged reference of schema 4 (DESIGN.md §11a): how far coarser RSM strides are from it,

@@ -48,11 +48,13 @@ std::string num(double v) {
 enum class Quantity { kRatio, kDifference };
 
 // What a claim on an error against the reference is decided by (DESIGN.md §11a *Rule*): the
-// metric's ladder, and the same series against the reference's stride-2 rung.
+// metric's ladder, and the same two series against every coarser rung of it.
 struct ReferenceSide {
+  using Pair = std::pair<std::span<const double>, std::span<const double>>;
   std::string metric;
   const ReferenceLadderMetric* ladder = nullptr;  // none in a schema-5 document
-  std::span<const double> a_second, b_second;     // empty: not measured against the stride-2 rung
+  std::vector<Pair> coarse;                       // a and b against each rung coarser than stride 2, coarsest first
+  std::optional<Pair> second;                     // a and b against the stride-2 rung; none: not measured
 };
 
 // Series a against series b, paired by frame, against `bound` on the claimed side.
@@ -69,7 +71,7 @@ struct Comparison {
 struct JudgedComparison {
   ClaimVerdict verdict;
   ojson measured;
-  double distance = 0;  // of the measured value from the bound, in the metric's units
+  double estimate = 0;  // mean(a) / mean(b) or mean(a) - mean(b)
 };
 
 const std::string kNotConverged = "reference not converged";
@@ -98,8 +100,7 @@ JudgedComparison judge_interval(const Comparison& c, std::span<const double> a, 
   j.measured["sign_test"] = ojson{
       {"a_below", sign.a_below}, {"a_above", sign.a_above}, {"ties", sign.ties}, {"p_two_sided", sign.p_two_sided}};
   j.measured["bootstrap"] = ojson{{"resamples", boot.resamples}, {"confidence", boot.confidence}, {"seed", boot.seed}};
-  // The distance of the measured value from the bound, in the metric's units (DESIGN.md §11a.1).
-  j.distance = ratio ? std::abs(boot.mean_a - c.bound * boot.mean_b) : std::abs(boot.difference - c.bound);
+  j.estimate = ratio ? boot.mean_a / boot.mean_b : boot.difference;
   if (ratio && !boot.ratio_interval) {
     j.verdict = inconclusive("interval " + std::string(c.below ? "below " : "above ") + num(c.bound),
                              std::string(kInconclusivePrefix) + ": a frame of " + c.b_label +
@@ -116,34 +117,48 @@ JudgedComparison judge_interval(const Comparison& c, std::span<const double> a, 
   return j;
 }
 
+// The claim's statistic of a against b (no interval): what each coarser rung contributes.
+double estimate_of(const Comparison& c, std::span<const double> a, std::span<const double> b) {
+  double sa = 0, sb = 0;
+  for (double v : a) sa += v;
+  for (double v : b) sb += v;
+  return c.quantity == Quantity::kRatio ? sa / sb : (sa - sb) / static_cast<double>(a.size());
+}
+
 JudgedComparison judge(const Comparison& c) {
   JudgedComparison j = judge_interval(c, c.a, c.b);
   if (!c.reference) return j;
-  // A claim the reference decides (DESIGN.md §11a *Rule*): its ladder and the stride-2 rung.
+  // A claim the reference decides (DESIGN.md §11a *Rule*): its statistic against every rung.
   const ReferenceSide& ref = *c.reference;
   ReferenceClaim claim;
-  claim.ratio = c.quantity == Quantity::kRatio;
+  claim.below = c.below;
   claim.bound = c.bound;
-  claim.distance = j.distance;
   claim.finest = j.verdict;
   ojson second{{"verdict", "not measured"}};
-  if (!ref.a_second.empty() && !ref.b_second.empty()) {
-    const JudgedComparison s = judge_interval(c, ref.a_second, ref.b_second);
+  if (ref.second) {
+    for (const auto& [a, b] : ref.coarse) claim.rung_estimates.push_back(estimate_of(c, a, b));
+    const JudgedComparison s = judge_interval(c, ref.second->first, ref.second->second);
     claim.second_rung = s.verdict;
+    claim.rung_estimates.push_back(s.estimate);
     second = ojson{{"verdict", std::string(outcome_text(s.verdict.outcome))}};
     if (s.measured.contains("interval")) {
       second["estimate"] = s.measured.at("estimate");
       second["interval"] = s.measured.at("interval");
     }
   }
+  claim.rung_estimates.push_back(j.estimate);
   j.measured["reference_metric"] = ref.metric;
-  j.measured["judged_distance"] = j.distance;
   j.measured["second_rung"] = second;
+  j.measured["rung_estimates"] = claim.rung_estimates;
   if (ref.ladder) {
     if (!ref.ladder->differences.empty()) j.measured["reference_own_error"] = ref.ladder->differences.back();
     j.measured["reference_rate"] = finite_or_null(ref.ladder->rate);
     j.measured["reference_remaining_error"] = finite_or_null(ref.ladder->remaining);
-    j.measured["reference_margin"] = finite_or_null(reference_margin(*ref.ladder, claim));
+    const double movement = reference_movement(ref.ladder->rate, claim.rung_estimates);
+    j.measured["reference_movement"] = finite_or_null(movement);
+    if (std::isfinite(movement) && j.verdict.interval)
+      j.measured["widened_interval"] =
+          ojson::array({j.verdict.interval->low - movement, j.verdict.interval->high + movement});
   }
   j.verdict = reference_decides(ref.ladder, claim);
   return j;
@@ -178,29 +193,47 @@ const std::vector<double>* series_of(const FrameErrors& f, const std::string& ge
   return s == g->second.end() ? nullptr : &s->second;
 }
 
+const std::vector<double>* find_series(const FrameSeries& series, const std::string& name) {
+  const auto s = series.find(name);
+  return s == series.end() ? nullptr : &s->second;
+}
+
 // The reference side of a claim on `metric` (DESIGN.md §11a *Rule*): the document's ladder of that
-// metric, if any, and the two series against the stride-2 rung, if measured.
-ReferenceSide reference_side(const QualityModel& m, const std::string& metric, const std::vector<double>* a_second,
-                             const std::vector<double>* b_second) {
+// metric, if any, and the two series against the coarser rungs, if measured (each list coarsest
+// first, the stride-2 rung last; a and b of the same length).
+ReferenceSide reference_side(const QualityModel& m, const std::string& metric,
+                             const std::vector<const FrameSeries*>& a_rungs,
+                             const std::vector<const FrameSeries*>& b_rungs) {
   ReferenceSide r;
   r.metric = metric;
   if (m.reference_detail && m.reference_detail->ladder) {
     const auto it = m.reference_detail->ladder->metrics.find(metric);
     if (it != m.reference_detail->ladder->metrics.end()) r.ladder = &it->second;
   }
-  if (a_second && b_second) {
-    r.a_second = *a_second;
-    r.b_second = *b_second;
+  if (a_rungs.empty() || a_rungs.size() != b_rungs.size()) return r;
+  std::vector<ReferenceSide::Pair> pairs;
+  for (std::size_t i = 0; i < a_rungs.size(); ++i) {
+    const auto* a = a_rungs[i] ? find_series(*a_rungs[i], metric) : nullptr;
+    const auto* b = b_rungs[i] ? find_series(*b_rungs[i], metric) : nullptr;
+    if (!a || !b) return r;
+    pairs.emplace_back(*a, *b);
   }
+  r.second = pairs.back();
+  pairs.pop_back();
+  r.coarse = std::move(pairs);
   return r;
 }
 
-const std::vector<double>* second_rung_of(const FrameErrors& f, const std::string& generator,
-                                          const std::string& series) {
-  const auto g = f.second_rung.find(generator);
-  if (g == f.second_rung.end()) return nullptr;
-  const auto s = g->second.find(series);
-  return s == g->second.end() ? nullptr : &s->second;
+// A generator's static series against the rungs coarser than the reference, coarsest first, the
+// stride-2 rung last; empty where the stride-2 rung was not measured.
+std::vector<const FrameSeries*> rungs_of(const FrameErrors& f, const std::string& generator) {
+  const auto second = f.second_rung.find(generator);
+  if (second == f.second_rung.end()) return {};
+  std::vector<const FrameSeries*> rungs;
+  if (const auto coarse = f.coarse_rungs.find(generator); coarse != f.coarse_rungs.end())
+    for (const FrameSeries& s : coarse->second) rungs.push_back(&s);
+  rungs.push_back(&second->second);
+  return rungs;
 }
 
 // modified against Tok15 on one static series.
@@ -234,8 +267,7 @@ void add_static_claims(std::vector<Claim>& claims, const QualityModel& m) {
   const auto* tok = series_of(f, kTok15, "p99_pixel_error");
   if (mod && tok) {
     JudgedComparison j = judge({kModified, kTok15, *mod, *tok, Quantity::kRatio, true, 1.0,
-                                reference_side(m, "p99_pixel_error", second_rung_of(f, kModified, "p99_pixel_error"),
-                                               second_rung_of(f, kTok15, "p99_pixel_error"))});
+                                reference_side(m, "p99_pixel_error", rungs_of(f, kModified), rungs_of(f, kTok15))});
     const double worst_mod = *std::max_element(mod->begin(), mod->end());
     const double worst_tok = *std::max_element(tok->begin(), tok->end());
     j.measured["worst_frame"] = ojson{{kModified, worst_mod}, {kTok15, worst_tok}};
@@ -254,13 +286,13 @@ void add_static_claims(std::vector<Claim>& claims, const QualityModel& m) {
     const auto* km = series_of(f, kmeans, "relative_rmse");
     const auto* md = series_of(f, kModified, "relative_rmse");
     if (!km || !md) continue;
-    claims.push_back(make_claim(kFig5Claim, "paper Fig. 5 (modified beside k-means); DESIGN.md §11a.1",
-                                "k-means margin, " + kmeans +
-                                    ": relative RMSE against the reference, per frame, "
-                                    "modified within 10 % of k-means",
-                                judge({kModified, kmeans, *md, *km, Quantity::kRatio, true, kKmeansMarginBound,
-                                       reference_side(m, "relative_rmse", second_rung_of(f, kModified, "relative_rmse"),
-                                                      second_rung_of(f, kmeans, "relative_rmse"))})));
+    claims.push_back(
+        make_claim(kFig5Claim, "paper Fig. 5 (modified beside k-means); DESIGN.md §11a.1",
+                   "k-means margin, " + kmeans +
+                       ": relative RMSE against the reference, per frame, "
+                       "modified within 10 % of k-means",
+                   judge({kModified, kmeans, *md, *km, Quantity::kRatio, true, kKmeansMarginBound,
+                          reference_side(m, "relative_rmse", rungs_of(f, kModified), rungs_of(f, kmeans))})));
   }
 }
 
@@ -296,13 +328,16 @@ void add_k_sweep_claims(std::vector<Claim>& claims, const QualityModel& m) {
                                               true,
                                               1.0,
                                               {}});
-      const auto second = [](const KSweepRow& row) {
-        const auto s = row.per_frame_second_rung.find("relative_rmse");
-        return s == row.per_frame_second_rung.end() ? nullptr : &s->second;
+      const auto rungs = [](const KSweepRow& row) {
+        std::vector<const FrameSeries*> list;
+        if (row.per_frame_second_rung.empty()) return list;
+        for (const FrameSeries& s : row.per_frame_coarse_rungs) list.push_back(&s);
+        list.push_back(&row.per_frame_second_rung);
+        return list;
       };
       const JudgedComparison error =
           judge({a, b, hi.per_frame.at("relative_rmse"), lo.per_frame.at("relative_rmse"), Quantity::kRatio, false, 1.0,
-                 reference_side(m, "relative_rmse", second(hi), second(lo))});
+                 reference_side(m, "relative_rmse", rungs(hi), rungs(lo))});
       for (const ClaimVerdict* v : {&flicker.verdict, &error.verdict}) {
         all_hold = all_hold && v->holds();
         any_fails = any_fails || v->fails();
@@ -337,10 +372,12 @@ bool reference_decided(const Claim& c) {
   });
 }
 
-// A document without a reference ladder (schema 5) was judged by the rule before it; its
-// reference-decided verdicts are kept as it wrote them, not judged again (DESIGN.md §11a *Rule*).
-void keep_unladdered_verdicts(std::vector<Claim>& claims, const QualityModel& m) {
-  if ((m.reference_detail && m.reference_detail->ladder) || !m.claims) return;
+// A document before schema 7 was judged by an earlier rule (schema 6: the margin (1 + b) eps_inf;
+// schema 5: 10 x the own error); its reference-decided verdicts are kept as it wrote them, not
+// judged again (DESIGN.md §11a *Rule*).
+void keep_earlier_rule_verdicts(std::vector<Claim>& claims, const QualityModel& m) {
+  const bool current = m.schema_version.is_number_integer() && m.schema_version.get<int64_t>() >= 7;
+  if (current || !m.claims) return;
   for (Claim& c : claims) {
     if (!reference_decided(c)) continue;
     const auto written = std::find_if(m.claims->begin(), m.claims->end(),
@@ -358,7 +395,7 @@ void add_claim_verdicts(json& r) {
     add_static_claims(claims, m);
     add_animated_claim(claims, m);
     add_k_sweep_claims(claims, m);
-    keep_unladdered_verdicts(claims, m);
+    keep_earlier_rule_verdicts(claims, m);
   } else {
     claims.push_back(unmeasured_claim(kFig1Claim, "", "every quality claim",
                                       "not measured here (no per-frame series: a quality document before schema 5)"));

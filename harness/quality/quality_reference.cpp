@@ -86,10 +86,17 @@ ReferenceLadderMetric reference_ladder_metric(std::vector<double> differences) {
   return m;
 }
 
-double reference_margin(const ReferenceLadderMetric& ladder, const ReferenceClaim& claim) {
-  const double factor = claim.ratio ? 1.0 + std::abs(claim.bound) : 2.0;
-  const double margin = factor * ladder.remaining;
-  return std::isfinite(margin) ? margin : std::numeric_limits<double>::infinity();
+double reference_movement(double rate, const std::vector<double>& rung_estimates) {
+  constexpr double kInfinite = std::numeric_limits<double>::infinity();
+  if (!std::isfinite(rate) || !(rate >= 0.0) || !(rate < 1.0) || rung_estimates.size() < 2) return kInfinite;
+  double largest = 0.0, weight = 1.0;  // weight = rho^t, t counted from the finest step
+  for (std::size_t i = rung_estimates.size() - 1; i > 0; --i) {
+    const double step = std::abs(rung_estimates[i] - rung_estimates[i - 1]);
+    if (!std::isfinite(step)) return kInfinite;
+    largest = std::max(largest, step * weight);
+    weight *= rate;
+  }
+  return largest * rate / (1.0 - rate);
 }
 
 namespace {
@@ -100,32 +107,43 @@ std::string short_number(double v) {
   return buf;
 }
 
+std::string interval_text(const Interval& iv) {
+  return "[" + short_number(iv.low) + ", " + short_number(iv.high) + "]";
+}
+
 }  // namespace
 
 ClaimVerdict reference_decides(const ReferenceLadderMetric* ladder, const ReferenceClaim& claim) {
   ClaimVerdict v = claim.finest;
-  v.rule += std::string(", decided only where ") + (claim.ratio ? "(1 + b)" : "2") +
-            " x the reference's remaining error is below the distance from the bound and the verdict against "
-            "its stride-2 rung is the same";
+  v.rule +=
+      ", decided only where the interval widened by the claim's remaining movement over the reference's "
+      "ladder, and the verdict against its stride-2 rung, agree";
   const auto not_converged = [&](const std::string& why) {
     v.outcome = Outcome::kInconclusive;
     v.reason = "reference not converged (" + why + ")";
     return v;
   };
   if (!ladder) return not_converged("no reference ladder");
-  if (!(ladder->differences.size() >= 2))
+  if (!claim.finest.interval) return not_converged("no interval against the reference");
+  if (ladder->differences.size() < 2)
     return not_converged("no rate: " + std::to_string(ladder->differences.size()) +
                          " successive difference(s) of the rungs, two needed");
-  const double own = ladder->differences.back();
-  const std::string named = "own " + short_number(own) + ", rate " + short_number(ladder->rate);
-  if (!std::isfinite(ladder->rate) || !(ladder->rate < 1.0) || !std::isfinite(ladder->remaining))
-    return not_converged(named + ": the reference does not converge, remaining error infinite");
-  const double margin = reference_margin(*ladder, claim);
-  const std::string margin_text = claim.ratio ? "(1 + " + short_number(claim.bound) + ") x " : "2 x ";
-  if (!std::isfinite(claim.distance) || !(margin < claim.distance))
-    return not_converged(named + ", remaining " + short_number(ladder->remaining) + ": " + margin_text +
-                         short_number(ladder->remaining) + " = " + short_number(margin) + " >= distance " +
-                         short_number(claim.distance));
+  if (!std::isfinite(ladder->rate) || !(ladder->rate < 1.0))
+    return not_converged("the reference's rate " + short_number(ladder->rate) + " per doubling: it does not converge");
+  if (claim.rung_estimates.size() < 2) return not_converged("no estimate against the stride-2 rung");
+  std::string steps;
+  for (std::size_t i = 1; i < claim.rung_estimates.size(); ++i)
+    steps +=
+        (steps.empty() ? "" : ", ") + short_number(std::abs(claim.rung_estimates[i] - claim.rung_estimates[i - 1]));
+  const double movement = reference_movement(ladder->rate, claim.rung_estimates);
+  const std::string named = "the claim moved " + steps + " over the rungs, rate " + short_number(ladder->rate);
+  if (!std::isfinite(movement)) return not_converged(named + ": its remaining movement is not finite");
+  if (claim.finest.inconclusive()) return v;  // the interval reaches the bound by itself
+  const Interval widened{claim.finest.interval->low - movement, claim.finest.interval->high + movement};
+  const ClaimVerdict w = claim.below ? judge_below(widened, claim.bound) : judge_above(widened, claim.bound);
+  if (w.outcome != claim.finest.outcome)
+    return not_converged(named + ", remaining " + short_number(movement) + ": the widened interval " +
+                         interval_text(widened) + " reaches the bound " + short_number(claim.bound));
   if (!claim.second_rung) return not_converged("no verdict against the stride-2 rung");
   if (claim.second_rung->outcome != claim.finest.outcome)
     return not_converged("the verdicts differ: " + std::string(outcome_text(claim.finest.outcome)) +

@@ -66,24 +66,29 @@ uint32_t reference_stride(const ViewImage& rsm, uint32_t side);
 // two differences: no rate (NaN) and eps_inf infinite; rho >= 1 or not finite: eps_inf infinite.
 ReferenceLadderMetric reference_ladder_metric(std::vector<double> differences);
 
-// What a claim on an error against the reference is decided on (DESIGN.md §11a *Rule*).
+// What a claim on an error against the reference is decided on (DESIGN.md §11a *Rule*, schema 7).
 struct ReferenceClaim {
-  bool ratio = true;    // judged on mean_a / mean_b against `bound`; else on mean_a - mean_b
+  bool below = true;    // the claim: the statistic lies below `bound` (else above)
   double bound = 1.0;   // b
-  double distance = 0;  // |mean_a - b mean_b| (ratio) or |mean_a - mean_b - b|, in the metric's units
-  ClaimVerdict finest;  // the claim's verdict against the reference (stride 1)
-  std::optional<ClaimVerdict> second_rung;  // the same against the stride-2 rung; none: not measured
+  ClaimVerdict finest;  // the claim's verdict against the reference (stride 1), with its interval
+  // The claim's statistic against every rung of the ladder, coarsest first, the last against the
+  // reference itself; the one before it is the stride-2 rung's. Fewer than two: no step measured.
+  std::vector<double> rung_estimates;
+  std::optional<ClaimVerdict> second_rung;  // the verdict against the stride-2 rung; none: not measured
 };
 
-// The reference's margin on a claim: (1 + |b|) eps_inf for a ratio, 2 eps_inf for a difference
-// (each generator's error may move by up to eps_inf). Infinite where eps_inf is, or not finite.
-double reference_margin(const ReferenceLadderMetric& ladder, const ReferenceClaim& claim);
+// The claim's remaining movement delta_inf = max_t s_t rho^t * rho / (1 - rho), s_t the steps of
+// `rung_estimates` counted from the finest (t = 0: the stride-2 rung to the reference): each step
+// shrinking by rho per doubling from where it was measured. Infinite for rho >= 1 or not finite,
+// fewer than two estimates, or an estimate that is not finite.
+double reference_movement(double rate, const std::vector<double>& rung_estimates);
 
-// The rule of DESIGN.md §11a: `claim.finest` stands only where the metric's ladder has a rate,
-// the margin is below the distance, and the verdict against the stride-2 rung is the same;
-// otherwise an inconclusive verdict whose reason starts with "reference not converged" and names
-// the own error, rho, eps_inf, the margin and the distance, or the two verdicts. No ladder (null)
-// or a distance that is not finite: not decided either. The rule text says what was asked.
+// The rule of DESIGN.md §11a: `claim.finest` stands only where the metric's ladder has a rate
+// rho < 1, the interval widened by delta_inf on each side gives the same verdict, and the verdict
+// against the stride-2 rung is the same; otherwise an inconclusive verdict whose reason starts with
+// "reference not converged" and names the steps, rho, delta_inf and the widened interval, or the two
+// verdicts. An interval that reaches the bound by itself stays inconclusive for its own reason. No
+// ladder (null) or no interval: not decided either. The rule text says what was asked.
 ClaimVerdict reference_decides(const ReferenceLadderMetric* ladder, const ReferenceClaim& claim);
 
 // A "generator" with a fixed set of VSGLs, uploaded once: it ignores every parameter, so its

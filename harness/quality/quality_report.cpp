@@ -72,7 +72,19 @@ std::string measured_cell(const Claim& c) {
 
 bool has_ladder(const QualityModel& m) { return m.reference_detail && m.reference_detail->ladder; }
 
-// The rule of DESIGN.md §11a in one sentence (schema 6).
+// Schema 7 judges a reference-decided claim by its own movement over the ladder's rungs.
+bool judged_by_own_ladder(const QualityModel& m) {
+  return m.schema_version.is_number_integer() && m.schema_version.get<int64_t>() >= 7;
+}
+
+// The rule of DESIGN.md §11a in one sentence (schema 7).
+constexpr const char* kOwnLadderRule =
+    "A claim on an error against the reference is decided only where its 95 % interval, widened on each side by "
+    "how far the claim may still move as the reference's RSM side doubles (delta_inf = max_t s_t rho^t rho / (1 - "
+    "rho), s_t the claim's steps between the rungs of the ladder counted from the finest, rho the metric's rate), "
+    "gives the same verdict, and where its verdict against the reference's stride-2 rung is the same; otherwise it "
+    "is \"reference not converged\".";
+// Schema 6's rule, by which its documents' verdicts were judged and are kept.
 constexpr const char* kLadderRule =
     "A claim on an error against the reference is decided only where (1 + b) eps_inf (2 eps_inf for a difference) "
     "is below its distance |mean_a - b mean_b| from the bound b, eps_inf = own rho / (1 - rho) the reference's "
@@ -88,7 +100,8 @@ void write_claims(std::ostringstream& md, const QualityModel& m) {
         "frame): the interval is the paired percentile bootstrap of the ratio of means (the difference for the "
         "coverage excess), and a claim holds when the whole interval lies on the claimed side of its bound, does "
         "not hold when it lies wholly on the other side, and is inconclusive otherwise (DESIGN.md §11a.1). ";
-  if (has_ladder(m)) md << kLadderRule << "\n";
+  if (judged_by_own_ladder(m)) md << kOwnLadderRule << "\n";
+  else if (has_ladder(m)) md << kLadderRule << "\n";
   else  // schema 5: its verdicts were judged by the rule of its time, kept as written
     md << "A claim on an error against the reference is decided only when the reference's own error in that metric "
           "is below a tenth of the measured distance from the bound.\n";
@@ -234,7 +247,7 @@ std::string ladder_num(double v, const char* otherwise) { return std::isfinite(v
 
 // The reference ladder (DESIGN.md §11a, schema 6): per pair of neighbouring rungs the successive
 // difference and its ratio to the previous one in each metric, then rho and eps_inf, and the rule.
-void write_ladder(std::ostringstream& md, const ReferenceLadder& l) {
+void write_ladder(std::ostringstream& md, const ReferenceLadder& l, const char* rule) {
   md << ".\n\nReference ladder: each rung (RSM stride, side) against the next finer one, same pixels; ratio: "
         "this difference over the one above. "
      << l.note << ".\n\n| rungs |";
@@ -265,7 +278,7 @@ void write_ladder(std::ostringstream& md, const ReferenceLadder& l) {
       md << (i == 0 ? " " : ", ") << rung(i) << " " << num(l.mean_luminances[i]);
     md << ".\n";
   }
-  md << "\n" << kLadderRule << "\n\n";
+  md << "\n" << rule << "\n\n";
 }
 
 void write_reference_error(std::ostringstream& md, const QualityModel& m) {
@@ -298,7 +311,7 @@ void write_reference_error(std::ostringstream& md, const QualityModel& m) {
   for (const auto& [metric, e] : d.own_errors)
     md << (metric == d.own_errors.begin()->first ? " (" : ", ") << metric << " " << num(e);
   if (!d.own_errors.empty()) md << ")";
-  if (d.ladder) write_ladder(md, *d.ladder);
+  if (d.ladder) write_ladder(md, *d.ladder, judged_by_own_ladder(m) ? kOwnLadderRule : kLadderRule);
   else  // schema 5: the rule its verdicts were judged by
     md << "; a difference it judges must exceed ten times that, or the verdict is \"reference not converged\".\n\n";
   md << "PDF-support reference (texels with PDF > 0 only): " << d.support_vpls << " VPLs, sum Phi / flux "

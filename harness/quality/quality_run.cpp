@@ -237,6 +237,10 @@ struct ReferenceShading {
   // The ladder's stride-2 rung, the same pixels: every frame is compared with it too, for the
   // rule's second verdict (DESIGN.md §11a *Rule*). None where the RSM has no such rung.
   std::optional<RadianceImage> second_rung;
+  // The rungs coarser still, coarsest first, and their RSM strides (schema 7): the reference-decided
+  // claims are computed against every rung (DESIGN.md §11a *Rule*).
+  std::vector<RadianceImage> coarse_rungs;
+  std::vector<uint32_t> coarse_rung_strides;
 };
 
 // The images the K sweep reuses from the static frames: each FIS generator's frame at offset 0.
@@ -247,6 +251,7 @@ using OffsetZeroImages = std::map<std::string, RadianceImage>;
 struct StaticFrames {
   FrameSeries series;
   FrameSeries second_rung;  // the image errors against the stride-2 rung (schema 6)
+  std::vector<FrameSeries> coarse_rungs;  // against each coarser rung (schema 7)
   FlickerAccumulator flicker;
   std::vector<FluxOrigin> origins;
   RadianceImage offset_zero, worst;
@@ -474,9 +479,16 @@ struct QualityRun {
         "(bounds the 1/d^2 spikes of point VPLs); shaded at the "
         "generators' pixels (G-buffer stride) by the same shading pass, in chunked dispatches";
     const float exposure = auto_exposure(downscale(ref_image, kTileFactor));
-    std::optional<RadianceImage> second_rung;
-    if (const auto it = coarse.find(2 * ref_stride); it != coarse.end()) second_rung = std::move(it->second.image);
-    return ReferenceShading{ref_image, std::move(support.image), exposure, flip, error_stride, std::move(second_rung)};
+    ReferenceShading shading{ref_image, std::move(support.image), exposure, flip, error_stride, std::nullopt, {}, {}};
+    if (const auto it = coarse.find(2 * ref_stride); it != coarse.end()) {
+      shading.second_rung = std::move(it->second.image);
+      for (uint32_t s : strides)
+        if (s != 2 * ref_stride) {
+          shading.coarse_rungs.push_back(std::move(coarse.at(s).image));
+          shading.coarse_rung_strides.push_back(s);
+        }
+    }
+    return shading;
   }
 
   // The light-view VSGLs of `name` at lattice offset `offset_bits` and K, shading the camera view
@@ -517,6 +529,9 @@ struct QualityRun {
       const FrameImageError e = frame_image_error(img, ref.image, ref.flip);
       add_image_error(s.series, e);
       if (ref.second_rung) add_image_error(s.second_rung, frame_image_error(img, *ref.second_rung, ref.flip));
+      s.coarse_rungs.resize(ref.coarse_rungs.size());
+      for (std::size_t r = 0; r < ref.coarse_rungs.size(); ++r)
+        add_image_error(s.coarse_rungs[r], frame_image_error(img, ref.coarse_rungs[r], ref.flip));
       s.series["light_view_max_over_mean"].push_back(power_metrics(run.vsgls, light_flux).max_over_mean);
       if (is_fis(name)) {
         s.origins.push_back(flux_origin(run.vsgls, fis_variant(name), light_texel_flux, light_pdf, config.K));
@@ -550,6 +565,7 @@ struct QualityRun {
       frames.second_rung_reference =
           "the reference's stride-2 rung (every second texel of its RSM in x and y a VPL, flux x 4), the same pixels "
           "and FLIP exposure";
+    frames.coarse_rung_strides = ref.coarse_rung_strides;
     const RadianceImage ref_tile = downscale(ref.image, kTileFactor);
     std::vector<Rgb8Image> render_tiles{tone_map(ref_tile, ref.exposure)},
         error_tiles{error_map(ref_tile, ref_tile, 1.0f)};
@@ -574,6 +590,7 @@ struct QualityRun {
       worst_text += (worst_text.empty() ? "" : ", ") + name + " frame " + std::to_string(s.worst_frame);
       frames.generators[name] = std::move(s.series);
       if (!s.second_rung.empty()) frames.second_rung[name] = std::move(s.second_rung);
+      if (!s.coarse_rungs.empty()) frames.coarse_rungs[name] = std::move(s.coarse_rungs);
       if (is_fis(name)) offset_zero[name] = std::move(s.offset_zero);
       say("static frames " + name + ": " + std::to_string(seconds_since(tg)) + " s");
     }
@@ -624,10 +641,15 @@ struct QualityRun {
           if (const auto second = out.frames_static->second_rung.find(name);
               second != out.frames_static->second_rung.end())
             row.per_frame_second_rung = {{"relative_rmse", second->second.at("relative_rmse")}};
+          if (const auto coarse = out.frames_static->coarse_rungs.find(name);
+              coarse != out.frames_static->coarse_rungs.end())
+            for (const FrameSeries& rung : coarse->second)
+              row.per_frame_coarse_rungs.push_back({{"relative_rmse", rung.at("relative_rmse")}});
           img = offset_zero.at(name);
         } else {
           FlickerAccumulator acc;
           std::vector<double> error, error_second;
+          std::vector<std::vector<double>> error_coarse(ref.coarse_rungs.size());
           for (uint32_t f = 0; f < config.frames; ++f) {
             const GeneratorRun run =
                 run_generator(device, light, name, config, config.light_vsgls, K, frame_offset_bits(f));
@@ -635,6 +657,8 @@ struct QualityRun {
             acc.add_frame(frame, power_sum(run.vsgls));
             error.push_back(image_error(frame, ref.image).relative_rmse);
             if (ref.second_rung) error_second.push_back(image_error(frame, *ref.second_rung).relative_rmse);
+            for (std::size_t r = 0; r < ref.coarse_rungs.size(); ++r)
+              error_coarse[r].push_back(image_error(frame, ref.coarse_rungs[r]).relative_rmse);
             if (f == 0) img = std::move(frame);
           }
           row.weighted_cv = acc.weighted_cv();
@@ -643,6 +667,8 @@ struct QualityRun {
           row.frames = acc.frames();
           row.per_frame = {{"flicker_deviation", acc.frame_deviations()}, {"relative_rmse", std::move(error)}};
           if (!error_second.empty()) row.per_frame_second_rung = {{"relative_rmse", std::move(error_second)}};
+          for (std::vector<double>& e : error_coarse)
+            row.per_frame_coarse_rungs.push_back({{"relative_rmse", std::move(e)}});
         }
         const GeneratorRun run = run_generator(device, light, name, config, config.light_vsgls, K, 0);
         row.error = error_summary(image_error(img, ref.image));

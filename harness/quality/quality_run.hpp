@@ -37,7 +37,10 @@ class Device;
 // 6: the reference ladder (reference.ladder) and every static frame's errors against the stride-2
 //    rung (second_rung, per_frame_second_rung), by which the reference-decided claims are judged
 //    (DESIGN.md §11a *Rule*). 5 is still read; its reference-decided verdicts are kept as written.
-inline constexpr int kQualitySchemaVersion = 6;
+// 7: the same errors against every coarser rung too (coarse_rungs, coarse_rung_strides,
+//    per_frame_coarse_rungs), and the reference-decided claims judged by their own movement over the
+//    rungs (DESIGN.md §11a *Rule*). 5 and 6 are still read; their reference-decided verdicts are kept.
+inline constexpr int kQualitySchemaVersion = 7;
 
 // The reduced camera size of the reference comparison (1920x1088 -> 240x136) where the full size
 // does not fit the time budget, and the coarser RSM strides the convergence table compares with
