@@ -11,6 +11,7 @@
 #include "harness/core/error.hpp"
 #include "harness/quality/shading_visibility.hpp"
 #include "harness/visibility/imperfect_shadow_maps.hpp"
+#include "harness/visibility/segment_query.hpp"
 #include "kernels/include/interface/shading.h"
 
 namespace vsgl {
@@ -94,12 +95,27 @@ ShadingRecording::ShadingRecording(Device& device, const DeviceView& camera, con
       throw InputError("shading pass: exact visibility needs the occluders on the device");
     vis.node_count = visibility.occluders->node_count();
     vis.epsilon = visibility.occluders->epsilon();
-    // Bindings 3 and 4 need a buffer even where nothing occludes (node_count 0: never read).
-    occluder_bindings = {visibility.occluders->nodes(), visibility.occluders->triangles()};
     kernel = "shade_vsgls_exact.comp";
   }
   if (mode_ != ShadingVisibility::kNone) push_bytes = sizeof(gpu::ShadeVisibilityPush);
   const uint32_t chunk = vsgls_per_dispatch != 0 ? vsgls_per_dispatch : shade_chunk_vsgls(count, mode_);
+  if (mode_ == ShadingVisibility::kExact) {
+    // Each chunk's segments are answered before its dispatch (prepare_chunk) into one buffer of
+    // chunk x pixels answers, from the receivers' positions and the VSGLs' means read back here.
+    occluders_ = visibility.occluders;
+    const uint32_t square_width = camera.square.width;
+    const std::vector<glm::vec4> layer =
+        download_vector<glm::vec4>(device, camera.texels.buffer, std::size_t{square_width} * camera.square.height);
+    positions_.resize(count);
+    for (uint32_t y = 0; y < height_; ++y)
+      for (uint32_t x = 0; x < width_; ++x)
+        positions_[std::size_t{y} * width_ + x] =
+            layer[std::size_t{y} * stride * square_width + std::size_t{x} * stride];
+    records_ = download_vector<VsglRecord>(device, vsgls, vsgl_count);
+    visible_ = Buffer(device, std::size_t{std::min(chunk, vsgl_count)} * count * sizeof(uint32_t),
+                      MemoryUsage::kDeviceLocal, "shade.visible");
+    occluder_bindings = {visible_};
+  }
 
   radiance_ = Buffer(device, count * sizeof(glm::vec4), MemoryUsage::kDeviceLocal, "shade.radiance");
   pipeline_.emplace(device, ComputePipelineDesc{kernel, static_cast<uint32_t>(3 + occluder_bindings.size()), push_bytes,
@@ -130,12 +146,36 @@ ShadingRecording::ShadingRecording(Device& device, const DeviceView& camera, con
                                 glm::vec4(camera.source_position, 1.0f)};
       // The maps follow the VSGLs' order: the binding's first VSGL has map window_first.
       vis.map_first = window_first;
-      chunks_.push_back({sets_.size() - 1, gpu::ShadeVisibilityPush{push, vis}});
+      chunks_.push_back({sets_.size() - 1, gpu::ShadeVisibilityPush{push, vis}, first, n});
     }
   }
 }
 
 ShadingRecording::~ShadingRecording() = default;
+
+void ShadingRecording::prepare_chunk(std::size_t index) const {
+  if (mode_ != ShadingVisibility::kExact) return;
+  const Chunk& c = chunks_.at(index);
+  const std::size_t pixels = positions_.size();
+  // Answer k * pixels + p: VSGL first + k seen from pixel p; 1 where the pixel has no surface (the
+  // kernel does not read it there).
+  std::vector<uint32_t> answers(std::size_t{c.count} * pixels, 1u);
+  std::vector<gpu::SegmentQuery> queries;
+  std::vector<std::size_t> where;
+  queries.reserve(answers.size());
+  where.reserve(answers.size());
+  for (uint32_t k = 0; k < c.count; ++k) {
+    const glm::vec3 mean = records_[c.first + k].mu();
+    for (std::size_t p = 0; p < pixels; ++p) {
+      if (!(positions_[p].w > 0.5f)) continue;
+      queries.push_back(make_segment_query(glm::vec3(positions_[p]), mean, occluders_->epsilon()));
+      where.push_back(std::size_t{k} * pixels + p);
+    }
+  }
+  const std::vector<uint32_t> visible = occluders_->visible(queries);
+  for (std::size_t q = 0; q < where.size(); ++q) answers[where[q]] = visible[q];
+  upload(*device_, visible_, answers.data(), answers.size() * sizeof(uint32_t));
+}
 
 void ShadingRecording::record_chunk(CommandStream& stream, std::size_t index) const {
   const Chunk& c = chunks_.at(index);
@@ -151,6 +191,10 @@ void ShadingRecording::record_chunk(CommandStream& stream, std::size_t index) co
 }
 
 void ShadingRecording::record(CommandStream& stream) const {
+  if (mode_ == ShadingVisibility::kExact)
+    throw InputError(
+        "shading pass: exact visibility answers each chunk's segments before its dispatch; shade it "
+        "with shade_camera_view, not in one recording");
   for (std::size_t i = 0; i < chunks_.size(); ++i) record_chunk(stream, i);
 }
 
@@ -168,13 +212,15 @@ RadianceImage shade_camera_view(Device& device, const DeviceView& camera, const 
   const ShadingRecording shading(device, camera, vsgls, vsgl_count, stride, visibility, vsgls_per_dispatch,
                                  vsgls_per_binding);
   // One submission per chunk: a driver's watchdog (about 2 s on Windows) limits each submission.
-  for (std::size_t i = 0; i < shading.chunk_count(); ++i)
+  for (std::size_t i = 0; i < shading.chunk_count(); ++i) {
+    shading.prepare_chunk(i);
     device.submit_and_wait(
         [&](VkCommandBuffer cmd) {
           CommandStream stream(cmd);
           shading.record_chunk(stream, i);
         },
         "shading pass");
+  }
   return shading.read();
 }
 

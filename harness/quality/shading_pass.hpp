@@ -103,9 +103,13 @@ class ShadingRecording {
   ShadingRecording& operator=(const ShadingRecording&) = delete;
 
   std::size_t chunk_count() const { return chunks_.size(); }
+  // Exact visibility: answers chunk `index`'s segments (every pixel with a surface to each of its
+  // VSGLs' means, RayVisibility) into the buffer its dispatch reads; call it before recording the
+  // chunk, and submit the chunk before preparing the next. Nothing for the other modes.
+  void prepare_chunk(std::size_t index) const;
   // A full barrier, then chunk `index`'s dispatch (the first chunk overwrites the image, the others add).
   void record_chunk(CommandStream& stream, std::size_t index) const;
-  // Every chunk in order.
+  // Every chunk in order; InputError for exact visibility, whose chunks are prepared one by one.
   void record(CommandStream& stream) const;
   // The image the last recorded pass wrote, read back.
   RadianceImage read() const;
@@ -116,11 +120,18 @@ class ShadingRecording {
   struct Chunk {
     std::size_t set = 0;  // index into sets_
     gpu::ShadeVisibilityPush push;
+    uint32_t first = 0, count = 0;  // its VSGLs, first..first + count - 1 of the buffer
   };
   Device* device_;
   ShadingVisibility mode_ = ShadingVisibility::kNone;
   uint32_t width_ = 0, height_ = 0;
   Buffer radiance_;
+  // Exact visibility: the occluders, each output pixel's (position, valid), the VSGLs, and the
+  // answers of the chunk being shaded.
+  const ShadingOccluders* occluders_ = nullptr;
+  std::vector<glm::vec4> positions_;
+  std::vector<VsglRecord> records_;
+  Buffer visible_;
   std::optional<ComputePipeline> pipeline_;
   std::vector<BindingSet> sets_;
   std::vector<Chunk> chunks_;

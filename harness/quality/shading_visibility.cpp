@@ -62,16 +62,9 @@ ShadingOccluders::ShadingOccluders(Device& device, TriangleSoup soup)
 ShadingOccluders::ShadingOccluders(Device& device, TriangleSoup soup, const VisibilityLimits& limits)
     : soup_(std::move(soup)), bvh_(build_bvh(soup_)), epsilon_(exact_visibility_epsilon(soup_)) {
   const std::vector<gpu::BvhTriangle> triangles = bvh_triangles(bvh_, soup_);
-  const uint64_t node_bytes = bvh_.nodes.size() * sizeof(gpu::BvhNode);
-  const uint64_t triangle_bytes = triangles.size() * sizeof(gpu::BvhTriangle);
-  require_bvh_buffers_fit(limits, node_bytes, triangle_bytes, device.info().name);
-  // An empty soup still binds a buffer at each binding; the kernel never reads them (node_count 0).
-  nodes_ = Buffer(device, std::max<uint64_t>(node_bytes, sizeof(gpu::BvhNode)), MemoryUsage::kDeviceLocal,
-                  "shade.bvh_nodes");
-  triangles_ = Buffer(device, std::max<uint64_t>(triangle_bytes, sizeof(gpu::BvhTriangle)), MemoryUsage::kDeviceLocal,
-                      "shade.bvh_triangles");
-  if (node_bytes != 0) upload(device, nodes_, bvh_.nodes.data(), node_bytes);
-  if (triangle_bytes != 0) upload(device, triangles_, triangles.data(), triangle_bytes);
+  require_bvh_buffers_fit(limits, bvh_.nodes.size() * sizeof(gpu::BvhNode), triangles.size() * sizeof(gpu::BvhTriangle),
+                          device.info().name);
+  rays_.emplace(device, bvh_, soup_, limits);
 }
 
 VsglVisibility exact_visibility_reference(const ShadingOccluders& occluders, const std::vector<VsglRecord>& vsgls) {

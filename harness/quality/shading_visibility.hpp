@@ -7,6 +7,7 @@
 // the shading kernel from each pixel to each VSGL's mean.
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -49,7 +50,11 @@ inline constexpr float kExactVisibilityEpsilon = 1e-4f;
 float exact_visibility_epsilon(const TriangleSoup& soup);
 
 // The occluders of the exact variant on the device: the BVH over the soup, its nodes and triangles
-// uploaded once, for every shading pass of a run.
+// uploaded once (in a RayVisibility), for every shading pass of a run. The shading pass asks it
+// which of its pixel-to-mean segments are blocked, chunk by chunk (shading_pass.cpp), with queries
+// the host makes as the CPU twin does: the BVH walk inlined in the shading kernel was miscompiled
+// by lavapipe (ShadeVisibilityTest.ExactWithManyReferenceVplsMatchesTheCpuTwin), the separate
+// segment kernel answers as the CPU does, bit for bit.
 class ShadingOccluders {
  public:
   // Builds the BVH, checks its buffers against the device's limits (require_bvh_buffers_fit:
@@ -61,15 +66,14 @@ class ShadingOccluders {
   const Bvh& bvh() const { return bvh_; }
   float epsilon() const { return epsilon_; }
   uint32_t node_count() const { return static_cast<uint32_t>(bvh_.nodes.size()); }  // 0: nothing occludes
-  const Buffer& nodes() const { return nodes_; }
-  const Buffer& triangles() const { return triangles_; }
+  // 1 where segment n is clear, 0 where a triangle blocks it (RayVisibility::visible).
+  std::vector<uint32_t> visible(std::span<const gpu::SegmentQuery> queries) const { return rays_->visible(queries); }
 
  private:
   TriangleSoup soup_;
   Bvh bvh_;
   float epsilon_ = 0.0f;
-  Buffer nodes_;
-  Buffer triangles_;
+  mutable std::optional<RayVisibility> rays_;
 };
 
 // The CPU twin's exact visibility (shade_pixel_reference): 0 where segment_occluded finds a triangle
