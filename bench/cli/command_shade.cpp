@@ -4,8 +4,6 @@
 // the control), written as OUT/shade_<scene>_<generator>.png, so a user can see what each
 // generator produces (the 2016 paper's Fig. 5). One exposure serves every picture of a run, so
 // they compare directly.
-#include <bit>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -16,6 +14,7 @@
 #include "bench/cli/commands.hpp"
 #include "bench/cli/generator_options.hpp"
 #include "bench/cli/gpu_session.hpp"
+#include "bench/cli/visibility_options.hpp"
 #include "harness/capture/capture.hpp"
 #include "harness/capture/capture_files.hpp"
 #include "harness/core/path_text.hpp"
@@ -49,35 +48,10 @@ struct ShadeOptions {
   uint32_t vsgls = kPaperLightVsgls;
   std::string out = ".";
   float exposure = 0.0f;  // 0: not given, expose automatically
-  std::string visibility = "ism";
-  IsmSettings ism;
-  std::vector<const CLI::Option*> ism_options;  // the --ism-* options, refused unless --visibility ism
+  VisibilityOptions visibility;
   GeneratorConfig config;
   DeviceOptions device;
 };
-
-// A number read by CLI11's own parser (the option's type), checked by `ok`; `rule` says what it must be.
-template <class T, class Ok>
-CLI::Validator checked_number(Ok ok, const std::string& rule) {
-  return CLI::Validator(
-      [ok, rule](std::string& text) -> std::string {
-        T v{};
-        if (!CLI::detail::lexical_cast(text, v) || !ok(v)) return "must be " + rule + ", not '" + text + "'";
-        return {};
-      },
-      rule);
-}
-
-ShadingVisibilitySettings visibility_settings(const ShadeOptions& o) {
-  ShadingVisibilitySettings s;
-  s.mode = parse_shading_visibility(o.visibility);
-  s.ism = o.ism;
-  if (s.mode != ShadingVisibility::kIsm)
-    for (const CLI::Option* option : o.ism_options)
-      if (option->count() > 0)
-        throw UsageError(option->get_name() + " sets the imperfect shadow maps, which only --visibility ism uses");
-  return s;
-}
 
 int run_shade(ShadeOptions& o) {
   const std::string* capture_arg = &o.capture;
@@ -87,7 +61,7 @@ int run_shade(ShadeOptions& o) {
   const std::filesystem::path out_dir = path_from_utf8(o.out);
   float exposure = o.exposure;
   GeneratorConfig& config = o.config;
-  const ShadingVisibilitySettings visibility = visibility_settings(o);
+  const ShadingVisibilitySettings visibility = visibility_settings(o.visibility);
   std::vector<const GeneratorDescriptor*> generators;
   for (const auto& name : names) generators.push_back(&find_generator(name));
   GpuSession session = GpuSession::open(o.device);
@@ -156,36 +130,7 @@ Command add_shade_command(CLI::App& parent) {
   app->add_option("--exposure", o->exposure, "linear scale before the sRGB curve")
       ->check(positive_number())
       ->default_str("auto: 99th-percentile luminance -> 0.8");
-  app->add_option("--visibility", o->visibility,
-                  "what each VSGL's light passes (DESIGN.md §8.1): ism (its imperfect shadow map, as the "
-                  "paper shades), exact (the segment to its mean through a BVH of the scene: the control) "
-                  "or none; ism and exact need the visibility geometry `record` stores (--visibility-points)")
-      ->check(one_of({"none", "ism", "exact"}))
-      ->capture_default_str();
-  o->ism_options = {
-      app->add_option("--ism-side", o->ism.side, "texels per side of each imperfect shadow map (--visibility ism)")
-          ->check(
-              checked_number<uint32_t>([](uint32_t v) { return v >= 2 && v <= kIsmMaxSide && std::has_single_bit(v); },
-                                       "a power of two in [2, " + std::to_string(kIsmMaxSide) + "]"))
-          ->capture_default_str(),
-      app->add_option("--ism-points-per-map", o->ism.points_per_map,
-                      "points of the capture's sampling each map splats, at most the points it holds")
-          ->check(at_least(1))
-          ->capture_default_str(),
-      app->add_option("--ism-bias", o->ism.depth_bias,
-                      "relative depth bias: a map texel occludes where its depth is below (1 - bias) x the receiver's "
-                      "distance")
-          ->check(checked_number<float>([](float v) { return v >= 0.0f && v < 1.0f; }, "a number in [0, 1)"))
-          ->capture_default_str(),
-      app->add_option("--ism-normal-offset", o->ism.normal_offset,
-                      "texel widths (at the receiver's distance) the receiver moves along its normal before the lookup")
-          ->check(checked_number<float>([](float v) { return std::isfinite(v) && v >= 0.0f; }, "a finite number >= 0"))
-          ->capture_default_str(),
-      app->add_option("--ism-pcf-radius", o->ism.pcf_radius, "the lookup averages (2R + 1)^2 taps")
-          ->check(checked_number<uint32_t>([](uint32_t v) { return v <= kIsmMaxPcfRadius; },
-                                           "a whole number in [0, " + std::to_string(kIsmMaxPcfRadius) + "]"))
-          ->capture_default_str(),
-  };
+  add_visibility_options(*app, o->visibility, "the pictures");
   add_pyramid_option(*app, o->config.pyramid);
   add_mipmapping_option(*app, o->config.mipmapping, "FIS texture path's mip chain: single-pass, blit or per-level");
   app->add_option("--out", o->out, "output directory")->type_name("DIR")->capture_default_str();
