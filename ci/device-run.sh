@@ -224,7 +224,9 @@ if $quick; then
   gbuffer="--gbuffer 480x272"
   size="$gbuffer --rsm 128"
   reference_size="$gbuffer --rsm ${reference_rsm:-256}"
-  quality_args=(--frames 4 --k-sweep 1,2 --error-stride 8)
+  # Fig. 7's exact-visibility reference from a 64^2 RSM (of the reference capture's): every VPL
+  # traced to every pixel.
+  quality_args=(--frames 4 --k-sweep 1,2 --error-stride 8 --visibility ism --visibility-reference-rsm 64)
   tables_quick=(--quick)
   replays=(--vsgl_replays=3 --vsgl_tables=1)
   gbench_quick=(--vsgl_generators=fis_tok15,fis_modified)
@@ -237,7 +239,10 @@ else
   reference_size="--rsm ${reference_rsm:-4096}"
   # G-buffer stride 4 (480x272 of 1920x1088): the per-frame FLIP and pixel statistics run on the
   # CPU, about 2 s a frame at full size, and a run judges some 400 frames per scene.
-  quality_args=(--error-stride 4)
+  # Fig. 7's exact-visibility reference (DESIGN.md §11a.2) from a 512^2 RSM (every 8th texel of
+  # the reference capture's): every VPL of it traced to every one of the 480x272 pixels, some 3e10
+  # segments.
+  quality_args=(--error-stride 4 --visibility ism --visibility-reference-rsm 512)
   tables_quick=()
   replays=()
   gbench_quick=()

@@ -269,3 +269,99 @@ TEST(QualityCli, ReferenceCaptureLendsItsLargerRsm) {
 
 }  // namespace
 }  // namespace vsgl
+
+namespace vsgl {
+namespace {
+
+// Fig. 7 (DESIGN.md §11a.2) with --visibility ism on the atrium stand-in, whose columns occlude
+// part of the indirect light: the occlusion block (R_v's ladder over the occluded region, every
+// frame's error over it against each rung, the exact control), its picture, and the two Fig. 7
+// claims per FIS generator; --visibility none leaves all of it out.
+TEST(QualityCli, VisibilityAddsTheOccludedLightOfFig7) {
+  const test::TempDir root_temp("quality_occlusion");
+  const std::filesystem::path& root = root_temp.path();
+  auto r = test::run_cli("record --scene atrium --gbuffer 96x54 --rsm 32 --out " + (root / "cap").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::string options =
+      " --frames 3 --k-sweep 1 --error-stride 1 --light-vsgls 64 --camera-vsgls 128 --ism-side 16"
+      " --control-frames 2 --out ";
+  r = test::run_cli("quality --capture " + (root / "cap").string() + " --visibility ism" + options +
+                    (root / "ism").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto dir = root / "ism" / "atrium";
+  EXPECT_TRUE(std::filesystem::exists(dir / "atrium_occlusion.png"));
+  std::ifstream in(dir / "quality.json");
+  const auto j = nlohmann::ordered_json::parse(in);
+  for (const std::string& problem : validate_against_schema(
+           j, test::read_json(std::filesystem::path(VSGL_SOURCE_DIR) / "results/schema/quality.schema.json")))
+    ADD_FAILURE() << problem;
+  EXPECT_EQ(j["config"]["visibility"], "ism");
+  const auto& o = j["occlusion"];
+  EXPECT_NE(o["visibility"].get<std::string>().find("16x16"), std::string::npos) << o["visibility"];
+  // R_v from the full 32^2 RSM, its rungs at strides 8, 4, 2 and 1.
+  EXPECT_EQ(o["reference"]["rsm_stride"], 1);
+  EXPECT_EQ(o["reference"]["ladder"]["rsm_strides"], nlohmann::ordered_json::array({8, 4, 2, 1}));
+  EXPECT_EQ(o["reference"]["ladder"]["metrics"]["relative_rmse"]["differences"].size(), 3u);
+  const uint64_t occluded = o["region"]["occluded_pixels"], surface = o["region"]["surface_pixels"];
+  ASSERT_GE(occluded, 50u) << o["region"].dump();
+  EXPECT_LE(occluded, surface);
+  EXPECT_GT(o["region"]["occluded_light_share"].get<double>(), 0.0);
+  EXPECT_EQ(o["note"], "");
+  EXPECT_EQ(o["frames"]["coarse_rung_strides"], nlohmann::ordered_json::array({8, 4}));
+  for (const char* g : {"fis_tok15", "fis_modified", "kmeans_2d", "kmeans_3d"}) {
+    const auto& gen = o["frames"]["generators"][g];
+    EXPECT_EQ(gen["series"]["relative_rmse"]["per_frame"].size(), 3u) << g;
+    EXPECT_EQ(gen["second_rung"]["relative_rmse"]["per_frame"].size(), 3u) << g;
+    EXPECT_EQ(gen["coarse_rungs"].size(), 2u) << g;
+    EXPECT_EQ(o["control"]["relative_rmse"][g].size(), 2u) << g;
+    for (const auto& e : gen["series"]["relative_rmse"]["per_frame"]) EXPECT_GT(e.get<double>(), 0.0) << g;
+  }
+  int fig7 = 0;
+  for (const auto& c : j["claims"])
+    if (c["measure"].get<std::string>().rfind("Fig. 7 ", 0) == 0) {
+      ++fig7;
+      EXPECT_EQ(c["rung_estimates"].size(), 4u) << c.dump();
+    }
+  EXPECT_EQ(fig7, 4);
+  std::ifstream md_in(dir / "quality.md");
+  const std::string md((std::istreambuf_iterator<char>(md_in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(md.find("## Fig. 7: the light occluded by the columns"), std::string::npos);
+
+  r = test::run_cli("quality --capture " + (root / "cap").string() + " --visibility none" +
+                    " --frames 3 --k-sweep 1"
+                    " --error-stride 2 --light-vsgls 64 --camera-vsgls 128 --out " +
+                    (root / "none").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::ifstream none_in(root / "none" / "atrium" / "quality.json");
+  const auto n = nlohmann::ordered_json::parse(none_in);
+  EXPECT_EQ(n["config"]["visibility"], "none");
+  EXPECT_FALSE(n.contains("occlusion"));
+  for (const auto& c : n["claims"]) EXPECT_NE(c["measure"].get<std::string>().rfind("Fig. 7 ", 0), 0u);
+  EXPECT_FALSE(std::filesystem::exists(root / "none" / "atrium" / "atrium_occlusion.png"));
+}
+
+// A capture without the visibility geometry is refused by --visibility ism (the default) before
+// any work, naming the option of `record` that stores it and --visibility none; the maps' options
+// without --visibility ism and more control frames than frames are refused too. Nothing is written.
+TEST(QualityCli, VisibilityNeedsTheGeometryAndItsOwnOptions) {
+  const test::TempDir root_temp("quality_visibility_errors");
+  const std::filesystem::path& root = root_temp.path();
+  auto r = test::run_cli("record --scene tiny --gbuffer 48x32 --rsm 16 --visibility-points 0 --out " +
+                         (root / "cap").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::string capture = " --capture " + (root / "cap").string() + " --out " + (root / "out").string();
+  r = test::run_cli("quality" + capture);
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_NE(r.output.find("--visibility-points"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("--visibility none"), std::string::npos) << r.output;
+  r = test::run_cli("quality" + capture + " --visibility none --ism-side 16");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("--ism-side"), std::string::npos) << r.output;
+  r = test::run_cli("quality" + capture + " --visibility exact --frames 2 --control-frames 3");
+  EXPECT_NE(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("--control-frames"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(root / "out")) << "nothing is written";
+}
+
+}  // namespace
+}  // namespace vsgl

@@ -318,7 +318,7 @@ TEST(QualityReferenceRule, TheRateComesFromThreeSuccessiveDifferences) {
 ReferenceClaim below_one(double low, double high, std::vector<double> estimates,
                          std::optional<Outcome> second = std::nullopt) {
   ReferenceClaim c;
-  c.below = true;
+  c.side = ClaimSide::kBelow;
   c.bound = 1.0;
   c.finest = judge_below({low, high}, 1.0);
   c.rung_estimates = std::move(estimates);
@@ -444,6 +444,71 @@ TEST(QualityClaims, TheKSweepHoldsOnlyWhenEveryStepDoes) {
   add_claim_verdicts(unranked);
   EXPECT_EQ(verdict_of(unranked, "K sweep, fis_modified"), "reference not converged at some step");
   EXPECT_EQ(verdict_of(unranked, "K sweep, fis_tok15"), "reference not converged at some step");
+}
+
+// Fig. 7 (DESIGN.md §11a.2): per FIS generator, its error over the occluded region above 3D
+// k-means's, and within [0.8, 1.25] of 2D k-means's, decided by R_v's own ladder.
+TEST(QualityClaims, Fig7JudgesEachFisGeneratorAgainstBothKmeans) {
+  QualityModel m = minimal_model();
+  m.generators = {kTok, kMod, std::string(kKmeans2d), kKm3};
+  m.reference_error[std::string(kKmeans2d)] = {};
+  m.flicker_static[std::string(kKmeans2d)] = {0.1, 0.0, 0.0, 32};
+  OcclusionMeasure o;
+  o.visibility = "visibility ism (made up)";
+  o.reference_rsm_stride = 1;
+  o.reference_rsm_side = 8;
+  o.reference_vpls = 64;
+  o.surface_pixels = 1000;
+  o.occluded_pixels = 200;
+  o.ladder.rsm_strides = {8, 4, 2, 1};
+  o.ladder.rsm_sides = {1, 2, 4, 8};
+  o.ladder.metrics["relative_rmse"] = ladder_of(0.001, 0.5);
+  o.frames.gbuffer_stride = 1;
+  o.frames.image = nlohmann::ordered_json::array({16, 8});
+  o.frames.reference = "made up";
+  const auto set = [&](const std::string& g, double error) {
+    o.frames.generators[g]["relative_rmse"] = frames_of(error, 1.0);
+    o.frames.second_rung[g]["relative_rmse"] = frames_of(error, 1.01);
+  };
+  set(kTok, 0.5);  // above 3D k-means (0.3), 1.11 x 2D k-means (0.45): holds, holds
+  set(kMod, 0.2);  // below 3D k-means, 0.44 x 2D k-means: does not hold, does not hold
+  set(std::string(kKmeans2d), 0.45);
+  set(kKm3, 0.3);
+  m.occlusion = o;
+  nlohmann::ordered_json doc = m;
+  add_claim_verdicts(doc);
+  EXPECT_EQ(verdict_of(doc, "Fig. 7 world space, fis_tok15"), "holds");
+  EXPECT_EQ(verdict_of(doc, "Fig. 7 image space, fis_tok15"), "holds");
+  EXPECT_EQ(verdict_of(doc, "Fig. 7 world space, fis_modified"), "does not hold");
+  EXPECT_EQ(verdict_of(doc, "Fig. 7 image space, fis_modified"), "does not hold");
+  const auto band = claim_of(doc, "Fig. 7 image space, fis_tok15");
+  EXPECT_EQ(band.at("claimed_side"), "within");
+  EXPECT_EQ(band.at("bound"), 0.8);
+  EXPECT_EQ(band.at("bound_high"), 1.25);
+  // Read back, the document keeps the measurement.
+  const QualityModel back = quality_model_from_json(doc, "made up");
+  ASSERT_TRUE(back.occlusion.has_value());
+  EXPECT_EQ(back.occlusion->occluded_pixels, 200u);
+  EXPECT_EQ(back.occlusion->frames.generators.at(kTok).at("relative_rmse"),
+            o.frames.generators.at(kTok).at("relative_rmse"));
+
+  // Tok15's ratio to 2D k-means is 1.3 against the stride-2 rung and 1.11 against R_v: at rate 0.5
+  // the movement 0.19 widens the interval past the edge 1.25: not decided.
+  m.occlusion->frames.second_rung[kTok]["relative_rmse"] = frames_of(0.45 * 1.3, 1.01);
+  nlohmann::ordered_json moved = m;
+  add_claim_verdicts(moved);
+  EXPECT_TRUE(not_converged(verdict_of(moved, "Fig. 7 image space, fis_tok15")))
+      << verdict_of(moved, "Fig. 7 image space, fis_tok15");
+  EXPECT_NE(verdict_of(moved, "Fig. 7 image space, fis_tok15").find("reaches the bound of [0.8, 1.25]"),
+            std::string::npos);
+
+  // Too few occluded pixels: each Fig. 7 claim is inconclusive and says why.
+  m.occlusion->note = "no occluded region: 3 pixel(s) of 1000 in O, fewer than 50 or 1 %";
+  nlohmann::ordered_json none = m;
+  add_claim_verdicts(none);
+  for (const char* claim : {"Fig. 7 world space, fis_tok15", "Fig. 7 image space, fis_modified"})
+    EXPECT_EQ(verdict_of(none, claim),
+              "inconclusive: no occluded region: 3 pixel(s) of 1000 in O, fewer than 50 or 1 %");
 }
 
 TEST(QualityClaims, ADocumentWithoutFrameSeriesIsNotJudged) {

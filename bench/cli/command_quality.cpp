@@ -10,6 +10,7 @@
 #include "bench/cli/commands.hpp"
 #include "bench/cli/generator_options.hpp"
 #include "bench/cli/gpu_session.hpp"
+#include "bench/cli/visibility_options.hpp"
 #include "harness/core/path_text.hpp"
 #include "harness/core/platform_path.hpp"
 #include "harness/core/atomic_file.hpp"
@@ -30,6 +31,7 @@ struct QualityOptions {
   QualityConfig config;
   std::vector<std::string> k_sweep{"1", "2", "4", "8"};
   std::string out = "results/quality";
+  VisibilityOptions visibility;
   DeviceOptions device;
 };
 
@@ -39,6 +41,7 @@ int run_quality_command(QualityOptions& o) {
   const std::filesystem::path out_root = path_from_utf8(o.out);
   config.k_sweep.clear();
   for (const auto& item : o.k_sweep) config.k_sweep.push_back(std::stof(item));
+  config.visibility = visibility_settings(o.visibility);
   if (config.sequence) (void)sequence_frames(*config.sequence, config.frames);  // fail before the long work
   GpuSession session = GpuSession::open(o.device);
 
@@ -70,7 +73,7 @@ Command add_quality_command(CLI::App& parent) {
       "the paper's quality claims as numbers (Fig. 1, 5, 6): kernel coverage (gap, overlap, count-weighted error "
       "beside the lattice's own floor), PDF mass per kernel, how high-frequency each view's PDF is, too-bright "
       "VSGLs, total power, flicker, a K sweep, every frame's error against a per-texel VPL reference (relMSE, "
-      "relative and scaled RMSE, FLIP), verdicts from paired frames; writes "
+      "relative and scaled RMSE, FLIP), Fig. 7's occluded light with visibility, verdicts from paired frames; writes "
       "OUT/<scene>/quality.json, quality.md and PNGs");
   auto o = std::make_shared<QualityOptions>();
   QualityConfig& c = o->config;
@@ -110,6 +113,20 @@ Command add_quality_command(CLI::App& parent) {
       ->type_name("DIR");
   app->add_option("--sequence-reference-rsm", c.sequence_reference_rsm, "the same for each sequence frame")
       ->check(at_least(1))
+      ->capture_default_str();
+  add_visibility_options(*app, o->visibility,
+                         "Fig. 7's frames (DESIGN.md §11a.2: the light occluded by the columns, judged against a "
+                         "reference with exact visibility; none leaves Fig. 7 out, and the other measures are "
+                         "without visibility whatever it says)");
+  app->add_option("--visibility-reference-rsm", c.visibility_reference_rsm,
+                  "Fig. 7's exact-visibility reference: RSM side (every lit texel a VPL traced to every pixel); 0: "
+                  "as --reference-rsm")
+      ->check(at_least(0))
+      ->capture_default_str();
+  app->add_option("--control-frames", c.control_frames,
+                  "Fig. 7's control (each generator's VSGLs with exact visibility from their means) at this many "
+                  "of the first frames")
+      ->check(at_least(0))
       ->capture_default_str();
   add_light_vsgls_option(*app, c.light_vsgls);
   add_camera_vsgls_option(*app, c.camera_vsgls);

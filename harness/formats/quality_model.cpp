@@ -196,11 +196,10 @@ json frame_errors_json(const FrameErrors& f) {
       g["coarse_rungs"] = series_list_json(it->second);
     gens[name] = g;
   }
-  json out{{"gbuffer_stride", f.gbuffer_stride},
-           {"image", f.image},
-           {"reference", f.reference},
-           {"flip", json{{"exposure", f.flip_exposure}, {"pixels_per_degree", f.flip_pixels_per_degree}}},
-           {"generators", gens}};
+  json out{{"gbuffer_stride", f.gbuffer_stride}, {"image", f.image}, {"reference", f.reference}, {"generators", gens}};
+  // FLIP's settings where the series hold FLIP (not the occlusion's, DESIGN.md §11a.2).
+  if (f.flip_pixels_per_degree > 0)
+    out["flip"] = json{{"exposure", f.flip_exposure}, {"pixels_per_degree", f.flip_pixels_per_degree}};
   if (!f.second_rung_reference.empty()) out["second_rung_reference"] = f.second_rung_reference;
   if (!f.coarse_rung_strides.empty()) out["coarse_rung_strides"] = f.coarse_rung_strides;
   return out;
@@ -211,9 +210,10 @@ FrameErrors read_frame_errors(const JsonReader& r, const json& o, const std::str
   f.gbuffer_stride = r.uint32(o, p, "gbuffer_stride");
   f.image = r.array(o, p, "image", 2);
   f.reference = r.string(o, p, "reference");
-  const json& flip = r.object(o, p, "flip");
-  f.flip_exposure = r.number(flip, p + "/flip", "exposure");
-  f.flip_pixels_per_degree = r.number(flip, p + "/flip", "pixels_per_degree");
+  if (const json* flip = r.optional_object(o, p, "flip")) {
+    f.flip_exposure = r.number(*flip, p + "/flip", "exposure");
+    f.flip_pixels_per_degree = r.number(*flip, p + "/flip", "pixels_per_degree");
+  }
   for (const auto& [g, v] : r.object(o, p, "generators").items()) {
     const std::string gp = p + "/generators/" + g;
     if (!v.is_object()) r.wrong_type(v, gp, "an object");
@@ -415,6 +415,52 @@ json animated_json(const QualityModel::Animated& a) {
               {"generators", gens}};
 }
 
+json occlusion_json(const OcclusionMeasure& o) {
+  json control = json::object();
+  for (const auto& [name, values] : o.control) control[name] = values;
+  return json{{"visibility", o.visibility},
+              {"reference", json{{"rsm_stride", o.reference_rsm_stride},
+                                 {"rsm_side", o.reference_rsm_side},
+                                 {"vpls", o.reference_vpls},
+                                 {"seconds", o.reference_seconds},
+                                 {"ladder", ladder_json(o.ladder)}}},
+              {"region", json{{"rule", o.region_rule},
+                              {"surface_pixels", o.surface_pixels},
+                              {"occluded_pixels", o.occluded_pixels},
+                              {"unshadowed_mean_luminance", o.unshadowed_mean_luminance},
+                              {"occluded_light_share", o.occluded_light_share}}},
+              {"note", o.note},
+              {"frames", frame_errors_json(o.frames)},
+              {"control", json{{"frames", o.control_frames}, {"relative_rmse", control}}}};
+}
+
+OcclusionMeasure read_occlusion(const JsonReader& r, const json& o, const std::string& p) {
+  OcclusionMeasure m;
+  m.visibility = r.string(o, p, "visibility");
+  const std::string rp = p + "/reference";
+  const json& ref = r.object(o, p, "reference");
+  m.reference_rsm_stride = r.uint32(ref, rp, "rsm_stride");
+  m.reference_rsm_side = r.uint32(ref, rp, "rsm_side");
+  m.reference_vpls = r.uint64(ref, rp, "vpls");
+  m.reference_seconds = r.number(ref, rp, "seconds");
+  m.ladder = read_ladder(r, r.object(ref, rp, "ladder"), rp + "/ladder");
+  const std::string gp = p + "/region";
+  const json& region = r.object(o, p, "region");
+  m.region_rule = r.string(region, gp, "rule");
+  m.surface_pixels = r.uint64(region, gp, "surface_pixels");
+  m.occluded_pixels = r.uint64(region, gp, "occluded_pixels");
+  m.unshadowed_mean_luminance = r.number(region, gp, "unshadowed_mean_luminance");
+  m.occluded_light_share = r.number(region, gp, "occluded_light_share");
+  m.note = r.string(o, p, "note");
+  m.frames = read_frame_errors(r, r.object(o, p, "frames"), p + "/frames");
+  const std::string cp = p + "/control";
+  const json& control = r.object(o, p, "control");
+  m.control_frames = r.uint32(control, cp, "frames");
+  const json& errors = r.object(control, cp, "relative_rmse");
+  for (const auto& item : errors.items()) m.control[item.key()] = r.numbers(errors, cp + "/relative_rmse", item.key());
+  return m;
+}
+
 json k_sweep_json(const std::vector<std::pair<std::string, std::vector<KSweepRow>>>& k_sweep) {
   json sweep = json::object();
   for (const auto& [name, rows] : k_sweep) {
@@ -486,6 +532,7 @@ void to_json(json& j, const QualityModel& m) {
   j["k_sweep"] = k_sweep_json(m.k_sweep);
   if (m.frames_static) j["frames_static"] = frame_errors_json(*m.frames_static);
   if (m.frames_animated) j["frames_animated"] = frame_errors_json(*m.frames_animated);
+  if (m.occlusion) j["occlusion"] = occlusion_json(*m.occlusion);
   if (m.claims) {
     json claims = json::array();
     for (const Claim& c : *m.claims) claims.push_back(to_json(c, ClaimLayout::kQuality));
@@ -638,6 +685,7 @@ QualityModel quality_model_from_json(const json& doc, const std::string& what) {
     m.frames_static = read_frame_errors(r, *f, "/frames_static");
   if (const json* f = r.optional_object(doc, "", "frames_animated"))
     m.frames_animated = read_frame_errors(r, *f, "/frames_animated");
+  if (const json* o = r.optional_object(doc, "", "occlusion")) m.occlusion = read_occlusion(r, *o, "/occlusion");
   if (doc.contains("claims")) {
     const json& claims = r.array(doc, "", "claims");
     m.claims.emplace();

@@ -193,6 +193,32 @@ struct ReferenceDetail {
   std::optional<ReferenceLadder> ladder;
 };
 
+// Fig. 7, the light occluded by the columns (DESIGN.md §11a.2, schema 7; quality --visibility ism
+// or exact): the references with and without exact visibility, the occluded region O they fix,
+// and each generator's frames shaded with that visibility, their error over O.
+struct OcclusionMeasure {
+  std::string visibility;  // how the generators' frames were shaded (shading_visibility_text)
+  // R_v: every VPL of the RSM at this stride (of the RSM the reference's VPLs come from) traced to
+  // every pixel; R_0 the same VPLs without visibility.
+  uint32_t reference_rsm_stride = 0, reference_rsm_side = 0;
+  uint64_t reference_vpls = 0;
+  double reference_seconds = 0;  // shading R_v and its rungs
+  uint64_t surface_pixels = 0, occluded_pixels = 0;
+  double unshadowed_mean_luminance = 0;  // Y_0 bar over the pixels with a surface
+  double occluded_light_share = 0;       // sum over O of (Y_0 - Y_v) / sum of Y_0 over the surface
+  std::string region_rule;               // O, in words
+  std::string note;                      // "" or why nothing is judged (no occluded region)
+  // R_v's ladder in "relative_rmse" over O (the rungs against the next finer one).
+  ReferenceLadder ladder;
+  // Per generator "relative_rmse" over O per static frame against R_v, and against each coarser
+  // rung (second_rung, coarse_rungs); gbuffer_stride and image are the comparison's.
+  FrameErrors frames;
+  // The control: the same VSGLs with exact visibility from their means, at the first
+  // control_frames offsets, "relative_rmse" over O against R_v (reported, not judged).
+  uint32_t control_frames = 0;
+  std::map<std::string, std::vector<double>> control;
+};
+
 struct QualityModel {
   std::string schema = "vsgl-quality";
   nlohmann::ordered_json schema_version;
@@ -232,6 +258,7 @@ struct QualityModel {
   std::optional<Animated> flicker_animated;
   std::optional<FrameErrors> frames_static, frames_animated;            // schema 5
   std::vector<std::pair<std::string, std::vector<KSweepRow>>> k_sweep;  // in the file's order
+  std::optional<OcclusionMeasure> occlusion;                            // schema 7, with visibility
   // ClaimLayout::kQuality: the numbers each claim was judged on (fis_tok15, fis_modified, and a
   // claim's own, such as the Fig. 1 margin) are its `measured`. None before add_claim_verdicts,
   // and then not written.

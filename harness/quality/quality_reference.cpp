@@ -86,6 +86,15 @@ ReferenceLadderMetric reference_ladder_metric(std::vector<double> differences) {
   return m;
 }
 
+ClaimVerdict judge_side(ClaimSide side, const Interval& interval, double bound, double bound_high) {
+  switch (side) {
+    case ClaimSide::kBelow: return judge_below(interval, bound);
+    case ClaimSide::kAbove: return judge_above(interval, bound);
+    case ClaimSide::kWithin: return judge_within(interval, bound, bound_high);
+  }
+  return judge_below(interval, bound);
+}
+
 double reference_movement(double rate, const std::vector<double>& rung_estimates) {
   constexpr double kInfinite = std::numeric_limits<double>::infinity();
   if (!std::isfinite(rate) || !(rate >= 0.0) || !(rate < 1.0) || rung_estimates.size() < 2) return kInfinite;
@@ -140,10 +149,13 @@ ClaimVerdict reference_decides(const ReferenceLadderMetric* ladder, const Refere
   if (!std::isfinite(movement)) return not_converged(named + ": its remaining movement is not finite");
   if (claim.finest.inconclusive()) return v;  // the interval reaches the bound by itself
   const Interval widened{claim.finest.interval->low - movement, claim.finest.interval->high + movement};
-  const ClaimVerdict w = claim.below ? judge_below(widened, claim.bound) : judge_above(widened, claim.bound);
+  const ClaimVerdict w = judge_side(claim.side, widened, claim.bound, claim.bound_high);
   if (w.outcome != claim.finest.outcome)
     return not_converged(named + ", remaining " + short_number(movement) + ": the widened interval " +
-                         interval_text(widened) + " reaches the bound " + short_number(claim.bound));
+                         interval_text(widened) + " reaches the bound " +
+                         (claim.side == ClaimSide::kWithin
+                              ? "of [" + short_number(claim.bound) + ", " + short_number(claim.bound_high) + "]"
+                              : short_number(claim.bound)));
   if (!claim.second_rung) return not_converged("no verdict against the stride-2 rung");
   if (claim.second_rung->outcome != claim.finest.outcome)
     return not_converged("the verdicts differ: " + std::string(outcome_text(claim.finest.outcome)) +

@@ -67,9 +67,16 @@ uint32_t reference_stride(const ViewImage& rsm, uint32_t side);
 ReferenceLadderMetric reference_ladder_metric(std::vector<double> differences);
 
 // What a claim on an error against the reference is decided on (DESIGN.md §11a *Rule*, schema 7).
+// Where a claim says its statistic lies: below `bound`, above it, or inside (bound, bound_high).
+enum class ClaimSide { kBelow, kAbove, kWithin };
+
+// The verdict of `side` on an interval (core/claim_verdict.hpp's edge convention).
+ClaimVerdict judge_side(ClaimSide side, const Interval& interval, double bound, double bound_high);
+
 struct ReferenceClaim {
-  bool below = true;    // the claim: the statistic lies below `bound` (else above)
-  double bound = 1.0;   // b
+  ClaimSide side = ClaimSide::kBelow;
+  double bound = 1.0;       // b (the band's low edge for kWithin)
+  double bound_high = 1.0;  // the band's high edge (kWithin only)
   ClaimVerdict finest;  // the claim's verdict against the reference (stride 1), with its interval
   // The claim's statistic against every rung of the ladder, coarsest first, the last against the
   // reference itself; the one before it is the stride-2 rung's. Fewer than two: no step measured.

@@ -410,6 +410,50 @@ void write_k_sweep(std::ostringstream& md, const QualityModel& m) {
 
 }  // namespace
 
+// Fig. 7 (DESIGN.md §11a.2): the occluded region, R_v's ladder over it, and each generator's error
+// over it with the run's visibility beside the exact control.
+void write_occlusion(std::ostringstream& md, const QualityModel& m) {
+  if (!m.occlusion) return;
+  const OcclusionMeasure& o = *m.occlusion;
+  md << "\n## Fig. 7: the light occluded by the columns (DESIGN.md §11a.2)\n\nFrames shaded with " << o.visibility
+     << ". Reference R_v: every lit texel of the RSM at stride " << o.reference_rsm_stride << " ("
+     << o.reference_rsm_side << "^2, " << o.reference_vpls << " VPLs) traced to every pixel (" << o.frames.image[0]
+     << "x" << o.frames.image[1] << ", G-buffer stride " << o.frames.gbuffer_stride << "), " << num(o.reference_seconds)
+     << " s with its rungs. Occluded region O: " << o.region_rule << ": " << o.occluded_pixels << " of "
+     << o.surface_pixels << " surface pixels, holding " << num(o.occluded_light_share)
+     << " of the unshadowed light's luminance.";
+  if (!o.note.empty()) md << " " << o.note << ".";
+  md << "\n\nR_v's ladder, relative RMSE over O of each rung against the next finer one (RSM strides";
+  for (uint32_t s : o.ladder.rsm_strides) md << " " << s;
+  md << "):";
+  if (const auto it = o.ladder.metrics.find("relative_rmse"); it != o.ladder.metrics.end()) {
+    for (double d : it->second.differences) md << " " << num(d);
+    md << "; rate per doubling " << (std::isfinite(it->second.rate) ? num(it->second.rate) : std::string("none"))
+       << ".\n";
+  } else {
+    md << " none.\n";
+  }
+  if (o.frames.generators.empty()) return;
+  md << "\n| generator | relative RMSE over O (mean / 95th percentile / maximum over the frames) | control: exact "
+        "visibility from the VSGLs' means (first "
+     << o.control_frames << " frame(s), mean) |\n|---|---|---|\n";
+  for (const auto& g : m.generators) {
+    const auto it = o.frames.generators.find(g);
+    if (it == o.frames.generators.end() || !it->second.contains("relative_rmse")) continue;
+    const SampleStats sum = summarize(it->second.at("relative_rmse"));
+    md << "| " << g << " | " << num(sum.mean) << " / " << num(sum.p95) << " / " << num(sum.max) << " | ";
+    const auto c = o.control.find(g);
+    if (c != o.control.end() && !c->second.empty()) {
+      double mean = 0;
+      for (double v : c->second) mean += v;
+      md << num(mean / static_cast<double>(c->second.size()));
+    } else {
+      md << "n/a";
+    }
+    md << " |\n";
+  }
+}
+
 std::string quality_markdown(const QualityModel& m, const std::vector<QualityPicture>& pictures) {
   std::ostringstream md;
   write_heading(md, m);
@@ -423,6 +467,7 @@ std::string quality_markdown(const QualityModel& m, const std::vector<QualityPic
   if (m.frames_animated) write_frame_errors(md, m, *m.frames_animated, "animated sequence");
   write_flicker(md, m);
   write_k_sweep(md, m);
+  write_occlusion(md, m);
   md << "\n## Pictures\n\n";
   for (const auto& p : pictures) md << "- `" << p.file << "`: " << p.description << "\n";
   md << "\n## Run time\n\n";

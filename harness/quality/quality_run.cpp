@@ -22,6 +22,8 @@
 #include "harness/quality/flip.hpp"
 #include "harness/quality/flux_origin.hpp"
 #include "harness/quality/frame_error.hpp"
+#include "harness/quality/generator_run.hpp"
+#include "harness/quality/occlusion_run.hpp"
 #include "harness/quality/quality_metrics.hpp"
 #include "harness/formats/quality_model.hpp"
 #include "harness/quality/quality_pictures.hpp"
@@ -56,30 +58,6 @@ ViewData view_data(const Capture& capture, ViewKind kind) {
   const auto moments = reference_moments(view, source);
   return ViewData{MipPyramid::build(moments[2], view.width, view.height), total_flux(moments[0]),
                   texel_flux(moments[0])};
-}
-
-// One generator run (offset `offset_bits`, kernel parameter K) on an uploaded view; its VSGLs stay
-// on the device for shading and are downloaded for the metrics.
-struct GeneratorRun {
-  std::unique_ptr<VsglGenerator> generator;
-  std::vector<VsglRecord> vsgls;
-};
-
-GeneratorRun run_generator(Device& device, const DeviceView& view, const std::string& name,
-                           const QualityConfig& config, uint32_t vsgl_count, float K, uint32_t offset_bits) {
-  GeneratorConfig gc;
-  gc.vsgl_count = vsgl_count;
-  gc.K = K;
-  gc.bisection_iterations = config.bisection_iterations;
-  gc.kmeans_iterations = config.kmeans_iterations;
-  gc.offset_bits = offset_bits;
-  gc.pyramid = config.pyramid;
-  gc.mipmapping = config.mipmapping;
-  GeneratorRun run;
-  run.generator = make_generator(name, device, view, gc);
-  run_untimed(device, *run.generator);
-  run.vsgls = download_vector<VsglRecord>(device, run.generator->vsgls(), run.generator->vsgl_count());
-  return run;
 }
 
 double power_sum(const std::vector<VsglRecord>& vsgls) {
@@ -765,6 +743,9 @@ void check_config(const QualityConfig& config) {
   for (float K : config.k_sweep)
     if (!(K > 0.0f) || !std::isfinite(K)) throw InputError("quality: every K of the sweep must be positive");
   for (const auto& g : config.generators) (void)generator_sources(g);  // unknown names fail here, before any work
+  if (config.visibility.mode != ShadingVisibility::kNone && config.control_frames > config.frames)
+    throw InputError("quality: --control-frames (" + std::to_string(config.control_frames) +
+                     ") is more than --frames (" + std::to_string(config.frames) + ")");
 }
 
 // What was measured: the schema, the capture with its hashes, the device, the build, the configuration.
@@ -797,10 +778,16 @@ void write_header(QualityModel& out, Device& device, const Capture& capture, con
                          {"sequence_reference_rsm", config.sequence_reference_rsm},
                          {"k_sweep", ks},
                          {"power_of_a_vsgl", "Phi.r + Phi.g + Phi.b"},
-                         {"shading", {{"model", std::string(kShadingModel)},
-                                      {"bias_reduction_alpha", double{gpu::kBiasReductionAlpha}},
-                                      {"text", shading_model_text()}}},
-                         {"luminance", "Rec. 709"}};
+                         {"shading",
+                          {{"model", std::string(kShadingModel)},
+                           {"bias_reduction_alpha", double{gpu::kBiasReductionAlpha}},
+                           {"text", shading_model_text()}}},
+                         {"luminance", "Rec. 709"},
+                         {"visibility", shading_visibility_name(config.visibility.mode)}};
+  if (config.visibility.mode != ShadingVisibility::kNone) {
+    out.config_rest["visibility_reference_rsm"] = config.visibility_reference_rsm;
+    out.config_rest["control_frames"] = config.control_frames;
+  }
 }
 
 }  // namespace
@@ -828,6 +815,13 @@ QualityResult run_quality(Device& device, const Capture& capture, const std::fil
   QualityResult result;
   QualityModel out;
   write_header(out, device, capture, capture_dir, config);
+  // Fig. 7's geometry (DESIGN.md §11a.2): a capture without it is refused here, naming the option of
+  // `record` that stores it and --visibility none, before anything runs.
+  std::optional<VisibilityGeometry> geometry;
+  if (config.visibility.mode != ShadingVisibility::kNone)
+    geometry = load_visibility_geometry(capture_dir, capture.meta);
+  if (config.visibility.mode == ShadingVisibility::kIsm)  // the maps' settings against the capture and device
+    VisibleShading(device, config.visibility, &*geometry).require_maps_fit(config.light_vsgls);
 
   const DeviceView camera = upload_view(device, capture, ViewKind::kCamera);
   const DeviceView light = upload_view(device, capture, ViewKind::kLight);
@@ -872,6 +866,17 @@ QualityResult run_quality(Device& device, const Capture& capture, const std::fil
     t0 = Clock::now();
     run.animated_sequence(out);
     out.timings_s.emplace_back("animated_sequence", seconds_since(t0));
+  }
+  if (geometry) {
+    t0 = Clock::now();
+    OcclusionResult occlusion =
+        measure_occlusion({device, capture, config, camera, light, vpl_capture.rsm, reference.error_stride, *geometry,
+                           [&progress](const std::string& line) {
+                             if (progress) progress(line);
+                           }});
+    out.occlusion = std::move(occlusion.measure);
+    for (QualityPicture& p : occlusion.pictures) result.pictures.push_back(std::move(p));
+    out.timings_s.emplace_back("occlusion", seconds_since(t0));
   }
   out.timings_s.emplace_back("total", seconds_since(t_start));
   result.json = out;

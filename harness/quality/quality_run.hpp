@@ -21,6 +21,7 @@
 #include "harness/capture/capture.hpp"
 #include "harness/generators/generator_registry.hpp"
 #include "harness/quality/png_image.hpp"
+#include "harness/quality/shading_visibility.hpp"
 
 namespace vsgl {
 
@@ -71,6 +72,11 @@ struct QualityConfig {
   // A capture of the same frame with a larger RSM, whose texels are the reference's VPLs
   // (reference_capture.hpp); unset: the capture's own RSM.
   std::optional<std::filesystem::path> reference_capture;
+  // Fig. 7 (DESIGN.md §11a.2): the visibility the occlusion measurement's frames are shaded with;
+  // none leaves it out. ism and exact need the capture's visibility geometry.
+  ShadingVisibilitySettings visibility;
+  uint32_t visibility_reference_rsm = 0;  // R_v's RSM side (every lit texel a VPL); 0: as reference_rsm
+  uint32_t control_frames = 1;            // frames of the exact-visibility control
 };
 
 struct QualityPicture {
