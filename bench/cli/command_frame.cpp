@@ -10,6 +10,7 @@
 #include "bench/cli/commands.hpp"
 #include "bench/cli/generator_options.hpp"
 #include "bench/cli/gpu_session.hpp"
+#include "bench/cli/progress_line.hpp"
 #include "bench/cli/option_types.hpp"
 #include "bench/cli/timing_flags.hpp"
 #include "harness/core/path_text.hpp"
@@ -70,21 +71,10 @@ int run_frame_command(const FrameCommandOptions& c) {
                "IQR/median <= %.3g or %.0f s or %u rounds\n",
                o.generators.size(), o.light_vsgls, o.ism.side, o.ism.side, o.stride, o.timing.warmup,
                o.timing.min_repetitions, o.timing.noise_target, o.timing.time_cap_s, o.timing.max_repetitions);
-  const bool tty = !c.no_progress && vsgl::is_terminal(stderr);
-  bool line_open = false;
-  const FrameOutcome outcome = run_frame(session.device(), o, [&](const TimingProgress& p) {
-    if (!tty) return;  // the progress line is for people watching a terminal
-    if (p.rounds == 0) std::fprintf(stderr, "\r  warm-up %u/%u        ", p.warmup_done, p.warmup_total);
-    else
-      std::fprintf(stderr, "\r  round %u (min %u), worst IQR/median %.3f (target %.3f), %.1f s / %.0f s   ", p.rounds,
-                   p.min_rounds, p.worst_noise < 0 ? 0.0 : p.worst_noise, p.noise_target, p.elapsed_s, p.cap_s);
-    std::fflush(stderr);
-    line_open = true;
-  });
-  if (line_open) std::fputc('\n', stderr);
-  std::printf("%s\n", outcome.markdown.c_str());
-  std::fflush(stdout);
-  for (const auto& path : outcome.written) std::fprintf(stderr, "wrote %s\n", path_text(path).c_str());
+  ProgressLine line(!c.no_progress && vsgl::is_terminal(stderr));
+  const FrameOutcome outcome = run_frame(session.device(), o, [&](const TimingProgress& p) { line.show("frame", p); });
+  line.close();
+  print_outcome({outcome.markdown}, outcome.written);
   return session.finish(0);
 }
 

@@ -12,6 +12,7 @@
 #include "bench/cli/timed_generators.hpp"
 #include "bench/cli/timing_flags.hpp"
 #include "bench/cli/gpu_session.hpp"
+#include "bench/cli/progress_line.hpp"
 #include "bench/cli/option_types.hpp"
 #include "harness/core/error.hpp"
 #include "harness/core/path_text.hpp"
@@ -84,30 +85,13 @@ int run_sweep_command(const SweepCommandOptions& c) {
   apply_timing_flags(c, t.timing);
   o.out_dir = c.out ? path_from_utf8(*c.out) : std::filesystem::path("results") / device_slug(info.name) / "sweep";
 
-  const bool tty = !c.no_progress && vsgl::is_terminal(stderr);
-  bool line_open = false;
+  ProgressLine line(!c.no_progress && vsgl::is_terminal(stderr));
   const SweepOutcome outcome = run_sweep(session.device(), o, [&](const SweepEvent& e) {
-    if (e.progress == nullptr) {
-      if (line_open) std::fputc('\n', stderr);
-      line_open = false;
-      std::fprintf(stderr, "%s\n", e.message.c_str());
-      return;
-    }
-    if (!tty) return;  // the progress line is for people watching a terminal
-    const TimingProgress& p = *e.progress;
-    if (p.rounds == 0)
-      std::fprintf(stderr, "\r  point %zu/%zu: warm-up %u/%u        ", e.point + 1, e.points, p.warmup_done,
-                   p.warmup_total);
-    else
-      std::fprintf(stderr, "\r  point %zu/%zu: repetition %u (min %u), %.1f s / %.0f s   ", e.point + 1, e.points,
-                   p.rounds, p.min_rounds, p.elapsed_s, p.cap_s);
-    std::fflush(stderr);
-    line_open = true;
+    if (e.progress == nullptr) line.message(e.message);
+    else line.show("point " + std::to_string(e.point + 1) + "/" + std::to_string(e.points), *e.progress);
   });
-  if (line_open) std::fputc('\n', stderr);
-  std::printf("%s\n", outcome.markdown.c_str());
-  std::fflush(stdout);
-  for (const auto& path : outcome.written) std::fprintf(stderr, "wrote %s\n", path_text(path).c_str());
+  line.close();
+  print_outcome({outcome.markdown}, outcome.written);
   return session.finish(0);
 }
 

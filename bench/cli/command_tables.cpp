@@ -13,6 +13,7 @@
 #include "bench/cli/timing_flags.hpp"
 #include "harness/core/path_text.hpp"
 #include "bench/cli/gpu_session.hpp"
+#include "bench/cli/progress_line.hpp"
 #include "harness/core/error.hpp"
 #include "harness/core/platform_path.hpp"
 #include "harness/core/platform_console.hpp"
@@ -86,30 +87,13 @@ int run_tables_command(const TablesCommandOptions& c, const TablesExtension& ext
                o.timing.warmup, o.timing.min_repetitions, o.timing.noise_target, o.timing.time_cap_s,
                o.timing.max_repetitions, o.timing.cold ? ", cold caches" : "",
                o.clocks_locked ? "claimed locked" : "not claimed locked");
-  const bool tty = progress_flag && vsgl::is_terminal(stderr);
-  bool line_open = false;
+  ProgressLine line(progress_flag && vsgl::is_terminal(stderr));
   const TablesOutcome outcome = vsgl::run_tables(session.device(), o, [&](const TablesEvent& e) {
-    if (e.progress == nullptr) {
-      if (line_open) std::fputc('\n', stderr);
-      line_open = false;
-      std::fprintf(stderr, "%s\n", e.message.c_str());
-      return;
-    }
-    if (!tty) return;  // the progress line is for people watching a terminal
-    const TimingProgress& p = *e.progress;
-    if (p.rounds == 0)
-      std::fprintf(stderr, "\r  table %d: warm-up %u/%u        ", e.table, p.warmup_done, p.warmup_total);
-    else
-      std::fprintf(stderr, "\r  table %d: repetition %u (min %u), worst IQR/median %.3f (target %.3f), %.1f s / %.0f s   ",
-                   e.table, p.rounds, p.min_rounds, p.worst_noise < 0 ? 0.0 : p.worst_noise, p.noise_target,
-                   p.elapsed_s, p.cap_s);
-    std::fflush(stderr);
-    line_open = true;
+    if (e.progress == nullptr) line.message(e.message);
+    else line.show("table " + std::to_string(e.table), *e.progress);
   });
-  if (line_open) std::fputc('\n', stderr);
-  for (const auto& md : outcome.markdown) std::printf("%s\n", md.c_str());
-  std::fflush(stdout);
-  for (const auto& path : outcome.written) std::fprintf(stderr, "wrote %s\n", path_text(path).c_str());
+  line.close();
+  print_outcome(outcome.markdown, outcome.written);
   return session.finish(0);
 }
 
