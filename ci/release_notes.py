@@ -97,7 +97,11 @@ def table_verdict(source, column_dir, table, claim_id):
 
 def quality_verdict(source, column_dir, scene, measure):
     path = source / column_dir / "quality" / scene / "quality.json"
-    found = [c for c in load(path).get("claims", []) if str(c.get("measure", "")).startswith(measure)]
+    doc = load(path)
+    found = [c for c in doc.get("claims", []) if str(c.get("measure", "")).startswith(measure)]
+    # Fig. 7 is measured only with visibility (DESIGN.md 11a.2), as tests/test_readme_claims.cpp reads it.
+    if not found and measure.startswith("Fig. 7 ") and doc.get("config", {}).get("visibility", "none") == "none":
+        return "not measured (--visibility none)"
     if len(found) != 1:
         raise NotesError(f"{path.relative_to(source)}: {len(found)} claims whose measure starts with '{measure}'")
     return found[0]["verdict"]
