@@ -78,7 +78,7 @@ class ShadingOccluders {
 
 // The CPU twin's exact visibility (shade_pixel_reference): 0 where segment_occluded finds a triangle
 // of the occluders' soup on the segment from the receiver to VSGL n's mean (with their epsilon), 1
-// elsewhere; the kernel makes the same segment query (bvh_traverse.glsl's bvh_segment_query).
+// elsewhere; the shading pass asks the segment kernel the same queries (make_segment_query).
 VsglVisibility exact_visibility_reference(const ShadingOccluders& occluders, const std::vector<VsglRecord>& vsgls);
 
 // Shades camera views with one visibility mode, holding what it needs across the views and VSGL

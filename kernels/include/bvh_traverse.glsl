@@ -24,29 +24,6 @@ vec3 bvh_cross3(vec3 a, vec3 b) {
   return r;
 }
 
-// The query for the segment from -> to, for kernels that make their segments themselves (the
-// shading pass's exact visibility, DESIGN.md §8.1): make_segment_query (segment_query.cpp) without
-// its checks of the inputs, the same operations in the same order. Vulkan lets a division or a
-// square root miss the correctly rounded result by a few ulps; where a driver rounds them
-// correctly (lavapipe, SwiftShader) the query is the CPU's bit for bit.
-SegmentQuery bvh_segment_query(vec3 from, vec3 to, float epsilon) {
-  precise vec3 delta = to - from;
-  vec3 inverse = vec3(0.0);
-  for (int a = 0; a < 3; ++a) {
-    if (abs(delta[a]) < 1.17549435e-38) delta[a] = 0.0;  // below FLT_MIN: its inverse would overflow
-    if (delta[a] != 0.0) inverse[a] = 1.0 / delta[a];
-  }
-  precise float length2 = delta.x * delta.x + delta.y * delta.y + delta.z * delta.z;
-  float len = sqrt(length2);
-  float t_min = len > 0.0 ? min(epsilon / len, 1.0) : 1.0;
-  precise float t_max = 1.0 - t_min;
-  SegmentQuery q;
-  q.origin_t_min = vec4(from, t_min);
-  q.delta_t_max = vec4(delta, t_max);
-  q.inverse_delta = vec4(inverse, 0.0);
-  return q;
-}
-
 // The slab test for parameters in [0, 1], each axis's interval widened by 2^-20 of itself; an axis
 // the segment does not move along is a containment test. Monotone in the box.
 bool bvh_segment_overlaps_box(SegmentQuery q, vec3 lo, vec3 hi) {
